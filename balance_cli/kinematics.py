@@ -1,0 +1,159 @@
+"""Exact positions of every lumped mass of an engine, at any crank angles.
+
+No series: every position comes from closing the linkage triangle directly, so any
+rod ratio, piston-pin offset and link-rod geometry is exact.
+
+Masses (point masses, as in Tanaka 1925 and Fraeys de Veubeke 1949 §8):
+- per cylinder, ``reciprocating_kg`` at its piston pin;
+- per link rod, ``knuckle_kg`` at its knuckle pin on the master rod;
+- per throw, ``rotating_kg`` at the crank pin.
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .model import ModelError
+
+__all__ = ["MassSet", "mass_positions", "piston_travel", "check_assembly", "engine_angles"]
+
+#: crank angles at which a linkage is checked for assembly (0.1° apart)
+_CHECK_SAMPLES = 3600
+
+
+@dataclass(frozen=True)
+class MassSet:
+    """Point masses and their positions over the engine angles.
+
+    Attributes
+    ----------
+    positions : ndarray, complex, shape (n_masses, n_angles)
+        position in the fixed transverse plane, m (real: along the reference axis,
+        imaginary: across it)
+    masses_kg : ndarray, shape (n_masses,)
+    z_m : ndarray, shape (n_masses,)
+        axial position, m
+    cylinder : ndarray of int, shape (n_masses,)
+        number of the cylinder the mass belongs to, 0 for crank-pin masses
+    """
+
+    positions: np.ndarray
+    masses_kg: np.ndarray
+    z_m: np.ndarray
+    cylinder: np.ndarray
+
+
+def engine_angles(samples):
+    """``samples`` engine angles evenly spaced over one revolution, rad."""
+    return 2.0 * np.pi * np.arange(samples) / samples
+
+
+def _slider(point, axis_angle, length, offset):
+    """Piston pin on a cylinder axis, joined by a rod of ``length`` to ``point``.
+
+    Returns the pin position and the travel along the axis (both exact), and the
+    squared half-chord ``length² − (offset − y)²`` that must stay positive for the
+    rod to reach the axis.
+    """
+    turn = np.exp(-1j * axis_angle)
+    local = point * turn
+    reach = length**2 - (offset - local.imag) ** 2
+    travel = local.real + np.sqrt(np.maximum(reach, 0.0))
+    return (travel + 1j * offset) / turn, travel, reach
+
+
+def _linkage(engine, crank_angles):
+    """Positions in the crankcase frame for crank angles ``crank_angles`` (any shape).
+
+    Returns dicts keyed by cylinder number: piston pin, travel, reach (assembly margin),
+    knuckle pin (links only); and the crank-pin position of every throw.
+    """
+    r = engine.crank_radius_m
+    pins = [r * np.exp(1j * (crank_angles + t.phase_rad)) for t in engine.throws]
+    piston, travel, reach, knuckle = {}, {}, {}, {}
+    for cyl in engine.cylinders:
+        if cyl.is_link:
+            continue
+        axis = engine.bank_angles_rad[cyl.bank]
+        piston[cyl.number], travel[cyl.number], reach[cyl.number] = _slider(
+            pins[cyl.throw], axis, engine.rod_length_m, engine.pin_offset_m
+        )
+    for cyl in engine.cylinders:
+        if not cyl.is_link:
+            continue
+        master = engine.cylinder(cyl.master)
+        crank_pin = pins[master.throw]
+        # the knuckle pin is fixed in the master rod: turn the rod's unit vector by the knuckle angle
+        rod_direction = (piston[master.number] - crank_pin) / engine.rod_length_m
+        knuckle[cyl.number] = crank_pin + cyl.knuckle_radius_m * rod_direction * np.exp(
+            1j * cyl.knuckle_angle_rad
+        )
+        axis = engine.bank_angles_rad[cyl.bank]
+        piston[cyl.number], travel[cyl.number], reach[cyl.number] = _slider(
+            knuckle[cyl.number], axis, cyl.link_length_m, engine.pin_offset_m
+        )
+    return piston, travel, reach, knuckle, pins
+
+
+def _crank_angles(engine, angles):
+    """Crank angle seen from the crankcase for engine angles ``angles``.
+
+    In a rotary the crankcase turns forward about a fixed crank, so the crank turns
+    backward relative to the cylinders.
+    """
+    return -angles if engine.frame == "rotary" else angles
+
+
+def check_assembly(engine):
+    """Raise :class:`ModelError` naming the first cylinder whose rod cannot reach its axis."""
+    angles = engine_angles(_CHECK_SAMPLES)
+    _, _, reach, _, _ = _linkage(engine, angles)
+    for cyl in engine.cylinders:
+        worst = int(np.argmin(reach[cyl.number]))
+        if reach[cyl.number][worst] <= 0.0:
+            where = np.degrees(angles[worst])
+            if cyl.is_link:
+                raise ModelError(
+                    f"cylinder {cyl.number}: its link rod cannot reach the cylinder axis at crank "
+                    f"angle {where:.1f}°; make link_length longer or knuckle_radius smaller"
+                )
+            raise ModelError(
+                f"cylinder {cyl.number}: the rod cannot reach the cylinder axis at crank angle "
+                f"{where:.1f}°; rod_length must exceed crank_radius plus |pin_offset|"
+            )
+
+
+def piston_travel(engine, crank_angles):
+    """Distance of every piston pin from the crank axis along its cylinder axis, m.
+
+    ``crank_angles`` are crank angles seen from the crankcase (any shape); returns a dict
+    keyed by cylinder number.
+    """
+    return _linkage(engine, crank_angles)[1]
+
+
+def mass_positions(engine, angles):
+    """Every point mass of ``engine`` at engine angles ``angles`` (1-D, rad), in the fixed frame."""
+    piston, _, _, knuckle, pins = _linkage(engine, _crank_angles(engine, angles))
+    positions, masses, z, owner = [], [], [], []
+    for cyl in engine.cylinders:
+        positions.append(piston[cyl.number])
+        masses.append(cyl.reciprocating_kg)
+        z.append(cyl.z_m)
+        owner.append(cyl.number)
+        if cyl.is_link and cyl.knuckle_kg:
+            positions.append(knuckle[cyl.number])
+            masses.append(cyl.knuckle_kg)
+            z.append(cyl.z_m)
+            owner.append(cyl.number)
+    if engine.rotating_kg:
+        for throw, pin in zip(engine.throws, pins):
+            positions.append(pin)
+            masses.append(engine.rotating_kg)
+            z.append(throw.z_m)
+            owner.append(0)
+    positions = np.array(positions)
+    if engine.frame == "rotary":
+        # the crankcase frame turns forward by the engine angle
+        positions = positions * np.exp(1j * angles)
+    return MassSet(positions, np.array(masses, float), np.array(z, float), np.array(owner))
