@@ -86,8 +86,24 @@ def validate(paths):
 @main.command("list")
 @click.argument("folder", required=False, default="configs", metavar="[DIR]")
 def list_(folder):
-    """List the engines in DIR (default: configs): name, cylinders, cycle, frame, source."""
-    click.echo(list_table(_load_all([folder])))
+    """List the engines in DIR (default: configs): name, cylinders, cycle, frame, source.
+
+    Invalid files are reported on standard error (exit status 1) after the listing.
+    """
+    files = find_configs([folder])
+    if not files:
+        _fail(f"no .toml configuration found in {folder}")
+    engines, errors = [], []
+    for path in files:
+        try:
+            engines.append(load(path))
+        except ConfigError as exc:
+            errors.append(str(exc))
+    click.echo(list_table(engines))
+    for error in errors:
+        click.echo(f"invalid: {error}", err=True)
+    if errors:
+        raise SystemExit(1)
 
 
 @main.command()

@@ -1,0 +1,49 @@
+"""Shared helpers: building engines in code, and the shipped library."""
+
+import math
+import os
+import sys
+from pathlib import Path
+
+import pytest
+
+from balance_cli.model import Cylinder, Engine, Throw
+
+os.environ.setdefault("MPLBACKEND", "Agg")
+
+ROOT = Path(__file__).resolve().parent.parent
+CONFIGS = ROOT / "configs"
+PART3 = CONFIGS / "tanaka-part3"
+
+
+def make_engine(banks_deg, throws, *, r=0.08, l=0.28, m=1.0, rpm=1000.0, cycle=4, frame="fixed",
+                rotating=0.0, pin_offset=0.0, links=None, firing_order=None):
+    """A grid engine: one cylinder per (bank, throw), numbered bank by bank.
+
+    ``throws`` is a list of (phase in degrees, z in metres); ``links`` is None or
+    (master bank index, link length m, knuckle radius m, knuckle mass kg).
+    """
+    throw_objs = tuple(Throw(math.radians(p), z) for p, z in throws)
+    banks = tuple(math.radians(b) for b in banks_deg)
+    cylinders = []
+    for b in range(len(banks)):
+        for t, throw in enumerate(throw_objs):
+            number = b * len(throws) + t + 1
+            extra = {}
+            if links is not None and b != links[0]:
+                master_bank, length, radius, knuckle = links
+                extra = dict(master=master_bank * len(throws) + t + 1, link_length_m=length,
+                             knuckle_radius_m=radius, knuckle_angle_rad=banks[b] - banks[master_bank],
+                             knuckle_kg=knuckle)
+            cylinders.append(Cylinder(number, b, t, throw.z_m, m, **extra))
+    return Engine(name="test engine", cycle=cycle, speed_rad_s=rpm * math.pi / 30.0, crank_radius_m=r,
+                  rod_length_m=l, bank_angles_rad=banks, throws=throw_objs, cylinders=tuple(cylinders),
+                  rotating_kg=rotating, pin_offset_m=pin_offset, frame=frame,
+                  firing_order=firing_order)
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    yield
+    if "matplotlib.pyplot" in sys.modules:
+        sys.modules["matplotlib.pyplot"].close("all")

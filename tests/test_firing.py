@@ -1,0 +1,102 @@
+"""Top-dead-centre angles and firing orders, against hand-worked crank diagrams."""
+
+import dataclasses
+import math
+
+import pytest
+from numpy.testing import assert_allclose
+
+from balance_cli import load
+from balance_cli.firing import FiringError, firing, tdc_angles
+from conftest import CONFIGS, make_engine
+
+INLINE4 = [(0, 0.0), (180, 0.1), (180, 0.2), (0, 0.3)]
+
+
+def test_tdc_is_where_bank_angle_equals_crank_phase():
+    """Throw at phase β, bank at γ: TDC when θ = γ − β (mod 360°) for plain rods, no offset."""
+    engine = make_engine([-45, 45], [(0, 0.0), (120, 0.1)])
+    tdc = tdc_angles(engine)
+    assert_allclose([tdc[n] for n in (1, 2, 3, 4)], [315.0, 195.0, 45.0, 285.0], atol=1e-6)
+
+
+def test_pin_offset_moves_tdc_to_the_collinear_position():
+    """With offset e the piston is farthest out when crank and rod are collinear:
+    sin ψ = e/(l + r)."""
+    r, l, e = 0.05, 0.2, 0.01
+    tdc = tdc_angles(make_engine([0], [(0, 0.0)], r=r, l=l, pin_offset=e))
+    assert_allclose(tdc[1], math.degrees(math.asin(e / (l + r))), atol=1e-4)
+
+
+def test_rotary_tdc_runs_backwards_through_the_cylinders():
+    """Crankcase turning forward about a fixed crank: the cylinder at γ meets the crank when
+    the crankcase angle is −γ."""
+    engine = make_engine([0, 120, 240], [(0, 0.0)], frame="rotary")
+    tdc = tdc_angles(engine)
+    assert_allclose([tdc[1], tdc[2], tdc[3]], [0.0, 240.0, 120.0], atol=1e-6)
+
+
+def test_given_inline4_order_fires_every_180_degrees():
+    fire = firing(make_engine([0], INLINE4, firing_order=(1, 3, 4, 2)))
+    assert fire.order == (1, 3, 4, 2) and fire.given and fire.uniform
+    assert_allclose(fire.angles_deg, [0, 180, 360, 540], atol=1e-6)
+    assert_allclose(fire.intervals_deg, [180] * 4, atol=1e-6)
+
+
+def test_order_that_does_not_fit_the_crank_is_refused():
+    """1-4-2-3 on a flat crank: 1 and 4 share TDC, so 4 fires at 360°, 2 at 540° and 3
+    would need 720°: past the cycle."""
+    with pytest.raises(FiringError, match="cannot fire after cylinder 2"):
+        firing(make_engine([0], INLINE4, firing_order=(1, 4, 2, 3)))
+
+
+def test_order_that_is_not_a_permutation_is_refused():
+    with pytest.raises(FiringError, match="not a permutation"):
+        firing(make_engine([0], INLINE4, firing_order=(1, 3, 3, 2)))
+
+
+def test_most_uniform_order_of_a_nine_cylinder_radial_skips_every_other_cylinder():
+    """Four-stroke, one throw, cylinders 40° apart: firing every other one gives 80°."""
+    fire = firing(make_engine([40 * i for i in range(9)], [(0, 0.0)]))
+    assert fire.order == (1, 3, 5, 7, 9, 2, 4, 6, 8) and not fire.given
+    assert_allclose(fire.intervals_deg, [80] * 9, atol=1e-6)
+
+
+def test_most_uniform_inline4_order_is_one_of_the_two_classic_ones():
+    fire = firing(make_engine([0], INLINE4))
+    assert fire.order in {(1, 3, 4, 2), (1, 2, 4, 3)}
+    assert fire.uniform
+
+
+def test_two_stroke_fires_at_every_tdc_and_may_fire_two_together():
+    """Nakanishi's point: a two-stroke in-line 4 on a flat crank fires two cylinders at once."""
+    fire = firing(make_engine([0], INLINE4, cycle=2))
+    assert_allclose(sorted(fire.intervals_deg), [0, 0, 180, 180], atol=1e-6)
+    assert not fire.uniform
+    given = firing(make_engine([0], INLINE4, cycle=2, firing_order=(1, 4, 2, 3)))
+    assert_allclose(given.angles_deg, [0, 0, 180, 180], atol=1e-6)
+
+
+def test_library_firing_figures():
+    """Library engines: car in-line 4 every 180°, Part III W12 every 60°, in-line 12 every 60°."""
+    for name, interval in [("inline-4-car.toml", 180), ("inline-12.toml", 60),
+                           ("tanaka-part3/2a-w12-60.toml", 60), ("tanaka-part3/3-inline-6.toml", 120)]:
+        fire = firing(load(CONFIGS / name))
+        assert fire.uniform, name
+        assert_allclose(fire.intervals_deg, [interval] * len(fire.order), atol=1e-6)
+
+
+def test_link_rods_shift_tdc_slightly():
+    """A link rod reaches its top dead centre a little after its bank angle (Fraeys de
+    Veubeke § 7: θ ≈ ψ + r_n(1 − (l/L)cos ψ)·λ sin ψ/(l + R) for ε = 0): for the BRAMO
+    cylinder 3 (ψ = 80°) about 2.5°. The estimate drops the small terms of its denominator
+    (r_n·λ…, a few per cent of l + R): ±0.2°."""
+    engine = load(CONFIGS / "bramo-323.toml")
+    tdc = tdc_angles(engine)
+    psi, r_n, l, big_l, radius = math.radians(80), 0.07126, 0.2615, 0.330, 0.080
+    lam = radius / big_l
+    estimate = r_n * (1 - l / big_l * math.cos(psi)) * lam * math.sin(psi) / (l + radius)
+    assert abs(tdc[3] - 80 - math.degrees(estimate)) < 0.2
+    plain = dataclasses.replace(engine, cylinders=tuple(
+        dataclasses.replace(c, master=None, knuckle_kg=0.0) for c in engine.cylinders))
+    assert_allclose(tdc_angles(plain)[3], 80.0, atol=1e-6)
