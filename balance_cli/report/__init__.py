@@ -1,0 +1,1 @@
+"""Turning results into text, tables and documents. Nothing here computes balance."""

@@ -1,0 +1,57 @@
+"""The JSON document of ``balance compare``: a contract other programs read (see README)."""
+
+import json
+
+from ..units import rad_s_to_rpm
+from .values import order_values
+
+__all__ = ["compare_document", "to_json"]
+
+
+def engine_document(result, reference):
+    """One engine's entry: identification, firing, largest resultant and every order."""
+    engine = result.engine
+    firing = result.firing
+    reference_force = reference.counterweighted_force_n / reference.per_cylinder_unit_n
+    per_cylinder = result.counterweighted_force_n / result.per_cylinder_unit_n
+    return {
+        "name": engine.name,
+        "config": engine.config_path,
+        "source": engine.source,
+        "cylinders": engine.n_cylinders,
+        "cycle": engine.cycle,
+        "frame": engine.frame,
+        "speed_rpm": rad_s_to_rpm(engine.speed_rad_s),
+        "unit_force_N": engine.unit_force_n,
+        "firing": {
+            "order": list(firing.order),
+            "angles_deg": list(firing.angles_deg),
+            "intervals_deg": list(firing.intervals_deg),
+            "uniform": firing.uniform,
+            "max_deviation_deg": firing.max_deviation_deg,
+            "given": firing.given,
+        },
+        "largest_resultant_N": result.largest_force_n,
+        "counterweighted_resultant_N": result.counterweighted_force_n,
+        "counterweighted_resultant_per_cylinder": per_cylinder,
+        "percent_of_reference": 100.0 * per_cylinder / reference_force if reference_force else None,
+        "sampling_ok": result.shaking.sampling_ok,
+        "orders": [
+            {"order": o.order, **order_values(o, result)} for o in result.shaking.orders
+        ],
+    }
+
+
+def compare_document(results, reference_index, samples, max_order):
+    reference = results[reference_index]
+    return {
+        "balance_version": 1,
+        "samples": samples,
+        "max_order": max_order,
+        "reference": reference.engine.name,
+        "engines": [engine_document(r, reference) for r in results],
+    }
+
+
+def to_json(document):
+    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
