@@ -71,6 +71,12 @@ def tdc_angles(engine):
     return {n: float(a) for n, a in zip(numbers, angles)}
 
 
+def _after(angle, reference):
+    """``angle`` − ``reference`` in [0, 360), with TDCs equal to search precision made equal."""
+    turn = (angle - reference) % 360.0
+    return 0.0 if turn > 360.0 - _EPS else turn
+
+
 def _fit_order(order, tdc, cycle_deg):
     """Firing angles for ``order``, each at one of its TDCs, increasing through the cycle.
 
@@ -81,9 +87,7 @@ def _fit_order(order, tdc, cycle_deg):
     margin = _EPS if cycle_deg > 360.0 else -_EPS
     angles = [0.0]
     for number in order[1:]:
-        angle = (tdc[number] - reference) % 360.0
-        if angle > 360.0 - _EPS:
-            angle = 0.0
+        angle = _after(tdc[number], reference)
         while angle <= angles[-1] + margin:
             angle += 360.0
         if angle >= cycle_deg - _EPS:
@@ -100,32 +104,51 @@ def _intervals(angles, cycle_deg):
     return [b - a for a, b in zip(angles, angles[1:])] + [cycle_deg - angles[-1] + angles[0]]
 
 
-def _most_uniform_four_stroke(numbers, tdc):
-    """Choose for each cylinder which of its two TDCs fires, making the gaps most uniform."""
-    first = numbers[0]
-    base = np.array([(tdc[n] - tdc[first]) % 360.0 for n in numbers])
-    n = len(numbers)
-    ideal = 720.0 / n
-    if n <= _EXHAUSTIVE_LIMIT:
-        shifts = np.array(list(itertools.product((0.0, 360.0), repeat=n - 1)))
-        shifts = np.hstack([np.zeros((len(shifts), 1)), shifts])
-    else:
-        # too many cylinders to try every choice: alternate revolutions round the TDC sequence
-        ranks = np.argsort(base, kind="stable")
-        shift = np.zeros(n)
-        shift[ranks[1::2]] = 360.0
-        shifts = shift[None, :]
+def _scores(base, shifts, ideal):
+    """Worst and summed-square deviation of the gaps, and firing sequence, for each row of shifts."""
     angles = base[None, :] + shifts
     sequence = np.argsort(angles, axis=1, kind="stable")
     ordered = np.take_along_axis(angles, sequence, axis=1)
     gaps = np.diff(np.hstack([ordered, ordered[:, :1] + 720.0]), axis=1)
     worst = np.round(np.abs(gaps - ideal).max(axis=1), 3)
     spread = np.round(((gaps - ideal) ** 2).sum(axis=1), 3)
+    return worst, spread, sequence
+
+
+def _most_uniform_four_stroke(numbers, tdc):
+    """Choose for each cylinder which of its two TDCs fires, making the gaps most uniform.
+
+    Up to ``_EXHAUSTIVE_LIMIT`` cylinders every choice is tried; beyond, a local search starts
+    from alternate revolutions round the TDC sequence and flips one cylinder at a time while
+    that helps (not guaranteed to be the best, but uniform where the usual layouts allow).
+    """
+    first = numbers[0]
+    base = np.array([_after(tdc[n], tdc[first]) for n in numbers])
+    n = len(numbers)
+    ideal = 720.0 / n
+    if n <= _EXHAUSTIVE_LIMIT:
+        shifts = np.array(list(itertools.product((0.0, 360.0), repeat=n - 1)))
+        shifts = np.hstack([np.zeros((len(shifts), 1)), shifts])
+    else:
+        ranks = np.argsort(base, kind="stable")
+        current = np.zeros(n)
+        current[ranks[1::2]] = 360.0
+        flips = np.eye(n)[1:] * 360.0
+        for _ in range(4 * n):
+            candidates = np.vstack([current, (current + flips) % 720.0])
+            worst, spread, _ = _scores(base, candidates, ideal)
+            best = np.lexsort((spread, worst))[0]
+            if best == 0:
+                break
+            current = candidates[best]
+        shifts = current[None, :]
+    worst, spread, sequence = _scores(base, shifts, ideal)
     best = np.lexsort((spread, worst))[0]
-    best_score = (worst[best], spread[best])
-    tied = np.flatnonzero((worst == best_score[0]) & (spread == best_score[1]))
-    orders = sorted(tuple(numbers[j] for j in sequence[i]) for i in tied)
-    return orders[0]
+    tied = np.flatnonzero((worst == worst[best]) & (spread == spread[best]))
+    choice = min(tied, key=lambda i: tuple(numbers[j] for j in sequence[i]))
+    angles = base + shifts[choice]
+    order = tuple(numbers[j] for j in sequence[choice])
+    return order, [float(angles[j]) for j in sequence[choice]]
 
 
 def firing(engine):
@@ -141,15 +164,13 @@ def firing(engine):
                 f"firing_order {list(order)} is not a permutation of the cylinder numbers "
                 f"{numbers}; list every cylinder exactly once"
             )
+        angles = _fit_order(order, tdc, cycle_deg)
     elif engine.cycle == 2:
         first = numbers[0]
-        order = tuple(sorted(numbers, key=lambda n: ((tdc[n] - tdc[first]) % 360.0, n)))
+        order = tuple(sorted(numbers, key=lambda n: (_after(tdc[n], tdc[first]), n)))
+        angles = [_after(tdc[n], tdc[first]) for n in order]
     else:
-        order = _most_uniform_four_stroke(numbers, tdc)
-    if given or engine.cycle == 4:
-        angles = _fit_order(order, tdc, cycle_deg)
-    else:
-        angles = [(tdc[n] - tdc[order[0]]) % 360.0 for n in order]
+        order, angles = _most_uniform_four_stroke(numbers, tdc)
     intervals = _intervals(angles, cycle_deg)
     ideal = cycle_deg / len(order)
     uniform = max(abs(i - ideal) for i in intervals) <= UNIFORM_TOLERANCE_DEG

@@ -8,6 +8,7 @@ from numpy.testing import assert_allclose
 
 from balance_cli import load
 from balance_cli.firing import FiringError, firing, tdc_angles
+from balance_cli.model import Cylinder, Engine, Throw
 from conftest import CONFIGS, make_engine
 
 INLINE4 = [(0, 0.0), (180, 0.1), (180, 0.2), (0, 0.3)]
@@ -100,3 +101,20 @@ def test_link_rods_shift_tdc_slightly():
     plain = dataclasses.replace(engine, cylinders=tuple(
         dataclasses.replace(c, master=None, knuckle_kg=0.0) for c in engine.cylinders))
     assert_allclose(tdc_angles(plain)[3], 80.0, atol=1e-6)
+
+
+def test_eighteen_cylinder_two_row_radial_fires_every_40_degrees():
+    """Two rows of nine, the rear row turned 20° and on a throw at 180°: the rear row's TDCs
+    fall at 20° + 180° + 40°k = 40°(k + 5), the front row's, so each 40° mark has two
+    cylinders, one per revolution: 720°/18 = 40° is possible. 18 cylinders are past the
+    exhaustive search, so this checks the local search."""
+    front = [(40 * i, 0) for i in range(9)]
+    rear = [(20 + 40 * i, 1) for i in range(9)]
+    banks = tuple(math.radians(a) for a, _ in front + rear)
+    throws = (Throw(0.0, 0.0), Throw(math.pi, 0.15))
+    cylinders = tuple(Cylinder(i + 1, i, t, throws[t].z_m, 1.0) for i, (_, t) in enumerate(front + rear))
+    engine = Engine(name="two-row radial", cycle=4, speed_rad_s=200.0, crank_radius_m=0.08,
+                    rod_length_m=0.3, bank_angles_rad=banks, throws=throws, cylinders=cylinders)
+    fire = firing(engine)
+    assert fire.uniform
+    assert_allclose(fire.intervals_deg, [40.0] * 18, atol=1e-6)
