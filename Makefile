@@ -5,7 +5,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: setup demo test bench clean
+.PHONY: setup demo test bench validate regress-update clean
 
 $(STAMP): pyproject.toml
 	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 11))' || \
@@ -25,6 +25,15 @@ test: $(STAMP)
 
 bench: $(STAMP)
 	$(BIN)/python tools/bench.py
+
+# docs/VALIDATION.md from tests/reference (CI checks that the committed one is current)
+validate: $(STAMP)
+	$(BIN)/python tools/validation_report.py
+
+# rewrite the golden regression tables after an intended change; never in CI
+regress-update: $(STAMP)
+	$(BIN)/python tools/regress.py --update
+	@git diff --stat -- tests/golden || true
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache

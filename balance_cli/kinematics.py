@@ -10,12 +10,14 @@ Masses (point masses, as in Tanaka 1925 and Fraeys de Veubeke 1949 §8):
 """
 
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
 from .model import ModelError
 
-__all__ = ["MassSet", "mass_positions", "piston_travel", "check_assembly", "engine_angles"]
+__all__ = ["MassSet", "Linkage", "linkage", "mass_positions", "piston_travel", "check_assembly",
+           "engine_angles"]
 
 #: crank angles at which a linkage is checked for assembly (0.1° apart)
 _CHECK_SAMPLES = 3600
@@ -62,12 +64,23 @@ def _slider(point, axis_angle, length, offset):
     return (travel + 1j * offset) / turn, travel, reach
 
 
-def _linkage(engine, crank_angles):
-    """Positions in the crankcase frame for crank angles ``crank_angles`` (any shape).
+class Linkage(NamedTuple):
+    """Points of the linkage in the crankcase frame, m (complex), keyed by cylinder number.
 
-    Returns dicts keyed by cylinder number: piston pin, travel, reach (assembly margin),
-    knuckle pin (links only); and the crank-pin position of every throw.
+    ``travel`` is the piston pin's distance from the crank axis along its cylinder axis;
+    ``reach`` the squared half-chord l² − (e − y)² that must stay positive for the rod to
+    reach its axis; ``knuckle`` exists for link rods only; ``crank_pins`` is per throw.
     """
+
+    piston: dict
+    travel: dict
+    reach: dict
+    knuckle: dict
+    crank_pins: list
+
+
+def linkage(engine, crank_angles):
+    """The exact linkage at crank angles ``crank_angles`` seen from the crankcase (any shape)."""
     r = engine.crank_radius_m
     pins = [r * np.exp(1j * (crank_angles + t.phase_rad)) for t in engine.throws]
     piston, travel, reach, knuckle = {}, {}, {}, {}
@@ -92,7 +105,7 @@ def _linkage(engine, crank_angles):
         piston[cyl.number], travel[cyl.number], reach[cyl.number] = _slider(
             knuckle[cyl.number], axis, cyl.link_length_m, engine.pin_offset_m
         )
-    return piston, travel, reach, knuckle, pins
+    return Linkage(piston, travel, reach, knuckle, pins)
 
 
 def _crank_angles(engine, angles):
@@ -107,7 +120,7 @@ def _crank_angles(engine, angles):
 def check_assembly(engine):
     """Raise :class:`ModelError` naming the first cylinder whose rod cannot reach its axis."""
     angles = engine_angles(_CHECK_SAMPLES)
-    _, _, reach, _, _ = _linkage(engine, angles)
+    reach = linkage(engine, angles).reach
     for cyl in engine.cylinders:
         worst = int(np.argmin(reach[cyl.number]))
         if reach[cyl.number][worst] <= 0.0:
@@ -129,12 +142,12 @@ def piston_travel(engine, crank_angles):
     ``crank_angles`` are crank angles seen from the crankcase (any shape); returns a dict
     keyed by cylinder number.
     """
-    return _linkage(engine, crank_angles)[1]
+    return linkage(engine, crank_angles).travel
 
 
 def mass_positions(engine, angles):
     """Every point mass of ``engine`` at engine angles ``angles`` (1-D, rad), in the fixed frame."""
-    piston, _, _, knuckle, pins = _linkage(engine, _crank_angles(engine, angles))
+    piston, _, _, knuckle, pins = linkage(engine, _crank_angles(engine, angles))
     positions, masses, z, owner = [], [], [], []
     for cyl in engine.cylinders:
         positions.append(piston[cyl.number])

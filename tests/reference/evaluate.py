@@ -1,0 +1,314 @@
+"""Evaluate the published figures of the source papers against balance's exact results.
+
+Each ``*.toml`` file beside this module holds one paper: a ``[paper]`` table, optional
+``[frames.NAME]`` tables (how the paper's axes and crank angle relate to ours) and
+``[[figure]]`` records, one per published number. ``errata.toml`` lists the misprints the
+records point to. See README.md here for the record format.
+
+Used by ``tests/test_reference.py`` and by ``tools/validation_report.py`` (``make validate``).
+"""
+
+import dataclasses
+import math
+import tomllib
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+
+from balance_cli import analyse, load
+from balance_cli.kinematics import linkage
+from balance_cli.model import Cylinder, Engine, Throw
+from balance_cli.units import STANDARD_GRAVITY
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent.parent
+
+__all__ = ["Row", "papers", "errata", "evaluate", "rows"]
+
+
+@dataclasses.dataclass(frozen=True)
+class Row:
+    id: str
+    paper: str
+    where: str
+    quantity: str
+    unit: str
+    published: float
+    ours: float
+    tolerance: float
+    reason: str
+    erratum: str
+    corrected: float | None
+
+    @property
+    def deviation(self):
+        return self.ours - self.published
+
+    @property
+    def agrees(self):
+        return abs(self.deviation) <= self.tolerance
+
+    @property
+    def corrected_agrees(self):
+        return self.corrected is not None and abs(self.ours - self.corrected) <= self.tolerance
+
+    @property
+    def verdict(self):
+        if self.agrees:
+            return "agrees"
+        if self.erratum:
+            return f"erratum {self.erratum}"
+        return "DISAGREES"
+
+
+def papers():
+    """Every paper file: its [paper] table, frames and figures."""
+    out = []
+    for path in sorted(HERE.glob("*.toml")):
+        if path.name == "errata.toml":
+            continue
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        data["file"] = path.name
+        out.append(data)
+    return out
+
+
+def errata():
+    return tomllib.loads((HERE / "errata.toml").read_text(encoding="utf-8"))["erratum"]
+
+
+# ---------------------------------------------------------------- engines and variants
+
+
+@lru_cache(maxsize=None)
+def _engine(config):
+    return load(ROOT / config)
+
+
+def _variant(record):
+    """The record's engine with its overrides applied (masses, knuckle radii, ...)."""
+    engine = _engine(record["config"])
+    cylinders = engine.cylinders
+    if "reciprocating" in record.get("variant", []):
+        cylinders = tuple(dataclasses.replace(c, knuckle_kg=0.0) for c in cylinders)
+        engine = dataclasses.replace(engine, rotating_kg=0.0, cylinders=cylinders)
+    if "masses_g" in record:
+        cylinders = tuple(dataclasses.replace(c, reciprocating_kg=m / 1000.0)
+                          for c, m in zip(cylinders, record["masses_g"]))
+        engine = dataclasses.replace(engine, cylinders=cylinders)
+    if "knuckle_radii_mm" in record:
+        cylinders = tuple(dataclasses.replace(c, knuckle_radius_m=a / 1000.0) if c.is_link else c
+                          for c, a in zip(cylinders, record["knuckle_radii_mm"]))
+        engine = dataclasses.replace(engine, cylinders=cylinders)
+    return engine
+
+
+def _base(record):
+    """The record's engine without the overrides that a difference is taken against."""
+    return _variant({k: v for k, v in record.items() if k not in ("masses_g", "knuckle_radii_mm")})
+
+
+@lru_cache(maxsize=None)
+def _analysed(engine, samples, max_order):
+    return analyse(engine, samples, max_order)
+
+
+def _result(engine, record):
+    return _analysed(engine, record.get("samples", 256), record.get("max_order", 8))
+
+
+# ---------------------------------------------------------------- units and frames
+
+
+def _unit(name, engine, result):
+    """Divisor turning newtons (or N·m) into the record's unit."""
+    return {
+        "per_cylinder": result.per_cylinder_unit_n,
+        "N": 1.0, "Nm": 1.0,
+        # phases and ratios: the scale cancels
+        "": 1.0, "deg": 1.0,
+        "kgf": STANDARD_GRAVITY, "kgfm": STANDARD_GRAVITY,
+        # Fraeys de Veubeke's "kg": a force divided by R·Ω² (his unit of Table XII)
+        "kg_RW2": engine.crank_radius_m * engine.speed_rad_s**2,
+    }[name]
+
+
+def _in_frame(forward, backward, k, frame):
+    """Phasors of order k in the paper's crank angle θ_P = sign·(θ − zero)."""
+    zero = math.radians(frame.get("zero_deg", 0.0))
+    forward = forward * np.exp(1j * k * zero)
+    backward = backward * np.exp(-1j * k * zero)
+    if frame.get("sign", 1) == -1:
+        forward, backward = backward, forward
+    return forward, backward
+
+
+_DIRECTIONS = {"along": 1.0, "across": 1j, "-along": -1.0, "-across": -1j}
+
+
+def _component(forward, backward, axis, frame):
+    """Coefficients (a, b) of a·cos kθ_P + b·sin kθ_P for the paper's X or Y axis."""
+    u = _DIRECTIONS[frame[axis]]
+    p, m = forward * np.conj(u), backward * np.conj(u)
+    return p.real + m.real, m.imag - p.imag
+
+
+# ---------------------------------------------------------------- quantities
+
+
+def _order_phasors(record, kind="force"):
+    k = record["order"]
+    engine = _variant(record)
+    result = _result(engine, record)
+    o = result.shaking.orders[k - 1]
+    f, b = (o.force_forward, o.force_backward) if kind == "force" else (o.moment_forward, o.moment_backward)
+    if record.get("difference"):
+        base = _result(_base(record), record).shaking.orders[k - 1]
+        bf, bb = (base.force_forward, base.force_backward) if kind == "force" else (
+            base.moment_forward, base.moment_backward)
+        f, b = f - bf, b - bb
+    scale = _unit(record["unit"], engine, result)
+    return f / scale, b / scale, k
+
+
+def _quantity(record, frames):
+    words = record["quantity"].split()
+    kind = words[0]
+    frame = frames.get(record.get("frame", ""), {})
+    if kind in ("X", "Y"):
+        f, b, k = _order_phasors(record)
+        a, s = _component(*_in_frame(f, b, k, frame), kind, frame)
+        form = words[1]
+        # phases of a vanishing component are noise: report them as 0
+        if form == "cos":
+            return a
+        if form == "sin":
+            return s
+        if form == "amplitude":
+            return math.hypot(a, s)
+        if form == "phase":      # a·cos + s·sin = R·cos(kθ + φ)
+            return math.degrees(math.atan2(-s, a))
+        if form == "sinphase":   # a·cos + s·sin = R·sin(kθ + φ)
+            return math.degrees(math.atan2(a, s)) % 360.0
+    if kind in ("forward", "backward", "max", "min"):
+        f, b, _ = _order_phasors(record)
+        return {"forward": abs(f), "backward": abs(b), "max": abs(f) + abs(b),
+                "min": abs(abs(f) - abs(b))}[kind]
+    if kind == "re":         # signed real part: Fraeys de Veubeke's S_k, S_−k
+        f, b, _ = _order_phasors(record)
+        return (f if words[1] == "forward" else b).real
+    if kind == "moment":
+        f, b, _ = _order_phasors(record, "moment")
+        if words[1] == "forward":
+            return abs(f)
+        if words[1] == "max":
+            return abs(f) + abs(b)
+        if words[1] == "ratio":  # |across/along| of the forward moment phasor
+            return abs(f.imag / f.real)
+    if kind == "mean":
+        engine = _variant(record)
+        result = _result(engine, record)
+        return abs(result.shaking.force_coefficients[0]) / _unit(record["unit"], engine, result)
+    if kind == "percent":
+        ours = _result(_variant(record), record)
+        reference = _result(_engine(record["reference"]), record)
+        ratio = lambda r: r.counterweighted_force_n / r.per_cylinder_unit_n  # noqa: E731
+        return 100.0 * ratio(ours) / ratio(reference)
+    if kind == "interval":
+        intervals = _result(_variant(record), record).firing.intervals_deg
+        return {"max": max(intervals), "min": min(intervals)}[words[1]]
+    if kind == "link":
+        return _link_first_harmonic(record)[words[1]]
+    if kind == "reduction":
+        return _fraeys_reduction(record["data"])[words[1]]
+    if kind == "gamma":
+        return _gamma_sum(record["radii_mm"], record["crank_radius_mm"], int(words[1]), int(words[2]))
+    if kind == "series":
+        return _series_check(words[1], record)
+    raise ValueError(f"{record['id']}: unknown quantity {record['quantity']!r}")
+
+
+def _link_first_harmonic(record):
+    """Tanaka's k and α: sin φ' = k·sin(θ_T + α) fitted, as a first harmonic, to the exact
+    lean of a link rod at φ from its master (θ_T = −θ, Tanaka's sense of angles)."""
+    engine = _engine(record["config"])
+    phi = math.radians(record["phi_deg"])
+    master = engine.cylinder(1)
+    link = next(c for c in engine.cylinders if c.is_link)
+    probe = dataclasses.replace(
+        engine, bank_angles_rad=(0.0, phi), throws=engine.throws[:1],
+        cylinders=(dataclasses.replace(master, bank=0),
+                   dataclasses.replace(link, number=2, bank=1, master=1, knuckle_angle_rad=phi,
+                                       **({"knuckle_radius_m": record["knuckle_radius_mm"] / 1000}
+                                          if "knuckle_radius_mm" in record else {}))),
+    )
+    samples = 256
+    theta = 2 * np.pi * np.arange(samples) / samples
+    knuckle = linkage(probe, theta).knuckle[2]
+    lean = -(knuckle * np.exp(-1j * phi)).imag / link.link_length_m   # sin φ'
+    c1 = np.fft.fft(lean)[1] / samples
+    # lean = A cos θ + B sin θ with A = 2 Re c1, B = −2 Im c1; in θ_T = −θ: A cos θ_T − B sin θ_T
+    a, b = 2 * c1.real, 2 * c1.imag
+    alpha = math.degrees(math.atan2(a, b)) % 360.0
+    return {"k": math.hypot(a, b), "alpha": alpha - 360.0 if alpha > 359.0 else alpha}
+
+
+def _fraeys_reduction(data):
+    """Fraeys de Veubeke § 8, formulas (13)-(17), from the part data of Table VIII."""
+    big_l, h_master, l_link, h_link = data["L_mm"], data["H_mm"], data["l_mm"], data["h_mm"]
+    master, link, piston = data["B_kg"], data["b_kg"], data["p_kg"]
+    radii = data["r_mm"]               # knuckle radii of the link cylinders, at ψ = 40°·(n − 1)
+    psi = [math.radians(40 * n) for n in range(1, len(radii) + 1)]
+    big_k, k = h_master / big_l, h_link / l_link
+    m = -link * (1 - k) / big_l * sum(r * math.cos(p) for r, p in zip(radii, psi))   # (13)
+    return {
+        "K": big_k, "k": k, "BK": master * big_k, "bk": link * k,
+        "B(1-K)": master * (1 - big_k), "b(1-k)": link * (1 - k), "m": m,
+        "a": piston + link * k,                                             # (14)
+        "A": master * big_k - link * k - m,                                 # (15)
+        "D": master * (1 - big_k) + len(radii) * link * (1 - k) + m,        # (17)
+    }
+
+
+def _gamma_sum(radii_mm, crank_radius_mm, power, k):
+    """Fraeys de Veubeke's Table VII sums Σ γ_n^power·cos kψ_n, γ_n = r_n/R, ψ_n = 40°(n − 1)."""
+    return sum((r / crank_radius_mm) ** power * math.cos(math.radians(40 * n * k))
+               for n, r in enumerate(radii_mm))
+
+
+def _series_check(name, record):
+    """Coefficients of the classic series, measured on the exact slider-crank."""
+    q = record.get("q", 0.25)
+    engine = Engine(name="slider-crank", cycle=4, speed_rad_s=1.0, crank_radius_m=q,
+                    rod_length_m=1.0, bank_angles_rad=(0.0,), throws=(Throw(0.0),),
+                    cylinders=(Cylinder(1, 0, 0, 0.0, 1.0),))
+    samples = 256
+    theta = 2 * np.pi * np.arange(samples) / samples
+    travel = linkage(engine, theta).travel[1]                    # = q·cos θ + √(1 − q² sin²θ)
+    c = np.fft.fft(travel - q * np.cos(theta)).real / samples
+    a2 = 2 * c[2]
+    if name == "A2_q6":      # (A2 − q²/4 − q⁴/16)/q⁶ → the q⁶ coefficient as q → 0
+        return (a2 - q**2 / 4 - q**4 / 16) / q**6
+    if name == "B2":         # acceleration coefficient of cos 2θ, per r·ω²
+        return 4 * a2 / q
+    raise ValueError(name)
+
+
+def evaluate(record, paper):
+    """One figure of ``paper`` (a parsed paper file) against balance."""
+    frames = paper.get("frames", {})
+    if "data" in paper and "data" not in record:
+        record = {**record, "data": paper["data"]}
+    return Row(
+        id=record["id"], paper=paper["paper"]["key"], where=record["where"], quantity=record["quantity"],
+        unit=record.get("unit", ""), published=float(record["published"]),
+        ours=float(_quantity(record, frames)), tolerance=float(record["tolerance"]),
+        reason=record["reason"], erratum=record.get("erratum", ""),
+        corrected=record.get("corrected"),
+    )
+
+
+def rows():
+    """Every figure of every paper, evaluated."""
+    return [evaluate(record, paper) for paper in papers() for record in paper["figure"]]
