@@ -8,10 +8,13 @@ import click
 from . import __version__
 from .compare import analyse, reference_index
 from .config import ConfigError, find_configs, load
+from .counterweight import BalanceError, balance, plane_at, plane_at_throw
 from .firing import FiringError, firing, tdc_angles
 from .output import OutputError, write_text
-from .report.document import compare_document, to_json
-from .report.table import compare_csv, compare_tables, list_table, show_table
+from .report.document import balance_document, compare_document, to_json
+from .report.table import (balance_csv, balance_tables, compare_csv, compare_tables, list_table,
+                           show_table)
+from .units import UnitError, parse_quantity
 from .report.values import Scale
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES
 
@@ -166,6 +169,101 @@ def compare(paths, samples, max_order, absolute, units, reference, fmt, output):
         text = compare_csv(results, scale)
     else:
         text = compare_tables(results, index, scale, fmt, samples)
+    try:
+        write_text(output, text)
+    except OutputError as exc:
+        _fail(str(exc))
+
+
+def _planes(engine, text):
+    """--planes: throw numbers ("1,6") or axial positions ("0 mm,750 mm"), one or two."""
+    if text is None:
+        return None
+    planes = []
+    for token in (t.strip() for t in text.split(",")):
+        if token.isdigit():
+            planes.append(plane_at_throw(engine, int(token)))
+        else:
+            try:
+                planes.append(plane_at(engine, parse_quantity(token, "length")))
+            except UnitError as exc:
+                raise BalanceError(f"--planes: {exc}") from None
+    return planes
+
+
+def _orders_option(text):
+    if not text:
+        return ()
+    try:
+        return tuple(int(t) for t in text.split(","))
+    except ValueError:
+        raise click.BadParameter("give orders as whole numbers, such as 1,2", param_hint="--shafts")
+
+
+@main.command()
+@_INPUTS
+@click.option("--planes", metavar="A[,B]",
+              help="Correction planes: throw numbers (1,6) or axial positions ('0 mm,750 mm'); one "
+                   "plane cancels the force only. Default: the first and last throws.")
+@click.option("--radius", metavar="LENGTH",
+              help="Radius of the counterweights' centre of mass, e.g. '60 mm'. Default: the crank radius.")
+@click.option("--balance-factor", type=float, metavar="F",
+              help="Size for the rotating masses plus F times the reciprocating ones per throw "
+                   "(0.5 is the classic single's), instead of cancelling the forward first order.")
+@click.option("--shafts", metavar="K[,K...]",
+              help="Cancel these residual orders with balancer shafts (k× speed, with or against the crank).")
+@click.option("--antivibrateur", "antivibrateur", is_flag=True,
+              help="Add Fraeys de Veubeke's rotor on the crank pin (twice crank speed), sized to "
+                   "cancel the forward second order (single-throw engines).")
+@click.option("--antivibrateur-radius", default="40 mm", show_default=True, metavar="LENGTH",
+              help="Eccentricity of the antivibrateur's mass.")
+@click.option("--test-masses", is_flag=True,
+              help="Also give the balancing-machine mass to hang on each crank pin.")
+@click.option("--samples", default=DEFAULT_SAMPLES, show_default=True, type=click.IntRange(16, 1 << 16),
+              help="Crank angles per revolution for the Fourier analysis.")
+@click.option("--max-order", default=DEFAULT_MAX_ORDER, show_default=True, type=click.IntRange(1, 1000),
+              help="Highest order reported.")
+@click.option("--absolute", is_flag=True, help="Forces in newtons (or --units) instead of per cylinder.")
+@click.option("--units", type=click.Choice(["N", "kgf"]), default="N", show_default=True,
+              help="Units of absolute forces and of moments; kgf implies --absolute.")
+@click.option("--format", "fmt", type=click.Choice(["table", "markdown", "csv", "json"]),
+              default="table", show_default=True, help="Output format.")
+@click.option("--output", "-o", default="-", metavar="FILE", show_default=True,
+              help="Write here (atomically) instead of standard output.")
+def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, antivibrateur_radius,
+                  test_masses, samples, max_order, absolute, units, fmt, output):
+    """Counterweights that cancel the forward first order, and what is left.
+
+    Two planes cancel the forward first-order force and moment; one plane the force only.
+    Optionally: balancer shafts for residual orders, the antivibrateur of radial engines, and
+    the balancing-machine test masses.
+    """
+    engines = _load_all(paths)
+    if max_order >= samples // 4:
+        _fail(f"--max-order {max_order} needs --samples above {4 * max_order}")
+    orders = _orders_option(shafts)
+    results = []
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        for engine in engines:
+            try:
+                radius_m = None if radius is None else parse_quantity(radius, "length")
+                rotor = parse_quantity(antivibrateur_radius, "length") if antivibrateur else None
+                results.append(balance(engine, _planes(engine, planes), radius_m, balance_factor,
+                                       orders, rotor, test_masses, samples, max_order))
+            except UnitError as exc:
+                _fail(f"--radius or --antivibrateur-radius: {exc}")
+            except BalanceError as exc:
+                _fail(f"{engine.config_path}: {exc}")
+    for w in caught:
+        click.echo(f"warning: {w.message}", err=True)
+    scale = Scale(absolute=absolute or units == "kgf", units=units)
+    if fmt == "json":
+        text = to_json(balance_document(results, samples, max_order))
+    elif fmt == "csv":
+        text = balance_csv(results, scale)
+    else:
+        text = balance_tables(results, scale, fmt)
     try:
         write_text(output, text)
     except OutputError as exc:

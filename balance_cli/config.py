@@ -18,7 +18,7 @@ _TOP_KEYS = {
     "name", "source", "cycle", "speed", "crank_radius", "rod_length", "pin_offset", "frame",
     "firing_order", "masses", "banks", "throws", "links", "cylinders",
 }
-_MASS_KEYS = {"reciprocating", "rotating", "knuckle"}
+_MASS_KEYS = {"reciprocating", "rotating", "knuckle", "crank"}
 _BANK_KEYS = {"angle"}
 _THROW_KEYS = {"phase", "z"}
 _LINK_KEYS = {"master_bank", "length", "knuckle_radius"}
@@ -161,6 +161,8 @@ def build(data, path="<config>"):
                                minimum=0.0)
     knuckle = masses.quantity("knuckle", "mass", required=False, default=0.0, positive=False,
                               minimum=0.0)
+    crank = masses.quantity("crank", "mass", required=False, default=0.0, positive=False,
+                            minimum=0.0)
 
     banks = []
     for i, table in enumerate(top.tables("banks"), 1):
@@ -207,7 +209,8 @@ def build(data, path="<config>"):
     engine = Engine(
         name=name, cycle=cycle, speed_rad_s=speed, crank_radius_m=crank_radius,
         rod_length_m=rod_length, bank_angles_rad=tuple(banks), throws=tuple(throws),
-        cylinders=tuple(cylinders), rotating_kg=rotating, pin_offset_m=pin_offset, frame=frame,
+        cylinders=tuple(cylinders), rotating_kg=rotating, crank_kg=crank, pin_offset_m=pin_offset,
+        frame=frame,
         firing_order=firing_order, source=source, config_path=str(path),
     )
     try:

@@ -6,7 +6,7 @@ rod ratio, piston-pin offset and link-rod geometry is exact.
 Masses (point masses, as in Tanaka 1925 and Fraeys de Veubeke 1949 §8):
 - per cylinder, ``reciprocating_kg`` at its piston pin;
 - per link rod, ``knuckle_kg`` at its knuckle pin on the master rod;
-- per throw, ``rotating_kg`` at the crank pin.
+- per throw, ``rotating_kg`` (big ends) and ``crank_kg`` (the crankshaft's own) at the crank pin.
 """
 
 from dataclasses import dataclass
@@ -36,13 +36,17 @@ class MassSet:
     z_m : ndarray, shape (n_masses,)
         axial position, m
     cylinder : ndarray of int, shape (n_masses,)
-        number of the cylinder the mass belongs to, 0 for crank-pin masses
+        number of the cylinder the mass belongs to; 0 for the big ends at a crank pin
+        (``rotating_kg``), −1 for the crankshaft's own (``crank_kg``)
+    throw : ndarray of int, shape (n_masses,)
+        0-based index of the throw the mass rides on
     """
 
     positions: np.ndarray
     masses_kg: np.ndarray
     z_m: np.ndarray
     cylinder: np.ndarray
+    throw: np.ndarray
 
 
 def engine_angles(samples):
@@ -148,25 +152,17 @@ def piston_travel(engine, crank_angles):
 def mass_positions(engine, angles):
     """Every point mass of ``engine`` at engine angles ``angles`` (1-D, rad), in the fixed frame."""
     piston, _, _, knuckle, pins = linkage(engine, _crank_angles(engine, angles))
-    positions, masses, z, owner = [], [], [], []
+    rows = []  # (position, mass, z, owner, throw)
     for cyl in engine.cylinders:
-        positions.append(piston[cyl.number])
-        masses.append(cyl.reciprocating_kg)
-        z.append(cyl.z_m)
-        owner.append(cyl.number)
+        rows.append((piston[cyl.number], cyl.reciprocating_kg, cyl.z_m, cyl.number, cyl.throw))
         if cyl.is_link and cyl.knuckle_kg:
-            positions.append(knuckle[cyl.number])
-            masses.append(cyl.knuckle_kg)
-            z.append(cyl.z_m)
-            owner.append(cyl.number)
-    if engine.rotating_kg:
-        for throw, pin in zip(engine.throws, pins):
-            positions.append(pin)
-            masses.append(engine.rotating_kg)
-            z.append(throw.z_m)
-            owner.append(0)
-    positions = np.array(positions)
+            rows.append((knuckle[cyl.number], cyl.knuckle_kg, cyl.z_m, cyl.number, cyl.throw))
+    for index, (throw, pin) in enumerate(zip(engine.throws, pins)):
+        for owner, mass in ((0, engine.rotating_kg), (-1, engine.crank_kg)):
+            if mass:
+                rows.append((pin, mass, throw.z_m, owner, index))
+    positions = np.array([row[0] for row in rows])
     if engine.frame == "rotary":
         # the crankcase frame turns forward by the engine angle
         positions = positions * np.exp(1j * angles)
-    return MassSet(positions, np.array(masses, float), np.array(z, float), np.array(owner))
+    return MassSet(positions, *(np.array([row[i] for row in rows]) for i in range(1, 5)))

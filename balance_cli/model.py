@@ -97,7 +97,10 @@ class Engine:
     throws : tuple of Throw
     cylinders : tuple of Cylinder
     rotating_kg : float
-        mass at the crank pin of every throw, kg
+        mass at the crank pin of every throw that is not the crankshaft's (big ends), kg
+    crank_kg : float
+        the crankshaft's own unbalance of every throw, as a mass at the crank pin, kg
+        (moves like ``rotating_kg``, but stays on the shaft on a balancing machine)
     frame : str
         "fixed" (the crank turns) or "rotary" (the crankcase turns about a fixed crank)
     firing_order : tuple of int or None
@@ -115,6 +118,7 @@ class Engine:
     throws: tuple
     cylinders: tuple
     rotating_kg: float = 0.0
+    crank_kg: float = 0.0
     pin_offset_m: float = 0.0
     frame: str = "fixed"
     firing_order: tuple | None = None

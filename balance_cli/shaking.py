@@ -70,6 +70,32 @@ class Shaking:
         """Largest magnitude of the resultant force over a revolution, N."""
         return float(np.abs(self.force(16, skip_forward_first)).max())
 
+    @classmethod
+    def from_coefficients(cls, force, moment, max_order, sampling_ok=True):
+        """Orders 1..max_order read off full coefficient arrays (N, N·m)."""
+        orders = np.arange(1, max_order + 1)
+        ff, fb = forward_backward(force, orders)
+        mf, mb = forward_backward(moment, orders)
+        table = tuple(
+            OrderComponents(int(k), complex(ff[i]), complex(fb[i]), complex(mf[i]), complex(mb[i]))
+            for i, k in enumerate(orders)
+        )
+        return cls(table, force, moment, sampling_ok)
+
+    def plus(self, order, forward=0j, backward=0j, forward_moment=0j, backward_moment=0j):
+        """A copy with phasors added to ``order`` (N, N·m): a balancer's contribution."""
+        force, moment = self.force_coefficients.copy(), self.moment_coefficients.copy()
+        force[order] += forward
+        force[-order] += backward
+        moment[order] += forward_moment
+        moment[-order] += backward_moment
+        return Shaking.from_coefficients(force, moment, len(self.orders), self.sampling_ok)
+
+
+def mean_cylinder_z(engine):
+    """z̄, the axial position free moments are taken about: the cylinders' mean, m."""
+    return float(np.mean([c.z_m for c in engine.cylinders]))
+
 
 def _inertia_coefficients(weighted_positions, speed_rad_s):
     """Coefficients of −Σ m·a from coefficients of Σ m·x: multiply by (kω)²."""
@@ -90,24 +116,17 @@ def shaking(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER):
             f"--max-order {max_order} needs more than {4 * max_order} samples; raise --samples"
         )
     masses = mass_positions(engine, engine_angles(samples))
-    z_mean = float(np.mean([c.z_m for c in engine.cylinders]))
+    z_mean = mean_cylinder_z(engine)
     weights = masses.masses_kg[:, None] * masses.positions
     per_mass = _inertia_coefficients(weights, engine.speed_rad_s)
     force = per_mass.sum(axis=0)
     moment = ((masses.z_m - z_mean)[:, None] * per_mass).sum(axis=0)
     ok = check_sampling(per_mass, max_order, f"{engine.name}: ")
-    orders = np.arange(1, max_order + 1)
-    ff, fb = forward_backward(force, orders)
-    mf, mb = forward_backward(moment, orders)
-    table = tuple(
-        OrderComponents(int(k), complex(ff[i]), complex(fb[i]), complex(mf[i]), complex(mb[i]))
-        for i, k in enumerate(orders)
-    )
-    return Shaking(table, force, moment, ok)
+    return Shaking.from_coefficients(force, moment, max_order, ok)
 
 
 def per_mass_force_coefficients(engine, samples=DEFAULT_SAMPLES):
-    """Fourier coefficients of each point mass's inertia force, N, and the masses' owners."""
+    """Fourier coefficients of each point mass's inertia force, N, and the mass set."""
     masses = mass_positions(engine, engine_angles(samples))
     weights = masses.masses_kg[:, None] * masses.positions
     return _inertia_coefficients(weights, engine.speed_rad_s), masses

@@ -5,6 +5,7 @@ import os
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from balance_cli.model import Cylinder, Engine, Throw
@@ -47,3 +48,15 @@ def _close_figures():
     yield
     if "matplotlib.pyplot" in sys.modules:
         sys.modules["matplotlib.pyplot"].close("all")
+
+
+def exact_b(q, k):
+    """B_k of a plain slider-crank (inertia force = m·r·ω²·Σ B_k cos kθ) by a second method:
+    the closed-form acceleration ẍ/(−rω²) = cos θ + q cos 2θ/√(1 − q² sin²θ)
+    + q³ sin²2θ/(4(1 − q² sin²θ)^{3/2}), projected on cos kθ by the trapezoidal rule (exact to
+    rounding for periodic integrands)."""
+    theta = np.linspace(0.0, 2 * np.pi, 4096, endpoint=False)
+    root = np.sqrt(1 - q**2 * np.sin(theta) ** 2)
+    accel = (np.cos(theta) + q * np.cos(2 * theta) / root
+             + q**3 * np.sin(2 * theta) ** 2 / (4 * root**3))
+    return 2 * np.mean(accel * np.cos(k * theta))

@@ -10,21 +10,10 @@ from numpy.testing import assert_allclose
 from balance_cli import analyse, load
 from balance_cli.shaking import ellipse
 from balance_cli.units import STANDARD_GRAVITY
-from conftest import CONFIGS, PART3
+from conftest import CONFIGS, PART3, exact_b
 
 # Clerget proportions of Tanaka's Part III
 Q = 80.0 / 269.5
-
-
-def exact_b(q, k):
-    """B_k of a plain slider-crank by a second method: the closed-form acceleration
-    ẍ/(−rω²) = cos θ + q cos 2θ/√(1 − q² sin²θ) + q³ sin²2θ/(4(1 − q² sin²θ)^{3/2})
-    projected on cos kθ by the trapezoidal rule (exact to rounding for periodic integrands)."""
-    theta = np.linspace(0.0, 2 * np.pi, 4096, endpoint=False)
-    root = np.sqrt(1 - q**2 * np.sin(theta) ** 2)
-    accel = (np.cos(theta) + q * np.cos(2 * theta) / root
-             + q**3 * np.sin(2 * theta) ** 2 / (4 * root**3))
-    return 2 * np.mean(accel * np.cos(k * theta))
 
 
 def per_cylinder(result, order):

@@ -5,7 +5,7 @@ import json
 from ..units import rad_s_to_rpm
 from .values import order_values
 
-__all__ = ["compare_document", "to_json"]
+__all__ = ["compare_document", "balance_document", "to_json"]
 
 
 def engine_document(result, reference):
@@ -37,7 +37,7 @@ def engine_document(result, reference):
         "percent_of_reference": 100.0 * per_cylinder / reference_force if reference_force else None,
         "sampling_ok": result.shaking.sampling_ok,
         "orders": [
-            {"order": o.order, **order_values(o, result)} for o in result.shaking.orders
+            {"order": o.order, **order_values(o, result.per_cylinder_unit_n)} for o in result.shaking.orders
         ],
     }
 
@@ -55,3 +55,50 @@ def compare_document(results, reference_index, samples, max_order):
 
 def to_json(document):
     return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+
+
+def _orders(shaking, unit_n):
+    return [{"order": o.order, **order_values(o, unit_n)} for o in shaking.orders]
+
+
+def balance_document(results, samples, max_order):
+    """JSON of ``balance counterweight``: see the README for every key."""
+    engines = []
+    for r in results:
+        engine = r.engine
+        unit = engine.unit_force_n * engine.n_cylinders
+        entry = {
+            "name": engine.name,
+            "config": engine.config_path,
+            "cylinders": engine.n_cylinders,
+            "frame": engine.frame,
+            "speed_rpm": rad_s_to_rpm(engine.speed_rad_s),
+            "unit_force_N": engine.unit_force_n,
+            "balance_factor": r.balance_factor,
+            "counterweights": [
+                {"z_m": c.plane.z_m, "throw": c.plane.throw, "mass_kg": c.mass_kg,
+                 "radius_m": c.radius_m, "angle_deg": c.angle_deg}
+                for c in r.counterweights
+            ],
+            "antivibrateur": None if r.antivibrateur is None else {
+                "mass_eccentricity_kgm": r.antivibrateur.mass_eccentricity_kgm,
+                "eccentricity_m": r.antivibrateur.eccentricity_m,
+                "mass_kg": r.antivibrateur.mass_kg,
+                "phase_deg": r.antivibrateur.phase_deg,
+            },
+            "residual": {"largest_resultant_N": r.residual.largest_force(),
+                         "orders": _orders(r.residual, unit)},
+        }
+        if r.after_shafts is not None:
+            entry["shafts"] = [
+                {"order": s.order, "speed_ratio": s.speed_ratio,
+                 "mass_eccentricity_kgm": s.mass_eccentricity_kgm, "phase_deg": s.phase_deg,
+                 "z_m": s.z_m}
+                for s in r.shafts
+            ]
+            entry["after_shafts"] = {"largest_resultant_N": r.after_shafts.largest_force(),
+                                     "orders": _orders(r.after_shafts, unit)}
+        if r.test_masses_kg is not None:
+            entry["test_masses_kg"] = list(r.test_masses_kg)
+        engines.append(entry)
+    return {"balance_version": 1, "samples": samples, "max_order": max_order, "engines": engines}

@@ -27,22 +27,22 @@ class Scale:
     def moment_label(self):
         return "kgf·m" if self.units == "kgf" else "N·m"
 
-    def force(self, value_n, result):
+    def force(self, value_n, per_cylinder_unit_n):
         if not self.absolute:
-            return value_n / result.per_cylinder_unit_n
+            return value_n / per_cylinder_unit_n
         return value_n / STANDARD_GRAVITY if self.units == "kgf" else value_n
 
     def moment(self, value_nm):
         return value_nm / STANDARD_GRAVITY if self.units == "kgf" else value_nm
 
 
-def order_values(order, result):
+def order_values(order, per_cylinder_unit_n):
     """Magnitudes, phases and ellipse of one order in SI (N, N·m, degrees).
 
     Components below ``NEGLIGIBLE`` of m_rec·r·ω²·n (N, or N·m) are rounding noise and
     are reported as exact zeros, phase included.
     """
-    floor = NEGLIGIBLE * result.per_cylinder_unit_n
+    floor = NEGLIGIBLE * per_cylinder_unit_n
     clean = lambda z: z if abs(z) >= floor else 0j  # noqa: E731
     ff, fb = clean(order.force_forward), clean(order.force_backward)
     mf, mb = clean(order.moment_forward), clean(order.moment_backward)

@@ -1,0 +1,241 @@
+"""Counterweights, balancer shafts, the antivibrateur and test masses, against the papers and
+hand-derived closed forms."""
+
+import dataclasses
+import json
+import math
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+from numpy.testing import assert_allclose
+
+from balance_cli import load
+from balance_cli.cli import main
+from balance_cli.counterweight import BalanceError, Plane, balance, plane_at_throw
+from conftest import CONFIGS, exact_b, make_engine
+
+V12 = CONFIGS / "nakanishi-v12-90-2stroke.toml"
+W12 = CONFIGS / "nakanishi-w12-60-2stroke.toml"
+BRAMO = CONFIGS / "bramo-323.toml"
+# Nakanishi's masses in the library configurations (kg) and throw pitch d (m)
+M_P, M_C, A, B, M_K, D = 2.0, 2.4, 0.65, 0.35, 2.0, 0.150
+
+
+def assert_nothing_below(shaking_, order, unit):
+    for o in shaking_.orders[: order - 1]:
+        for value in (o.force_forward, o.force_backward, o.moment_forward, o.moment_backward):
+            assert abs(value) < 1e-9 * unit, (o.order, value)
+
+
+def test_nakanishi_v12_counterweights_on_throws_1_and_6():
+    """§ 4: m_w = (2√3/5)·(r/r_w)·{m_p + (2a + b)·m_c + m_k}; afterwards nothing below the 6th."""
+    engine = load(V12)
+    r_w = 0.060
+    result = balance(engine, [plane_at_throw(engine, 1), plane_at_throw(engine, 6)], radius_m=r_w,
+                     max_order=8)
+    expected = 2 * math.sqrt(3) / 5 * (engine.crank_radius_m / r_w) * (M_P + (2 * A + B) * M_C + M_K)
+    for weight in result.counterweights:
+        assert_allclose(weight.mass_kg, expected, rtol=1e-9)
+    # opposite each other: a pure couple
+    assert_allclose(abs(result.counterweights[0].angle_deg - result.counterweights[1].angle_deg), 180, atol=1e-9)
+    assert_nothing_below(result.residual, 6, engine.unit_force_n * engine.n_cylinders)
+
+
+def test_nakanishi_w12_counterweights_on_throws_1_and_4():
+    """§ 7: the couple √10·d·{3/2·m_p + 3(a + b/2)·m_c + m_k}·ω²r at φ = tan⁻¹(−1/3) from two
+    masses 3d apart: m_w = (√10/3)·(r/r_w)·{…}; afterwards nothing below the 4th order."""
+    engine = load(W12)
+    result = balance(engine, [plane_at_throw(engine, 1), plane_at_throw(engine, 4)])
+    mass = 1.5 * M_P + 3 * (A + B / 2) * M_C + M_K
+    for weight in result.counterweights:
+        assert_allclose(weight.mass_kg, math.sqrt(10) / 3 * mass, rtol=1e-9)
+    # each counterweight at ±tan⁻¹(1/3) off the line of throws 1 and 4 (or its opposite)
+    offset = math.radians(result.counterweights[0].angle_deg)
+    assert_allclose(abs(math.tan(offset)), 1 / 3, rtol=1e-9)
+    assert_nothing_below(result.residual, 4, engine.unit_force_n * engine.n_cylinders)
+
+
+def test_bramo_counterweight_is_fraeys_de_veubeke_s1():
+    """§ IV.4, Table XV (ε = 0): gG = gB(1 − K) + g(n − 1)b(1 − k) + ½g[np + (n − 1)bk + BK] + ½gm
+    = 31.6071 + 0.0693 = 31.6764 kg at crank radius. His series stops at the 5th order: the
+    omitted terms, μ⁶·A ≈ 0.0004 kg, bound the difference."""
+    engine = load(BRAMO)
+    result = balance(engine)
+    (weight,) = result.counterweights
+    assert_allclose(weight.mass_kg, 31.6764, atol=0.0005)
+    # the same from the formula with the configuration's own masses (Table IX): m = 0.1386 kg
+    links = [c for c in engine.cylinders if c.is_link]
+    formula = (engine.rotating_kg + sum(c.knuckle_kg for c in links)
+               + 0.5 * sum(c.reciprocating_kg for c in engine.cylinders) + 0.5 * 0.1386)
+    assert_allclose(weight.mass_kg, formula, atol=0.0005)
+    assert_allclose(weight.angle_deg, 180.0, atol=1e-9)  # opposite the crank pin
+    # S−1 is left untouched: Table XII's 0.215 kg (× RΩ²), exact 0.2140
+    r_omega2 = engine.crank_radius_m * engine.speed_rad_s**2
+    assert_allclose(abs(result.residual.orders[0].force_backward) / r_omega2, 0.215, rtol=0.016)
+    assert abs(result.residual.orders[0].force_forward) < 1e-9 * r_omega2
+
+
+def test_bramo_antivibrateur():
+    """§ IV.6: a rotor on the crank pin at twice crank speed; Fraeys sizes it on the principal
+    perturbation gP = 2.17276 kg: |g·M·e| = gP·R/4 = 43.45 kg·mm. Sized on the exact S2 it
+    must be larger in the ratio |S2|/gP, to the printed digits (43.45: ±1.2e-4). It removes S2
+    entirely (Table XIX: 98.98 %) and leaves S−1, which it cannot touch, unchanged."""
+    engine = load(BRAMO)
+    plain = balance(engine)
+    result = balance(engine, antivibrateur_radius_m=0.040)
+    r_omega2 = engine.crank_radius_m * engine.speed_rad_s**2
+    s2 = abs(plain.residual.orders[1].force_forward) / r_omega2
+    me_kg_mm = result.antivibrateur.mass_eccentricity_kgm * 1000
+    assert_allclose(me_kg_mm / 43.45, s2 / 2.17276, rtol=3e-4)
+    assert abs(result.residual.orders[1].force_forward) < 1e-9 * r_omega2   # S2: 100 % reduction
+    assert_allclose(result.residual.orders[0].force_backward, plain.residual.orders[0].force_backward,
+                    rtol=1e-12)
+    # its mass rides on the pin: the counterweight grows by exactly M
+    assert_allclose(result.counterweights[0].mass_kg - plain.counterweights[0].mass_kg,
+                    result.antivibrateur.mass_kg, rtol=1e-9)
+
+
+def test_inline4_lanchester_pair():
+    """Secondary 4·B2·m·r·ω² cos 2θ = 2·B2·m·r·ω²(e^{2iθ} + e^{−2iθ}): two shafts at 2× speed,
+    one each way, each m·e·(2ω)² = 2·B2·m·r·ω², i.e. m·e = m_rec·r·λ'/2 with λ' = B2 exact."""
+    engine = load(CONFIGS / "inline-4-car.toml")
+    result = balance(engine, shaft_orders=(2,))
+    lam = exact_b(engine.crank_radius_m / engine.rod_length_m, 2)
+    expected = engine.mean_reciprocating_kg * engine.crank_radius_m * lam / 2
+    assert sorted(s.speed_ratio for s in result.shafts) == [-2, 2]
+    for shaft in result.shafts:
+        assert_allclose(shaft.mass_eccentricity_kgm, expected, rtol=1e-9)
+        assert_allclose(shaft.z_m, np.mean([c.z_m for c in engine.cylinders]), atol=1e-12)
+    second = result.after_shafts.orders[1]
+    assert abs(second.force_forward) + abs(second.force_backward) < 1e-9 * engine.unit_force_n
+
+
+def test_shaft_pairs_cancel_a_moment():
+    """A two-throw 180° twin has a primary couple; with two planes the forward first order's
+    moment is met by counterweights, and the backward couple by a pair of counter-rotating
+    shafts apart: afterwards no first order at all."""
+    engine = make_engine([0], [(0, -0.05), (180, 0.05)])
+    result = balance(engine, shaft_orders=(1,))
+    backward = [s for s in result.shafts if s.speed_ratio == -1]
+    assert len(backward) == 2
+    assert_allclose(backward[0].mass_eccentricity_kgm, backward[1].mass_eccentricity_kgm, rtol=1e-9)
+    assert_allclose(abs(backward[0].phase_deg - backward[1].phase_deg), 180, atol=1e-9)
+    # each: the backward couple ½·m·r·ω²·0.1 m over the 0.1 m between the planes, at ω²
+    assert_allclose(backward[0].mass_eccentricity_kgm, 0.5 * 1.0 * engine.crank_radius_m, rtol=1e-9)
+    first = result.after_shafts.orders[0]
+    for value in (first.force_forward, first.force_backward, first.moment_forward, first.moment_backward):
+        assert abs(value) < 1e-9 * engine.unit_force_n
+
+
+@pytest.mark.parametrize("factor", [0.0, 0.3, 0.5, 0.7, 1.0])
+def test_single_cylinder_balance_factor(factor):
+    """m·r·ω² cos θ = ½m·r·ω²(e^{iθ} + e^{−iθ}); a counterweight c·m opposite the crank adds
+    −c·m·r·ω²e^{iθ}: forward |1 − 2c|/2, backward 1/2 of m·r·ω² (rotating mass cancelled)."""
+    engine = make_engine([0], [(0, 0.0)], rotating=0.8)
+    result = balance(engine, balance_factor=factor)
+    first = result.residual.orders[0]
+    unit = engine.unit_force_n
+    assert_allclose(abs(first.force_forward) / unit, abs(1 - 2 * factor) / 2, atol=1e-12)
+    assert_allclose(abs(first.force_backward) / unit, 0.5, atol=1e-12)
+
+
+def test_half_balanced_single_leaves_a_constant_force_turning_backward():
+    engine = make_engine([0], [(0, 0.0)], r=0.05, l=0.2)
+    residual = balance(engine, balance_factor=0.5, max_order=8).residual
+    first = residual.orders[0]
+    theta = np.linspace(0, 2 * np.pi, 360, endpoint=False)
+    primary = first.force_forward * np.exp(1j * theta) + first.force_backward * np.exp(-1j * theta)
+    assert_allclose(np.abs(primary), engine.unit_force_n / 2, rtol=1e-12)
+
+
+def test_test_masses_are_nakanishis():
+    """§ 4: m_p + (2a + b)·m_c on each pin of the V12; § 7: 3/2·m_p + 3(a + b/2)·m_c on each
+    pin of the W12 (the crank's own m_k stays on the shaft)."""
+    v12 = balance(load(V12), test_masses=True)
+    assert_allclose(v12.test_masses_kg, [M_P + (2 * A + B) * M_C] * 6, rtol=1e-9)
+    w12 = balance(load(W12), test_masses=True)
+    assert_allclose(w12.test_masses_kg, [1.5 * M_P + 3 * (A + B / 2) * M_C] * 4, rtol=1e-9)
+
+
+def test_shaft_with_test_masses_runs_balanced_on_the_machine():
+    """Second method: replace every moving part by the test masses at the pins; the crankshaft
+    with its own unbalance, the test masses and the engine's counterweights then has no first
+    order force or moment left."""
+    engine = load(V12)
+    result = balance(engine, [plane_at_throw(engine, 1), plane_at_throw(engine, 6)], test_masses=True)
+    (mass,) = set(np.round(result.test_masses_kg, 12))
+    machine = dataclasses.replace(
+        engine, rotating_kg=mass,
+        cylinders=tuple(dataclasses.replace(c, reciprocating_kg=0.0) for c in engine.cylinders))
+    on_machine = balance(machine, [plane_at_throw(machine, 1), plane_at_throw(machine, 6)])
+    for ours, theirs in zip(result.counterweights, on_machine.counterweights):
+        assert_allclose(theirs.mass_kg, ours.mass_kg, rtol=1e-9)
+        assert_allclose(theirs.angle_deg, ours.angle_deg, atol=1e-9)
+
+
+def test_one_plane_cancels_the_force_and_reports_the_moment_left():
+    engine = load(V12)
+    result = balance(engine, [plane_at_throw(engine, 1)])
+    first = result.residual.orders[0]
+    assert abs(first.force_forward) < 1e-9 * engine.unit_force_n
+    assert_allclose(abs(first.moment_forward), abs(result.original.orders[0].moment_forward), rtol=1e-9)
+
+
+@pytest.mark.parametrize("kwargs, words", [
+    (dict(planes=[Plane(0.0, 1), Plane(0.0, 1)]), "coincide"),
+    (dict(planes=[Plane(0.0), Plane(0.1), Plane(0.2)]), "one plane"),
+    (dict(radius_m=0.0), "greater than zero"),
+    (dict(radius_m=-0.05), "greater than zero"),
+    (dict(shaft_orders=(99,)), "outside 1..8"),
+    (dict(antivibrateur_radius_m=0.04), "single-throw"),
+])
+def test_bad_requests(kwargs, words):
+    with pytest.raises(BalanceError, match=words):
+        balance(load(V12), **kwargs)
+
+
+def run(*args):
+    return CliRunner().invoke(main, list(map(str, args)))
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--planes", "1,9"], "there is no throw 9 (the engine has 6)"),
+    (["--planes", "1,1"], "the two planes coincide"),
+    (["--planes", "1,two"], "--planes: cannot read 'two'"),
+    (["--radius", "0 mm"], "--radius must be greater than zero"),
+    (["--radius", "-5 mm"], "--radius must be greater than zero"),
+    (["--radius", "5 kg"], "is a mass, but a length is needed"),
+    (["--shafts", "x"], "give orders as whole numbers"),
+    (["--antivibrateur"], "single-throw engine"),
+])
+def test_cli_errors(tmp_path, args, words):
+    out = tmp_path / "cw.json"
+    result = run("counterweight", V12, *args, "--format", "json", "--output", out)
+    assert result.exit_code != 0
+    assert words in result.output and "Traceback" not in result.output
+    assert not out.exists()
+
+
+def test_cli_json_contract(tmp_path):
+    out = tmp_path / "cw.json"
+    result = run("counterweight", V12, "--planes", "1,6", "--shafts", "6", "--test-masses",
+                 "--max-order", "8", "--format", "json", "--output", out)
+    assert result.exit_code == 0, result.output
+    (engine,) = json.loads(out.read_text(encoding="utf-8"))["engines"]
+    assert [c["throw"] for c in engine["counterweights"]] == [1, 6]
+    assert set(engine["counterweights"][0]) == {"z_m", "throw", "mass_kg", "radius_m", "angle_deg"}
+    assert [o["order"] for o in engine["residual"]["orders"]] == list(range(1, 9))
+    assert engine["residual"]["orders"][0]["force"]["max_N"] == 0.0
+    assert {s["speed_ratio"] for s in engine["shafts"]} == {6, -6}
+    assert engine["after_shafts"]["orders"][5]["force"]["max_N"] == 0.0
+    assert engine["test_masses_kg"] == pytest.approx([5.96] * 6, rel=1e-9)
+
+
+def test_cli_table_and_csv():
+    table = run("counterweight", CONFIGS / "bramo-323.toml", "--antivibrateur", "--units", "kgf")
+    assert table.exit_code == 0, table.output
+    assert "M·e = 44.08 kg·mm" in table.output
+    csv_text = run("counterweight", V12, "--format", "csv").output
+    assert csv_text.startswith("engine,config,item,quantity,value,unit")
+    assert "counterweight 2,mass," in csv_text
