@@ -1,5 +1,6 @@
 """The ``balance`` command: thin commands that wire configuration, analyses and reports."""
 
+import contextlib
 import sys
 import warnings
 
@@ -25,6 +26,13 @@ _INPUTS = click.argument("paths", nargs=-1, required=True, metavar="FILE|DIR..."
 
 def _fail(message):
     raise click.ClickException(message)
+
+
+def _progress(items, label):
+    """A progress bar on a terminal for several items; nothing when output is not a terminal."""
+    if len(items) > 1 and sys.stderr.isatty():
+        return click.progressbar(items, label=label, file=sys.stderr)
+    return contextlib.nullcontext(items)
 
 
 def _checked_firing(engine):
@@ -148,16 +156,7 @@ def compare(paths, samples, max_order, absolute, units, reference, fmt, output):
     compared in the order given (files of a folder sorted by path).
     """
     engines = _load_all(paths)
-    if max_order >= samples // 4:
-        _fail(f"--max-order {max_order} needs --samples above {4 * max_order}")
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        try:
-            results = [_analysed(e, samples, max_order) for e in engines]
-        except ConfigError as exc:
-            _fail(str(exc))
-    for w in caught:
-        click.echo(f"warning: {w.message}", err=True)
+    results = _analyse_all(engines, samples, max_order)
     try:
         index = reference_index(results, reference)
     except ValueError as exc:
@@ -245,16 +244,17 @@ def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, 
     results = []
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        for engine in engines:
-            try:
-                radius_m = None if radius is None else parse_quantity(radius, "length")
-                rotor = parse_quantity(antivibrateur_radius, "length") if antivibrateur else None
-                results.append(balance(engine, _planes(engine, planes), radius_m, balance_factor,
-                                       orders, rotor, test_masses, samples, max_order))
-            except UnitError as exc:
-                _fail(f"--radius or --antivibrateur-radius: {exc}")
-            except BalanceError as exc:
-                _fail(f"{engine.config_path}: {exc}")
+        with _progress(engines, "Balancing") as bar:
+            for engine in bar:
+                try:
+                    radius_m = None if radius is None else parse_quantity(radius, "length")
+                    rotor = parse_quantity(antivibrateur_radius, "length") if antivibrateur else None
+                    results.append(balance(engine, _planes(engine, planes), radius_m, balance_factor,
+                                           orders, rotor, test_masses, samples, max_order))
+                except UnitError as exc:
+                    _fail(f"--radius or --antivibrateur-radius: {exc}")
+                except BalanceError as exc:
+                    _fail(f"{engine.config_path}: {exc}")
     for w in caught:
         click.echo(f"warning: {w.message}", err=True)
     scale = Scale(absolute=absolute or units == "kgf", units=units)
@@ -268,6 +268,105 @@ def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, 
         write_text(output, text)
     except OutputError as exc:
         _fail(str(exc))
+
+
+def _analyse_all(engines, samples, max_order, label="Analysing"):
+    """Analyse every engine, warnings echoed once, firing errors against their files."""
+    if max_order >= samples // 4:
+        _fail(f"--max-order {max_order} needs --samples above {4 * max_order}")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            with _progress(engines, label) as bar:
+                results = [_analysed(e, samples, max_order) for e in bar]
+        except ConfigError as exc:
+            _fail(str(exc))
+    for w in caught:
+        click.echo(f"warning: {w.message}", err=True)
+    return results
+
+
+@main.command()
+@_INPUTS
+@click.option("--kind", type=click.Choice(["locus", "spectrum", "star", "firing"]), required=True,
+              help="locus: resultant force per cylinder over a revolution (Tanaka's Fig. 9); "
+                   "spectrum: forward and backward parts by order; star: each cylinder's phasor "
+                   "of one order, chained; firing: firing angles on a dial.")
+@click.option("--output", "-o", required=True, metavar="PATH",
+              help="Picture file: PNG, or SVG when the name ends in .svg. Folders are created.")
+@click.option("--order", type=click.IntRange(1, 1000), default=None,
+              help="locus: one order only (default all); star: the order drawn (default 2).")
+@click.option("--units", type=click.Choice(["per-cylinder", "N", "kgf"]), default="per-cylinder",
+              show_default=True, help="spectrum: units of the forces.")
+@click.option("--samples", default=DEFAULT_SAMPLES, show_default=True, type=click.IntRange(16, 1 << 16),
+              help="Crank angles per revolution for the Fourier analysis.")
+@click.option("--max-order", default=DEFAULT_MAX_ORDER, show_default=True, type=click.IntRange(1, 1000),
+              help="Highest order analysed (and drawn in the spectrum).")
+def plot(paths, kind, output, order, units, samples, max_order):
+    """Draw a picture of one or more engines (headless; PNG or SVG)."""
+    engines = _load_all(paths)
+    if order is not None and order > max_order:
+        _fail(f"--order {order} is above --max-order {max_order}")
+    results = _analyse_all(engines, samples, max_order)
+    from .report import plot as drawing  # matplotlib only for commands that draw
+
+    if kind == "locus":
+        figure = drawing.figure_locus(results, order)
+    elif kind == "spectrum":
+        figure = drawing.figure_spectrum(results, units.replace("-", "_"))
+    elif kind == "star":
+        figure = drawing.figure_star(_stars(results, order or 2, samples), order or 2)
+    else:
+        figure = drawing.figure_firing(results)
+    try:
+        drawing.save(figure, output)
+    except OutputError as exc:
+        _fail(str(exc))
+
+
+def _stars(results, order, samples):
+    from .shaking import cylinder_phasors
+
+    return [(r.engine.name, cylinder_phasors(r.engine, order, samples), r.per_cylinder_unit_n)
+            for r in results]
+
+
+@main.command()
+@_INPUTS
+@click.option("--output", "-o", required=True, metavar="DIR",
+              help="Folder for report.md and its pictures (created if needed).")
+@click.option("--html", "with_html", is_flag=True,
+              help="Also write report.html: one self-contained page, pictures inlined as SVG.")
+@click.option("--reference", default=None, metavar="NAME",
+              help="Engine the percentages refer to (name or unique prefix); default the first.")
+@click.option("--star-order", default=2, show_default=True, type=click.IntRange(1, 1000),
+              help="Order drawn in the star diagram.")
+@click.option("--samples", default=DEFAULT_SAMPLES, show_default=True, type=click.IntRange(16, 1 << 16),
+              help="Crank angles per revolution for the Fourier analysis.")
+@click.option("--max-order", default=DEFAULT_MAX_ORDER, show_default=True, type=click.IntRange(1, 1000),
+              help="Highest order reported.")
+def report(paths, output, with_html, reference, star_order, samples, max_order):
+    """Write a comparison report: tables, counterweights and pictures (Markdown, optionally HTML)."""
+    engines = _load_all(paths)
+    if star_order > max_order:
+        _fail(f"--star-order {star_order} is above --max-order {max_order}")
+    results = _analyse_all(engines, samples, max_order)
+    try:
+        index = reference_index(results, reference)
+    except ValueError as exc:
+        _fail(str(exc))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # already reported by the analysis above
+        balances = [balance(e, samples=samples, max_order=max_order) for e in engines]
+    from .report.document_html import write_report
+
+    try:
+        written = write_report(output, results, balances, index, Scale(), samples, star_order,
+                               _stars(results, star_order, samples), with_html)
+    except OutputError as exc:
+        _fail(str(exc))
+    for path in written:
+        click.echo(f"wrote {path}")
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -259,6 +259,8 @@ def balance(engine, planes=None, radius_m=None, balance_factor=None, shaft_order
         target_force, target_moment = _rotating_target(engine, balance_factor, omega)
     counterweights = []
     for plane, phasor in zip(planes, _share(target_force, target_moment, planes, z_mean)):
+        if abs(phasor) < _NEGLIGIBLE * scale:
+            phasor = 0j  # rounding noise of a balanced first order: no counterweight
         counterweights.append(Counterweight(plane, abs(phasor) / (radius * omega**2), radius,
                                             _angle_deg(phasor)))
         current = current.plus(1, forward=phasor, forward_moment=(plane.z_m - z_mean) * phasor)

@@ -70,6 +70,19 @@ class Shaking:
         """Largest magnitude of the resultant force over a revolution, N."""
         return float(np.abs(self.force(16, skip_forward_first)).max())
 
+    def locus(self, order=None, skip_forward_first=False, points=720):
+        """The resultant force over one revolution at ``points`` angles, N (complex: real along
+        the reference axis); one order only if ``order`` is given."""
+        theta = 2 * np.pi * np.arange(points) / points
+        if order is not None:
+            o = self.orders[order - 1]
+            forward = 0j if (skip_forward_first and order == 1) else o.force_forward
+            return forward * np.exp(1j * order * theta) + o.force_backward * np.exp(-1j * order * theta)
+        n = self.force_coefficients.shape[-1]
+        if points % n:
+            raise ValueError(f"points must be a multiple of the {n} samples")
+        return self.force(points // n, skip_forward_first)
+
     @classmethod
     def from_coefficients(cls, force, moment, max_order, sampling_ok=True):
         """Orders 1..max_order read off full coefficient arrays (N, N·m)."""
@@ -123,6 +136,20 @@ def shaking(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER):
     moment = ((masses.z_m - z_mean)[:, None] * per_mass).sum(axis=0)
     ok = check_sampling(per_mass, max_order, f"{engine.name}: ")
     return Shaking.from_coefficients(force, moment, max_order, ok)
+
+
+def cylinder_phasors(engine, order, samples=DEFAULT_SAMPLES):
+    """Each cylinder's share of order ``order``: [(label, forward N, backward N)], the crank-pin
+    masses together as "pins"; they add up to the engine's phasors (the star diagram)."""
+    coefficients, masses = per_mass_force_coefficients(engine, samples)
+    shares = []
+    for number in [c.number for c in engine.cylinders] + ["pins"]:
+        mine = masses.cylinder <= 0 if number == "pins" else masses.cylinder == number
+        if number == "pins" and not mine.any():
+            continue
+        shares.append((str(number), complex(coefficients[mine, order].sum()),
+                       complex(coefficients[mine, -order].sum())))
+    return shares
 
 
 def per_mass_force_coefficients(engine, samples=DEFAULT_SAMPLES):

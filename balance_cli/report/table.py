@@ -9,7 +9,8 @@ from tabulate import tabulate
 from ..units import rad_s_to_rpm
 from .values import Scale, is_negligible, order_values
 
-__all__ = ["compare_tables", "compare_csv", "balance_tables", "balance_csv", "list_table", "show_table"]
+__all__ = ["compare_parts", "render_parts", "compare_tables", "compare_csv", "balance_tables",
+           "balance_csv", "balance_summary", "list_table", "show_table"]
 
 _TABLEFMT = {"table": "simple", "markdown": "pipe"}
 
@@ -70,35 +71,41 @@ def _summary_rows(results, reference_index, scale):
     return rows
 
 
-def compare_tables(results, reference_index, scale, tablefmt, samples):
-    """The comparison as text or Markdown: orders of every engine, then a summary."""
-    fmt = _TABLEFMT[tablefmt]
-    rows = [row for r in results
-            for row in _order_rows(r.engine.name, r.shaking, r.per_cylinder_unit_n, scale, full=False)]
+def compare_parts(results, reference_index, scale, samples):
+    """The comparison as (title, headers, rows, note) tables, for any renderer."""
     unit = ("per cylinder, in units of m_rec·r·ω²·n" if not scale.absolute
             else f"in {scale.units}")
     reference = results[reference_index].engine.name
-    heading = "#### " if tablefmt == "markdown" else ""
-    out = [
-        f"{heading}Free forces and moments by order (forces {unit}; moments in {scale.moment_label})",
-        "",
-        tabulate(rows, headers=_order_headers(scale), tablefmt=fmt, disable_numparse=True),
-        "",
-        f"Orders not listed are zero. fwd turns with the crank, bwd against it; max and min are the "
-        f"semi-axes of the order's ellipse, axis the direction of max from the reference axis "
-        f"({samples} samples a revolution).",
-        "",
-        f"{heading}Firing and largest resultant (after an ideal crankshaft counterweight)",
-        "",
-        tabulate(
-            _summary_rows(results, reference_index, scale),
-            headers=["Engine", "Cyl", "Cycle", "Frame", "Firing order", "Intervals (°)",
-                     f"Largest ({scale.force_label})", f"% of {reference}"],
-            tablefmt=fmt, disable_numparse=True,
-        ),
-        "",
+    rows = [row for r in results
+            for row in _order_rows(r.engine.name, r.shaking, r.per_cylinder_unit_n, scale, full=False)]
+    return [
+        (f"Free forces and moments by order (forces {unit}; moments in {scale.moment_label})",
+         _order_headers(scale), rows,
+         "Orders not listed are zero. fwd turns with the crank, bwd against it; max and min are "
+         "the semi-axes of the order's ellipse, axis the direction of max from the reference axis "
+         f"({samples} samples a revolution)."),
+        ("Firing and largest resultant (after an ideal crankshaft counterweight)",
+         ["Engine", "Cyl", "Cycle", "Frame", "Firing order", "Intervals (°)",
+          f"Largest ({scale.force_label})", f"% of {reference}"],
+         _summary_rows(results, reference_index, scale), ""),
     ]
+
+
+def render_parts(parts, tablefmt):
+    """Tables from :func:`compare_parts` as text or Markdown."""
+    heading = "#### " if tablefmt == "markdown" else ""
+    out = []
+    for title, headers, rows, note in parts:
+        out += [f"{heading}{title}", "",
+                tabulate(rows, headers=headers, tablefmt=_TABLEFMT[tablefmt], disable_numparse=True), ""]
+        if note:
+            out += [note, ""]
     return "\n".join(out)
+
+
+def compare_tables(results, reference_index, scale, tablefmt, samples):
+    """The comparison as text or Markdown: orders of every engine, then a summary."""
+    return render_parts(compare_parts(results, reference_index, scale, samples), tablefmt)
 
 
 def compare_csv(results, scale):
@@ -261,3 +268,21 @@ def balance_csv(results, scale):
             writer.writerow([r.engine.name, r.engine.config_path, item, quantity,
                              repr(value) if isinstance(value, float) else value, unit])
     return buffer.getvalue()
+
+
+def balance_summary(results):
+    """One row per engine of ``balance counterweight`` with default planes: (headers, rows)."""
+    rows = []
+    for r in results:
+        engine = r.engine
+        n_unit = engine.unit_force_n * engine.n_cylinders
+        first = order_values(r.residual.orders[0], n_unit)["force"]
+        weights = "; ".join(
+            f"{c.mass_kg:.4g} kg at {c.angle_deg:.1f}° ({'throw ' + str(c.plane.throw) if c.plane.throw else f'z = {c.plane.z_m * 1000:g} mm'})"
+            for c in r.counterweights)
+        rows.append([engine.name, weights, f"{first['forward_N'] / n_unit:.4f}",
+                     f"{first['backward_N'] / n_unit:.4f}",
+                     f"{r.residual.largest_force() / n_unit:.4f}"])
+    headers = ["Engine", "Counterweights at crank radius", "1st order left fwd (per cyl)",
+               "1st order bwd (per cyl)", "Largest resultant left (per cyl)"]
+    return headers, rows
