@@ -19,6 +19,7 @@ setup: $(STAMP)
 demo: $(STAMP)
 	$(BIN)/balance validate configs
 	$(BIN)/balance compare configs/tanaka-part3
+	$(BIN)/balance report configs/tanaka-part3 --output report --html
 
 test: $(STAMP)
 	$(BIN)/python -m pytest
