@@ -17,6 +17,8 @@ RELATIVE = 1e-9
 #: phases are compared only where the phasor exceeds this fraction of m_rec·r·ω²·n
 PHASE_FLOOR = 1e-6
 PHASE_DEG = 1e-6
+#: firing angles come from a TDC search good to about 2e-6°
+FIRING_DEG = 1e-4
 
 
 def current():
@@ -71,7 +73,10 @@ def _walk(path, a, b, scale):
     if isinstance(a, float) or isinstance(b, float):
         if a is None or b is None:
             return [] if a == b else [f"{path}: {a} -> {b}"]
-        tolerance = PHASE_DEG if path.endswith("_deg") else RELATIVE * scale
+        if ".firing." in path:
+            tolerance = FIRING_DEG
+        else:
+            tolerance = PHASE_DEG if path.endswith("_deg") else RELATIVE * scale
         if path.endswith("_deg") and abs((b - a + 180) % 360 - 180) <= tolerance:
             return []
         if abs(b - a) > tolerance:
