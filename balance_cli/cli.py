@@ -22,6 +22,19 @@ from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES
 __all__ = ["main"]
 
 _INPUTS = click.argument("paths", nargs=-1, required=True, metavar="FILE|DIR...")
+_SAMPLES = click.option("--samples", default=DEFAULT_SAMPLES, show_default=True,
+                        type=click.IntRange(16, 1 << 16),
+                        help="Crank angles per revolution for the Fourier analysis.")
+_MAX_ORDER = click.option("--max-order", default=DEFAULT_MAX_ORDER, show_default=True,
+                          type=click.IntRange(1, 1000), help="Highest order analysed and reported.")
+_FORMAT = click.option("--format", "fmt", type=click.Choice(["table", "markdown", "csv", "json"]),
+                       default="table", show_default=True, help="Output format.")
+_OUTPUT = click.option("--output", "-o", default="-", metavar="FILE", show_default=True,
+                       help="Write here (atomically) instead of standard output.")
+_ABSOLUTE = click.option("--absolute", is_flag=True,
+                         help="Forces in newtons (or --units) instead of per cylinder (× m_rec·r·ω²·n).")
+_UNITS = click.option("--units", type=click.Choice(["N", "kgf"]), default="N", show_default=True,
+                      help="Units of absolute forces and of moments; kgf implies --absolute.")
 
 
 def _fail(message):
@@ -135,20 +148,14 @@ def show(path):
 
 @main.command()
 @_INPUTS
-@click.option("--samples", default=DEFAULT_SAMPLES, show_default=True, type=click.IntRange(16, 1 << 16),
-              help="Crank angles per revolution for the Fourier analysis.")
-@click.option("--max-order", default=DEFAULT_MAX_ORDER, show_default=True, type=click.IntRange(1, 1000),
-              help="Highest order reported.")
-@click.option("--absolute", is_flag=True,
-              help="Forces in newtons (or --units) instead of per cylinder (× m_rec·r·ω²·n).")
-@click.option("--units", type=click.Choice(["N", "kgf"]), default="N", show_default=True,
-              help="Units of absolute forces and of moments; kgf implies --absolute.")
+@_SAMPLES
+@_MAX_ORDER
+@_ABSOLUTE
+@_UNITS
 @click.option("--reference", default=None, metavar="NAME",
               help="Engine the percentages refer to (name or unique prefix); default the first.")
-@click.option("--format", "fmt", type=click.Choice(["table", "markdown", "csv", "json"]),
-              default="table", show_default=True, help="Output format.")
-@click.option("--output", "-o", default="-", metavar="FILE", show_default=True,
-              help="Write here (atomically) instead of standard output.")
+@_FORMAT
+@_OUTPUT
 def compare(paths, samples, max_order, absolute, units, reference, fmt, output):
     """Compare engines order by order, in the style of Tanaka's Part III.
 
@@ -218,17 +225,12 @@ def _orders_option(text):
               help="Eccentricity of the antivibrateur's mass.")
 @click.option("--test-masses", is_flag=True,
               help="Also give the balancing-machine mass to hang on each crank pin.")
-@click.option("--samples", default=DEFAULT_SAMPLES, show_default=True, type=click.IntRange(16, 1 << 16),
-              help="Crank angles per revolution for the Fourier analysis.")
-@click.option("--max-order", default=DEFAULT_MAX_ORDER, show_default=True, type=click.IntRange(1, 1000),
-              help="Highest order reported.")
-@click.option("--absolute", is_flag=True, help="Forces in newtons (or --units) instead of per cylinder.")
-@click.option("--units", type=click.Choice(["N", "kgf"]), default="N", show_default=True,
-              help="Units of absolute forces and of moments; kgf implies --absolute.")
-@click.option("--format", "fmt", type=click.Choice(["table", "markdown", "csv", "json"]),
-              default="table", show_default=True, help="Output format.")
-@click.option("--output", "-o", default="-", metavar="FILE", show_default=True,
-              help="Write here (atomically) instead of standard output.")
+@_SAMPLES
+@_MAX_ORDER
+@_ABSOLUTE
+@_UNITS
+@_FORMAT
+@_OUTPUT
 def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, antivibrateur_radius,
                   test_masses, samples, max_order, absolute, units, fmt, output):
     """Counterweights that cancel the forward first order, and what is left.
@@ -238,25 +240,22 @@ def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, 
     the balancing-machine test masses.
     """
     engines = _load_all(paths)
-    if max_order >= samples // 4:
-        _fail(f"--max-order {max_order} needs --samples above {4 * max_order}")
+    _check_orders(samples, max_order)
     orders = _orders_option(shafts)
-    results = []
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        with _progress(engines, "Balancing") as bar:
-            for engine in bar:
-                try:
-                    radius_m = None if radius is None else parse_quantity(radius, "length")
-                    rotor = parse_quantity(antivibrateur_radius, "length") if antivibrateur else None
-                    results.append(balance(engine, _planes(engine, planes), radius_m, balance_factor,
-                                           orders, rotor, test_masses, samples, max_order))
-                except UnitError as exc:
-                    _fail(f"--radius or --antivibrateur-radius: {exc}")
-                except BalanceError as exc:
-                    _fail(f"{engine.config_path}: {exc}")
-    for w in caught:
-        click.echo(f"warning: {w.message}", err=True)
+    try:
+        radius_m = None if radius is None else parse_quantity(radius, "length")
+        rotor = parse_quantity(antivibrateur_radius, "length") if antivibrateur else None
+    except UnitError as exc:
+        _fail(f"--radius or --antivibrateur-radius: {exc}")
+
+    def work(engine):
+        try:
+            return balance(engine, _planes(engine, planes), radius_m, balance_factor, orders, rotor,
+                           test_masses, samples, max_order)
+        except BalanceError as exc:
+            raise ConfigError(engine.config_path, "", str(exc)) from None
+
+    results = _run_each(engines, "Balancing", work)
     scale = Scale(absolute=absolute or units == "kgf", units=units)
     if fmt == "json":
         text = to_json(balance_document(results, samples, max_order))
@@ -270,20 +269,30 @@ def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, 
         _fail(str(exc))
 
 
-def _analyse_all(engines, samples, max_order, label="Analysing"):
-    """Analyse every engine, warnings echoed once, firing errors against their files."""
+def _check_orders(samples, max_order):
     if max_order >= samples // 4:
         _fail(f"--max-order {max_order} needs --samples above {4 * max_order}")
+
+
+def _run_each(engines, label, work):
+    """``work(engine)`` for every engine: a progress bar on a terminal, warnings echoed once,
+    a configuration error as one line."""
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
             with _progress(engines, label) as bar:
-                results = [_analysed(e, samples, max_order) for e in bar]
+                results = [work(e) for e in bar]
         except ConfigError as exc:
             _fail(str(exc))
     for w in caught:
         click.echo(f"warning: {w.message}", err=True)
     return results
+
+
+def _analyse_all(engines, samples, max_order):
+    """Analyse every engine; a firing order that does not fit is reported against its file."""
+    _check_orders(samples, max_order)
+    return _run_each(engines, "Analysing", lambda e: _analysed(e, samples, max_order))
 
 
 @main.command()
@@ -298,10 +307,8 @@ def _analyse_all(engines, samples, max_order, label="Analysing"):
               help="locus: one order only (default all); star: the order drawn (default 2).")
 @click.option("--units", type=click.Choice(["per-cylinder", "N", "kgf"]), default="per-cylinder",
               show_default=True, help="spectrum: units of the forces.")
-@click.option("--samples", default=DEFAULT_SAMPLES, show_default=True, type=click.IntRange(16, 1 << 16),
-              help="Crank angles per revolution for the Fourier analysis.")
-@click.option("--max-order", default=DEFAULT_MAX_ORDER, show_default=True, type=click.IntRange(1, 1000),
-              help="Highest order analysed (and drawn in the spectrum).")
+@_SAMPLES
+@_MAX_ORDER
 def plot(paths, kind, output, order, units, samples, max_order):
     """Draw a picture of one or more engines (headless; PNG or SVG)."""
     engines = _load_all(paths)
@@ -341,10 +348,8 @@ def _stars(results, order, samples):
               help="Engine the percentages refer to (name or unique prefix); default the first.")
 @click.option("--star-order", default=2, show_default=True, type=click.IntRange(1, 1000),
               help="Order drawn in the star diagram.")
-@click.option("--samples", default=DEFAULT_SAMPLES, show_default=True, type=click.IntRange(16, 1 << 16),
-              help="Crank angles per revolution for the Fourier analysis.")
-@click.option("--max-order", default=DEFAULT_MAX_ORDER, show_default=True, type=click.IntRange(1, 1000),
-              help="Highest order reported.")
+@_SAMPLES
+@_MAX_ORDER
 def report(paths, output, with_html, reference, star_order, samples, max_order):
     """Write a comparison report: tables, counterweights and pictures (Markdown, optionally HTML)."""
     engines = _load_all(paths)
