@@ -239,3 +239,45 @@ def test_cli_table_and_csv():
     csv_text = run("counterweight", V12, "--format", "csv").output
     assert csv_text.startswith("engine,config,item,quantity,value,unit")
     assert "counterweight 2,mass," in csv_text
+
+
+def bramo_with_angular_eccentricity(epsilon, rho=6.0):
+    """Fraeys de Veubeke § IV.2: sin ε_n = ε·λ·sin ψ_n, and the radii that keep the compression
+    ratio ρ (§ 7): r_n = (L − l)/(1 − ½λ²f1·sin²ψ_n), f1 = 1 − 2ε(ρ + 1)/(ρ − 1) + ε².
+    His positive ε (which evens out the top dead centres) turns the knuckle pin ahead of its
+    cylinder in our sense of angles: ψ_n = Φ_n + ε_n (checked in test_eccentricity_sign)."""
+    engine = load(BRAMO)
+    lam = engine.crank_radius_m / engine.rod_length_m
+    f1 = 1 - 2 * epsilon * (rho + 1) / (rho - 1) + epsilon**2
+    cylinders = []
+    for c in engine.cylinders:
+        if c.is_link:
+            phi = engine.bank_angles_rad[c.bank]
+            psi = phi
+            for _ in range(60):  # fixed point of ψ = Φ + asin(ε·λ·sin ψ)
+                psi = phi + math.asin(epsilon * lam * math.sin(psi))
+            radius = (engine.rod_length_m - c.link_length_m) / (1 - 0.5 * lam**2 * f1 * math.sin(psi) ** 2)
+            c = dataclasses.replace(c, knuckle_angle_rad=psi, knuckle_radius_m=radius)
+        cylinders.append(c)
+    return dataclasses.replace(engine, cylinders=tuple(cylinders))
+
+
+def test_eccentricity_sign():
+    """§ 7: ε = +1 (sin ε_n = λ sin ψ_n) spaces the top dead centres regularly, to second order."""
+    from balance_cli.firing import tdc_angles
+
+    def worst(epsilon):
+        tdc = tdc_angles(bramo_with_angular_eccentricity(epsilon))
+        return max(abs((tdc[n] - 40 * (n - 1) + 180) % 360 - 180) for n in tdc)
+
+    # ε = +1 leaves only third-order irregularity (under 1°); ε = 0 about 3.6°, ε = −1 more
+    assert worst(1) < 1.0 < worst(0) < worst(-1)
+
+
+@pytest.mark.parametrize("epsilon, s1", [(-1, 30.9999), (0, 31.6764), (1, 32.2766)])
+def test_bramo_counterweight_with_angular_eccentricity(epsilon, s1):
+    """Table XV, 'S1 réel': the counterweight at crank radius for ε = −1, 0, +1. The angular
+    complement (±0.55 kg) is a series to the 5th order; its next terms, about λ²·0.55 ≈ 0.03 kg,
+    bound the difference."""
+    result = balance(bramo_with_angular_eccentricity(epsilon))
+    assert_allclose(result.counterweights[0].mass_kg, s1, atol=0.03)
