@@ -10,14 +10,14 @@ from . import __version__
 from .compare import analyse, reference_index
 from .config import ConfigError, find_configs, load
 from .counterweight import BalanceError, balance, plane_at, plane_at_throw
-from .firing import FiringError, firing, tdc_angles
+from .firing import FiringError, firing
 from .output import OutputError, write_text
 from .report.document import balance_document, compare_document, to_json
 from .report.table import (balance_csv, balance_tables, compare_csv, compare_tables, list_table,
                            show_table)
-from .units import UnitError, parse_quantity
 from .report.values import Scale
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES
+from .units import UnitError, parse_quantity
 
 __all__ = ["main"]
 
@@ -48,27 +48,35 @@ def _progress(items, label):
     return contextlib.nullcontext(items)
 
 
-def _checked_firing(engine):
-    """Firing of ``engine``, with an order that does not fit reported against its file."""
+@contextlib.contextmanager
+def _firing_order_of(engine):
+    """A firing order that does not fit the crank is an error of its configuration file."""
     try:
-        return firing(engine)
+        yield
     except FiringError as exc:
         raise ConfigError(engine.config_path, "firing_order", str(exc)) from None
+
+
+def _checked_firing(engine):
+    with _firing_order_of(engine):
+        return firing(engine)
 
 
 def _analysed(engine, samples, max_order):
-    try:
+    with _firing_order_of(engine):
         return analyse(engine, samples, max_order)
-    except FiringError as exc:
-        raise ConfigError(engine.config_path, "firing_order", str(exc)) from None
+
+
+def _config_files(paths):
+    files = find_configs(paths)
+    if not files:
+        _fail(f"no .toml configuration found in {', '.join(map(str, paths))}")
+    return files
 
 
 def _load_all(paths):
-    files = find_configs(paths)
-    if not files:
-        _fail(f"no .toml configuration found in {', '.join(paths)}")
     try:
-        return [load(f) for f in files]
+        return [load(f) for f in _config_files(paths)]
     except ConfigError as exc:
         _fail(str(exc))
 
@@ -90,11 +98,8 @@ def validate(paths):
 
     Prints one line per file; exits with status 1 if any file is invalid.
     """
-    files = find_configs(paths)
-    if not files:
-        _fail(f"no .toml configuration found in {', '.join(paths)}")
     bad = 0
-    for path in files:
+    for path in _config_files(paths):
         try:
             engine = load(path)
             _checked_firing(engine)
@@ -114,11 +119,8 @@ def list_(folder):
 
     Invalid files are reported on standard error (exit status 1) after the listing.
     """
-    files = find_configs([folder])
-    if not files:
-        _fail(f"no .toml configuration found in {folder}")
     engines, errors = [], []
-    for path in files:
+    for path in _config_files([folder]):
         try:
             engines.append(load(path))
         except ConfigError as exc:
@@ -143,7 +145,7 @@ def show(path):
         fire = _checked_firing(engine)
     except ConfigError as exc:
         _fail(str(exc))
-    click.echo(show_table(engine, tdc_angles(engine), fire), nl=False)
+    click.echo(show_table(engine, fire), nl=False)
 
 
 @main.command()

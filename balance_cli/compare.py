@@ -30,6 +30,16 @@ class EngineResult:
         """m_rec·r·ω²·n, N: divide a force by it to get Part III's per-cylinder figure."""
         return self.engine.unit_force_n * self.engine.n_cylinders
 
+    @property
+    def counterweighted_per_cylinder(self):
+        """The largest counterweighted resultant in Part III's per-cylinder units."""
+        return self.counterweighted_force_n / self.per_cylinder_unit_n
+
+    def percent_of(self, reference):
+        """That as a percentage of ``reference``'s (None when the reference has none)."""
+        base = reference.counterweighted_per_cylinder
+        return 100.0 * self.counterweighted_per_cylinder / base if base else None
+
 
 def analyse(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER):
     """Shaking forces and moments, firing and largest resultant of ``engine``."""

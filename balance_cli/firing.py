@@ -1,7 +1,7 @@
 """Top-dead-centre angles from the geometry, and firing orders and intervals."""
 
 import itertools
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -36,6 +36,8 @@ class Firing:
         every interval within ``UNIFORM_TOLERANCE_DEG`` of cycle/cylinders
     given : bool
         the order came from the configuration (else it was chosen as the most uniform)
+    tdc_deg : dict
+        each cylinder's top-dead-centre engine angle in [0, 360), by cylinder number
     """
 
     order: tuple
@@ -43,6 +45,7 @@ class Firing:
     intervals_deg: tuple
     uniform: bool
     given: bool
+    tdc_deg: dict = field(default_factory=dict, compare=False)
 
     @property
     def max_deviation_deg(self):
@@ -175,4 +178,4 @@ def firing(engine):
     intervals = _intervals(angles, cycle_deg)
     ideal = cycle_deg / len(order)
     uniform = max(abs(i - ideal) for i in intervals) <= UNIFORM_TOLERANCE_DEG
-    return Firing(order, tuple(angles), tuple(intervals), uniform, given)
+    return Firing(order, tuple(angles), tuple(intervals), uniform, given, tdc)

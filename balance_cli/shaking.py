@@ -8,7 +8,8 @@ import numpy as np
 from .harmonics import check_sampling, forward_backward, fourier, synthesize
 from .kinematics import engine_angles, mass_positions
 
-__all__ = ["OrderComponents", "Shaking", "shaking"]
+__all__ = ["OrderComponents", "Shaking", "shaking", "ellipse", "cylinder_phasors",
+           "mean_cylinder_z", "per_mass_force_coefficients"]
 
 DEFAULT_SAMPLES = 256
 DEFAULT_MAX_ORDER = 8
@@ -128,12 +129,9 @@ def shaking(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER):
         raise ValueError(
             f"--max-order {max_order} needs more than {4 * max_order} samples; raise --samples"
         )
-    masses = mass_positions(engine, engine_angles(samples))
-    z_mean = mean_cylinder_z(engine)
-    weights = masses.masses_kg[:, None] * masses.positions
-    per_mass = _inertia_coefficients(weights, engine.speed_rad_s)
+    per_mass, masses = per_mass_force_coefficients(engine, samples)
     force = per_mass.sum(axis=0)
-    moment = ((masses.z_m - z_mean)[:, None] * per_mass).sum(axis=0)
+    moment = ((masses.z_m - mean_cylinder_z(engine))[:, None] * per_mass).sum(axis=0)
     ok = check_sampling(per_mass, max_order, f"{engine.name}: ")
     return Shaking.from_coefficients(force, moment, max_order, ok)
 

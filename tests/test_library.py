@@ -121,9 +121,7 @@ def test_percentages_of_the_v8(part3, name, percent):
     """Tanaka: W12 71 %, W12 double obliquity 56 %, radial 31 %, rotary 16 % of the V8's
     largest resultant. His ratios come from three-decimal values (.152/.215 = 70.7 %), so
     ±1 point; the radial's .067 was truncated from .0677, so it may exceed by one more."""
-    reference = part3["1a-v8-90-flat"]
-    ratio = lambda r: r.counterweighted_force_n / r.per_cylinder_unit_n  # noqa: E731
-    ours = 100 * ratio(part3[name]) / ratio(reference)
+    ours = part3[name].percent_of(part3["1a-v8-90-flat"])
     allowance = 1.5 if name == "5a-radial-9" else 1.0
     assert abs(ours - percent) <= allowance
 

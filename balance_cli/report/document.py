@@ -12,8 +12,6 @@ def engine_document(result, reference):
     """One engine's entry: identification, firing, largest resultant and every order."""
     engine = result.engine
     firing = result.firing
-    reference_force = reference.counterweighted_force_n / reference.per_cylinder_unit_n
-    per_cylinder = result.counterweighted_force_n / result.per_cylinder_unit_n
     return {
         "name": engine.name,
         "config": engine.config_path,
@@ -33,8 +31,8 @@ def engine_document(result, reference):
         },
         "largest_resultant_N": result.largest_force_n,
         "counterweighted_resultant_N": result.counterweighted_force_n,
-        "counterweighted_resultant_per_cylinder": per_cylinder,
-        "percent_of_reference": 100.0 * per_cylinder / reference_force if reference_force else None,
+        "counterweighted_resultant_per_cylinder": result.counterweighted_per_cylinder,
+        "percent_of_reference": result.percent_of(reference),
         "sampling_ok": result.shaking.sampling_ok,
         "orders": [
             {"order": o.order, **order_values(o, result.per_cylinder_unit_n)} for o in result.shaking.orders

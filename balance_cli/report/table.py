@@ -40,9 +40,9 @@ def _order_rows(name, shaking, unit_n, scale, full):
         moment = [scale.moment(m[k]) for k in ("forward_Nm", "backward_Nm", "max_Nm")]
         rows.append(
             [name, order.order]
-            + ([x for x in force] if full else [_fmt(x, digits) for x in force])
+            + (force if full else [_fmt(x, digits) for x in force])
             + [f["axis_deg"] if full else _fmt(f["axis_deg"], 0)]
-            + ([x for x in moment] if full else [_fmt(x, 2) for x in moment])
+            + (moment if full else [_fmt(x, 2) for x in moment])
         )
     return rows
 
@@ -57,16 +57,15 @@ def _order_headers(scale):
 
 def _summary_rows(results, reference_index, scale):
     reference = results[reference_index]
-    ref = reference.counterweighted_force_n / reference.per_cylinder_unit_n
     rows = []
     for r in results:
-        per_cyl = r.counterweighted_force_n / r.per_cylinder_unit_n
-        largest = (_fmt(per_cyl, 4) if not scale.absolute
+        largest = (_fmt(r.counterweighted_per_cylinder, 4) if not scale.absolute
                    else _fmt(scale.force(r.counterweighted_force_n, r.per_cylinder_unit_n), 1))
+        percent = r.percent_of(reference)
         rows.append([
             r.engine.name, r.engine.n_cylinders, r.engine.cycle, r.engine.frame,
             "-".join(map(str, r.firing.order)), _intervals(r.firing), largest,
-            f"{100 * per_cyl / ref:.1f}" if ref else "-",
+            "-" if percent is None else f"{percent:.1f}",
         ])
     return rows
 
@@ -131,7 +130,7 @@ def list_table(engines):
                     tablefmt="simple", disable_numparse=True)
 
 
-def show_table(engine, tdc, firing):
+def show_table(engine, firing):
     """One engine, one row per cylinder, with the engine's data above."""
     mm = lambda m: f"{1000 * m:g} mm"  # noqa: E731
     header = [
@@ -160,7 +159,7 @@ def show_table(engine, tdc, firing):
         rows.append([
             c.number, f"{c.bank + 1} ({math.degrees(engine.bank_angles_rad[c.bank]):g}°)",
             c.throw + 1, f"{math.degrees(engine.throws[c.throw].phase_rad):g}", f"{c.z_m * 1000:g}",
-            f"{c.reciprocating_kg * 1000:g}", rod, f"{tdc[c.number]:.2f}",
+            f"{c.reciprocating_kg * 1000:g}", rod, f"{firing.tdc_deg[c.number]:.2f}",
         ])
     table = tabulate(
         rows,

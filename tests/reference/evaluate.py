@@ -211,10 +211,8 @@ def _quantity(record, frames):
         result = _result(engine, record)
         return abs(result.shaking.force_coefficients[0]) / _unit(record["unit"], engine, result)
     if kind == "percent":
-        ours = _result(_variant(record), record)
         reference = _result(_engine(record["reference"]), record)
-        ratio = lambda r: r.counterweighted_force_n / r.per_cylinder_unit_n  # noqa: E731
-        return 100.0 * ratio(ours) / ratio(reference)
+        return _result(_variant(record), record).percent_of(reference)
     if kind == "interval":
         intervals = _result(_variant(record), record).firing.intervals_deg
         return {"max": max(intervals), "min": min(intervals)}[words[1]]
