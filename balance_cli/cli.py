@@ -8,7 +8,7 @@ import click
 
 from . import __version__
 from .compare import analyse, reference_index
-from .config import ConfigError, find_configs, load
+from .config import ConfigError, find_configs, load, load_many
 from .counterweight import BalanceError, balance, plane_at, plane_at_throw
 from .firing import FiringError, firing
 from .output import OutputError, write_text
@@ -76,7 +76,7 @@ def _config_files(paths):
 
 def _load_all(paths):
     try:
-        return [load(f) for f in _config_files(paths)]
+        return load_many(paths)
     except ConfigError as exc:
         _fail(str(exc))
 

@@ -3,7 +3,6 @@
 This is the ground floor of the package: it imports nothing from the rest of it.
 """
 
-import math
 from dataclasses import dataclass, field
 
 __all__ = ["Throw", "Cylinder", "Engine", "ModelError"]
@@ -154,8 +153,3 @@ class Engine:
     def unit_force_n(self):
         """m_rec·r·ω² with the mean reciprocating mass per cylinder, N."""
         return self.mean_reciprocating_kg * self.crank_radius_m * self.speed_rad_s**2
-
-    @property
-    def cycle_rad(self):
-        """Crank angle of one working cycle: 2π for two-stroke, 4π for four-stroke."""
-        return math.pi * self.cycle
