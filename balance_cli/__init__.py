@@ -1,15 +1,44 @@
-"""balance: compare reciprocating-engine layouts for mechanical balance."""
+"""balance: compare reciprocating-engine layouts for mechanical balance, exactly, order by order.
+
+The package is a library first; the ``balance`` command is a thin face of it::
+
+    import balance_cli as balance
+
+    engine = balance.load("configs/inline-4-car.toml")
+    result = balance.analyse(engine, samples=256, max_order=8)
+    result.order(2).force_forward          # complex phasor, N
+    bal = balance.counterweights(engine, planes=[1, 4], radius_m=0.06)
+    fig = balance.plot.locus([result])     # matplotlib Figure (balance.plot loads matplotlib)
+
+Every error is a :class:`BalanceError`. SI units and radians throughout; see the README's
+"Python API" for every name, unit and exception.
+"""
 
 __version__ = "0.1.0"
 
-from .compare import EngineResult, analyse  # noqa: E402
-from .config import ConfigError, load, load_many  # noqa: E402
-from .firing import Firing, FiringError, firing, tdc_angles  # noqa: E402
-from .model import Cylinder, Engine, ModelError, Throw  # noqa: E402
-from .shaking import OrderComponents, Shaking, shaking  # noqa: E402
+from .analysis import Comparison, EngineResult, analyse, compare  # noqa: E402
+from .config import find_configs, load, load_many, loads  # noqa: E402
+from .counterweight import (Antivibrateur, Balance, Counterweight, Plane, Shaft,  # noqa: E402
+                            counterweights)
+from .errors import (AnalysisError, BalanceError, ConfigError, CounterweightError,  # noqa: E402
+                     FiringError, ModelError, OutputError, PlotError, SamplingWarning, UnitError)
+from .firing import Firing  # noqa: E402
+from .model import Cylinder, Engine, Throw  # noqa: E402
+from .shaking import OrderComponents, Shaking  # noqa: E402
 
 __all__ = [
-    "ConfigError", "Cylinder", "Engine", "EngineResult", "Firing", "FiringError", "ModelError",
-    "OrderComponents", "Shaking", "Throw", "analyse", "firing", "load", "load_many", "shaking",
-    "tdc_angles",
+    "load", "loads", "load_many", "find_configs", "analyse", "compare", "counterweights", "plot",
+    "Engine", "Cylinder", "Throw", "EngineResult", "Comparison", "Shaking", "OrderComponents",
+    "Firing", "Balance", "Counterweight", "Plane", "Shaft", "Antivibrateur",
+    "BalanceError", "ConfigError", "ModelError", "FiringError", "AnalysisError",
+    "CounterweightError", "PlotError", "OutputError", "UnitError", "SamplingWarning",
 ]
+
+
+def __getattr__(name):
+    # balance.plot imports matplotlib, which the commands that do not draw never load
+    if name == "plot":
+        import importlib
+
+        return importlib.import_module(".plot", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,32 +1,47 @@
-"""The ``balance`` command: thin commands that wire configuration, analyses and reports."""
+"""The ``balance`` command: a thin face of the library.
+
+Commands parse their options, call the library, render its results and write them. Library
+errors name the library's parameters; here they are put in the words of the command line (its
+flags, the configuration file) and become one line on standard error with exit status 1.
+"""
 
 import contextlib
 import sys
 import warnings
+from pathlib import Path
 
 import click
+from click.core import ParameterSource
 
 from . import __version__
-from .compare import analyse, reference_index
-from .config import ConfigError, find_configs, load, load_many
-from .counterweight import BalanceError, balance, plane_at, plane_at_throw
-from .firing import FiringError, firing
-from .output import OutputError, write_text
-from .report.document import balance_document, compare_document, to_json
-from .report.table import (balance_csv, balance_tables, compare_csv, compare_tables, list_table,
-                           show_table)
-from .report.values import Scale
-from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES
-from .units import UnitError, parse_quantity
+from .analysis import analyse, compare as comparison_of
+from .config import find_configs, load
+from .counterweight import counterweight_document, counterweights
+from .errors import BalanceError, ConfigError, FiringError, ModelError, SamplingWarning
+from .firing import firing_sequence
+from .output import refuse_inputs, to_json, write_text
+from .report.csvfile import balance_csv, compare_csv
+from .report.display import Scale
+from .report.tables import balance_tables, compare_tables, list_table, show_table
+from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings
+from .units import parse_quantity
 
 __all__ = ["main"]
 
+#: library parameter -> command-line flag, for the library's messages
+FLAGS = {
+    "samples": "--samples", "max_order": "--max-order", "reference": "--reference",
+    "planes": "--planes", "radius_m": "--radius", "balance_factor": "--balance-factor",
+    "shaft_orders": "--shafts", "antivibrateur_radius_m": "--antivibrateur-radius",
+    "test_masses": "--test-masses", "path": "--output", "units": "--units",
+}
+
 _INPUTS = click.argument("paths", nargs=-1, required=True, metavar="FILE|DIR...")
-_SAMPLES = click.option("--samples", default=DEFAULT_SAMPLES, show_default=True,
-                        type=click.IntRange(16, 1 << 16),
-                        help="Crank angles per revolution for the Fourier analysis.")
-_MAX_ORDER = click.option("--max-order", default=DEFAULT_MAX_ORDER, show_default=True,
-                          type=click.IntRange(1, 1000), help="Highest order analysed and reported.")
+_SAMPLES = click.option("--samples", default=DEFAULT_SAMPLES, show_default=True, type=int,
+                        help=f"Crank angles per revolution for the Fourier analysis: any number "
+                             f"from 4 × --max-order + 1 to {MAX_SAMPLES}.")
+_MAX_ORDER = click.option("--max-order", default=DEFAULT_MAX_ORDER, show_default=True, type=int,
+                          help="Highest order analysed and reported.")
 _FORMAT = click.option("--format", "fmt", type=click.Choice(["table", "markdown", "csv", "json"]),
                        default="table", show_default=True, help="Output format.")
 _OUTPUT = click.option("--output", "-o", default="-", metavar="FILE", show_default=True,
@@ -37,8 +52,27 @@ _UNITS = click.option("--units", type=click.Choice(["N", "kgf"]), default="N", s
                       help="Units of absolute forces and of moments; kgf implies --absolute.")
 
 
-def _fail(message):
-    raise click.ClickException(message)
+def _message(exc, engine=None):
+    """A library error in the command line's words: flags for parameters, the file it concerns."""
+    if isinstance(exc, ConfigError):
+        return str(exc)
+    if isinstance(exc, FiringError):
+        return str(ConfigError(engine.config_path, "firing_order", str(exc)))
+    text = exc.named(FLAGS)
+    if isinstance(exc, ModelError) and engine is not None:
+        return f"{engine.config_path}: {text}"
+    if engine is not None and exc.parameter not in (None, "samples", "max_order"):
+        return f"{engine.config_path}: {text}"
+    return text
+
+
+@contextlib.contextmanager
+def _reported(engine=None):
+    """Any library error inside becomes one line and exit status 1."""
+    try:
+        yield
+    except BalanceError as exc:
+        raise click.ClickException(_message(exc, engine)) from None
 
 
 def _progress(items, label):
@@ -48,37 +82,51 @@ def _progress(items, label):
     return contextlib.nullcontext(items)
 
 
-@contextlib.contextmanager
-def _firing_order_of(engine):
-    """A firing order that does not fit the crank is an error of its configuration file."""
-    try:
-        yield
-    except FiringError as exc:
-        raise ConfigError(engine.config_path, "firing_order", str(exc)) from None
+def _run_each(items, label, work):
+    """``work(item)`` for every item: a progress bar on a terminal, warnings echoed once on
+    standard error after the bar, a library error as one line naming its file."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", SamplingWarning)
+        results = []
+        with _progress(items, label) as bar:
+            for item in bar:
+                with _reported(getattr(item, "engine", item)):
+                    results.append(work(item))
+    for w in caught:
+        text = f"{w.message} (--samples)" if issubclass(w.category, SamplingWarning) else w.message
+        click.echo(f"warning: {text}", err=True)
+    return results
 
 
-def _checked_firing(engine):
-    with _firing_order_of(engine):
-        return firing(engine)
+def _inputs(paths):
+    """The configuration files under ``paths``, found before anything is computed."""
+    with _reported():
+        return find_configs(paths)
 
 
-def _analysed(engine, samples, max_order):
-    with _firing_order_of(engine):
-        return analyse(engine, samples, max_order)
+def _load_all(files):
+    with _reported():
+        return [load(f) for f in files]
 
 
-def _config_files(paths):
-    files = find_configs(paths)
-    if not files:
-        _fail(f"no .toml configuration found in {', '.join(map(str, paths))}")
-    return files
+def _guard(outputs, files):
+    """Refuse outputs that would replace an input, before anything is computed."""
+    with _reported():
+        refuse_inputs(outputs, files)
 
 
-def _load_all(paths):
-    try:
-        return load_many(paths)
-    except ConfigError as exc:
-        _fail(str(exc))
+def _settings(samples, max_order):
+    with _reported():
+        check_settings(samples, max_order)
+
+
+def _analyse_all(engines, samples, max_order):
+    return _run_each(engines, "Analysing", lambda e: analyse(e, samples, max_order))
+
+
+def _write(output, text):
+    with _reported():
+        write_text(output, text)
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -99,13 +147,17 @@ def validate(paths):
     Prints one line per file; exits with status 1 if any file is invalid.
     """
     bad = 0
-    for path in _config_files(paths):
+    for path in _inputs(paths):
         try:
             engine = load(path)
-            _checked_firing(engine)
+            with _reported(engine):
+                firing_sequence(engine)
         except ConfigError as exc:
             bad += 1
             click.echo(f"invalid: {exc}", err=True)
+        except click.ClickException as exc:
+            bad += 1
+            click.echo(f"invalid: {exc.message}", err=True)
         else:
             click.echo(f"ok: {path} ({engine.name}, {engine.n_cylinders} cylinders)")
     if bad:
@@ -119,8 +171,10 @@ def list_(folder):
 
     Invalid files are reported on standard error (exit status 1) after the listing.
     """
+    if not Path(folder).is_dir():
+        raise click.ClickException(f"{folder}: no such folder; give a folder of .toml files")
     engines, errors = [], []
-    for path in _config_files([folder]):
+    for path in _inputs([folder]):
         try:
             engines.append(load(path))
         except ConfigError as exc:
@@ -140,11 +194,10 @@ def show(path):
     The TDC angle is the engine angle (crank angle; crankcase angle for a rotary) at which
     the piston is farthest out, found on the exact linkage.
     """
-    try:
+    with _reported():
         engine = load(path)
-        fire = _checked_firing(engine)
-    except ConfigError as exc:
-        _fail(str(exc))
+    with _reported(engine):
+        fire = firing_sequence(engine)
     click.echo(show_table(engine, fire), nl=False)
 
 
@@ -164,38 +217,33 @@ def compare(paths, samples, max_order, absolute, units, reference, fmt, output):
     FILE|DIR...: configuration files, or folders searched recursively for .toml files,
     compared in the order given (files of a folder sorted by path).
     """
-    engines = _load_all(paths)
+    files = _inputs(paths)
+    _guard([output], files)
+    _settings(samples, max_order)
+    engines = _load_all(files)
     results = _analyse_all(engines, samples, max_order)
-    try:
-        index = reference_index(results, reference)
-    except ValueError as exc:
-        _fail(str(exc))
-    scale = Scale(absolute=absolute or units == "kgf", units=units)
+    with _reported():
+        comparison = comparison_of(results, reference)
+    scale = Scale.of(absolute, units)
     if fmt == "json":
-        text = to_json(compare_document(results, index, samples, max_order))
+        text = to_json(comparison.to_dict())
     elif fmt == "csv":
-        text = compare_csv(results, scale)
+        text = compare_csv(comparison, scale)
     else:
-        text = compare_tables(results, index, scale, fmt, samples)
-    try:
-        write_text(output, text)
-    except OutputError as exc:
-        _fail(str(exc))
+        text = compare_tables(comparison, scale, fmt)
+    _write(output, text)
 
 
-def _planes(engine, text):
+def _planes(text):
     """--planes: throw numbers ("1,6") or axial positions ("0 mm,750 mm"), one or two."""
     if text is None:
         return None
     planes = []
     for token in (t.strip() for t in text.split(",")):
         if token.isdigit():
-            planes.append(plane_at_throw(engine, int(token)))
+            planes.append(int(token))
         else:
-            try:
-                planes.append(plane_at(engine, parse_quantity(token, "length")))
-            except UnitError as exc:
-                raise BalanceError(f"--planes: {exc}") from None
+            planes.append(_length_option(token, "--planes"))
     return planes
 
 
@@ -208,6 +256,15 @@ def _orders_option(text):
         raise click.BadParameter("give orders as whole numbers, such as 1,2", param_hint="--shafts")
 
 
+def _length_option(text, flag):
+    if text is None:
+        return None
+    try:
+        return parse_quantity(text, "length")
+    except BalanceError as exc:
+        raise click.ClickException(f"{flag}: {exc}") from None
+
+
 @main.command()
 @_INPUTS
 @click.option("--planes", metavar="A[,B]",
@@ -216,17 +273,17 @@ def _orders_option(text):
 @click.option("--radius", metavar="LENGTH",
               help="Radius of the counterweights' centre of mass, e.g. '60 mm'. Default: the crank radius.")
 @click.option("--balance-factor", type=float, metavar="F",
-              help="Size for the rotating masses plus F times the reciprocating ones per throw "
-                   "(0.5 is the classic single's), instead of cancelling the forward first order.")
+              help="Size for the rotating masses plus F (0 to 1) times the reciprocating ones per "
+                   "throw (0.5 is the classic single's), instead of cancelling the forward first order.")
 @click.option("--shafts", metavar="K[,K...]",
               help="Cancel these residual orders with balancer shafts (k× speed, with or against the crank).")
 @click.option("--antivibrateur", "antivibrateur", is_flag=True,
               help="Add Fraeys de Veubeke's rotor on the crank pin (twice crank speed), sized to "
-                   "cancel the forward second order (single-throw engines).")
+                   "cancel the forward second order (single-throw engines with a turning crank).")
 @click.option("--antivibrateur-radius", default="40 mm", show_default=True, metavar="LENGTH",
               help="Eccentricity of the antivibrateur's mass.")
 @click.option("--test-masses", is_flag=True,
-              help="Also give the balancing-machine mass to hang on each crank pin.")
+              help="Also give the balancing-machine mass to hang on each crank pin (not for a rotary).")
 @_SAMPLES
 @_MAX_ORDER
 @_ABSOLUTE
@@ -241,60 +298,39 @@ def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, 
     Optionally: balancer shafts for residual orders, the antivibrateur of radial engines, and
     the balancing-machine test masses.
     """
-    engines = _load_all(paths)
-    _check_orders(samples, max_order)
+    files = _inputs(paths)
+    _guard([output], files)
+    _settings(samples, max_order)
+    plane_specs = _planes(planes)
     orders = _orders_option(shafts)
-    try:
-        radius_m = None if radius is None else parse_quantity(radius, "length")
-        rotor = parse_quantity(antivibrateur_radius, "length") if antivibrateur else None
-    except UnitError as exc:
-        _fail(f"--radius or --antivibrateur-radius: {exc}")
+    radius_m = _length_option(radius, "--radius")
+    rotor = _length_option(antivibrateur_radius, "--antivibrateur-radius") if antivibrateur else None
+    engines = _load_all(files)
 
     def work(engine):
-        try:
-            return balance(engine, _planes(engine, planes), radius_m, balance_factor, orders, rotor,
-                           test_masses, samples, max_order)
-        except BalanceError as exc:
-            raise ConfigError(engine.config_path, "", str(exc)) from None
+        return counterweights(engine, plane_specs, radius_m, balance_factor, orders, rotor,
+                              test_masses, samples, max_order)
 
-    results = _run_each(engines, "Balancing", work)
-    scale = Scale(absolute=absolute or units == "kgf", units=units)
+    balances = _run_each(engines, "Balancing", work)
+    scale = Scale.of(absolute, units)
     if fmt == "json":
-        text = to_json(balance_document(results, samples, max_order))
+        text = to_json(counterweight_document(balances))
     elif fmt == "csv":
-        text = balance_csv(results, scale)
+        text = balance_csv(balances, scale)
     else:
-        text = balance_tables(results, scale, fmt)
-    try:
-        write_text(output, text)
-    except OutputError as exc:
-        _fail(str(exc))
+        text = balance_tables(balances, scale, fmt)
+    _write(output, text)
 
 
-def _check_orders(samples, max_order):
-    if max_order >= samples // 4:
-        _fail(f"--max-order {max_order} needs --samples above {4 * max_order}")
+def _given(name):
+    return click.get_current_context().get_parameter_source(name) != ParameterSource.DEFAULT
 
 
-def _run_each(engines, label, work):
-    """``work(engine)`` for every engine: a progress bar on a terminal, warnings echoed once,
-    a configuration error as one line."""
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        try:
-            with _progress(engines, label) as bar:
-                results = [work(e) for e in bar]
-        except ConfigError as exc:
-            _fail(str(exc))
-    for w in caught:
-        click.echo(f"warning: {w.message}", err=True)
-    return results
+def _use_agg():
+    """Draw without a display: the command line's choice of backend, not the library's."""
+    import matplotlib
 
-
-def _analyse_all(engines, samples, max_order):
-    """Analyse every engine; a firing order that does not fit is reported against its file."""
-    _check_orders(samples, max_order)
-    return _run_each(engines, "Analysing", lambda e: _analysed(e, samples, max_order))
+    matplotlib.use("Agg")
 
 
 @main.command()
@@ -304,40 +340,42 @@ def _analyse_all(engines, samples, max_order):
                    "spectrum: forward and backward parts by order; star: each cylinder's phasor "
                    "of one order, chained; firing: firing angles on a dial.")
 @click.option("--output", "-o", required=True, metavar="PATH",
-              help="Picture file: PNG, or SVG when the name ends in .svg. Folders are created.")
-@click.option("--order", type=click.IntRange(1, 1000), default=None,
+              help="Picture file; its extension gives the format: .png, .svg, .pdf, .eps, .ps, "
+                   ".jpg, .tif, .webp, .svgz. Folders are created.")
+@click.option("--order", type=click.IntRange(1), default=None,
               help="locus: one order only (default all); star: the order drawn (default 2).")
 @click.option("--units", type=click.Choice(["per-cylinder", "N", "kgf"]), default="per-cylinder",
-              show_default=True, help="spectrum: units of the forces.")
+              show_default=True, help="spectrum only: units of the forces (kgf also puts moments "
+                                      "in kgf·m).")
 @_SAMPLES
 @_MAX_ORDER
 def plot(paths, kind, output, order, units, samples, max_order):
-    """Draw a picture of one or more engines (headless; PNG or SVG)."""
-    engines = _load_all(paths)
+    """Draw a picture of one or more engines (headless)."""
+    if _given("units") and kind != "spectrum":
+        raise click.UsageError(f"--units applies to --kind spectrum only, not {kind}")
+    if order is not None and kind not in ("locus", "star"):
+        raise click.UsageError(f"--order applies to --kind locus and star only, not {kind}")
+    files = _inputs(paths)
+    _guard([output], files)
+    _settings(samples, max_order)
     if order is not None and order > max_order:
-        _fail(f"--order {order} is above --max-order {max_order}")
-    results = _analyse_all(engines, samples, max_order)
-    from .report import plot as drawing  # matplotlib only for commands that draw
+        raise click.ClickException(f"--order {order} is above --max-order {max_order}")
+    _use_agg()
+    from . import plot as drawing  # matplotlib only for commands that draw
 
-    if kind == "locus":
-        figure = drawing.figure_locus(results, order)
-    elif kind == "spectrum":
-        figure = drawing.figure_spectrum(results, units.replace("-", "_"))
-    elif kind == "star":
-        figure = drawing.figure_star(_stars(results, order or 2, samples), order or 2)
-    else:
-        figure = drawing.figure_firing(results)
-    try:
+    with _reported():
+        drawing.format_of(output)
+    results = _analyse_all(_load_all(files), samples, max_order)
+    with _reported():
+        if kind == "locus":
+            figure = drawing.locus(results, order)
+        elif kind == "spectrum":
+            figure = drawing.spectrum(results, units)
+        elif kind == "star":
+            figure = drawing.star(results, order or 2)
+        else:
+            figure = drawing.firing(results)
         drawing.save(figure, output)
-    except OutputError as exc:
-        _fail(str(exc))
-
-
-def _stars(results, order, samples):
-    from .shaking import cylinder_phasors
-
-    return [(r.engine.name, cylinder_phasors(r.engine, order, samples), r.per_cylinder_unit_n)
-            for r in results]
 
 
 @main.command()
@@ -348,30 +386,29 @@ def _stars(results, order, samples):
               help="Also write report.html: one self-contained page, pictures inlined as SVG.")
 @click.option("--reference", default=None, metavar="NAME",
               help="Engine the percentages refer to (name or unique prefix); default the first.")
-@click.option("--star-order", default=2, show_default=True, type=click.IntRange(1, 1000),
+@click.option("--star-order", default=2, show_default=True, type=click.IntRange(1),
               help="Order drawn in the star diagram.")
 @_SAMPLES
 @_MAX_ORDER
 def report(paths, output, with_html, reference, star_order, samples, max_order):
     """Write a comparison report: tables, counterweights and pictures (Markdown, optionally HTML)."""
-    engines = _load_all(paths)
-    if star_order > max_order:
-        _fail(f"--star-order {star_order} is above --max-order {max_order}")
-    results = _analyse_all(engines, samples, max_order)
-    try:
-        index = reference_index(results, reference)
-    except ValueError as exc:
-        _fail(str(exc))
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # already reported by the analysis above
-        balances = [balance(e, samples=samples, max_order=max_order) for e in engines]
-    from .report.document_html import write_report
+    files = _inputs(paths)
+    _use_agg()
+    from .report.folder import REPORT_FILES, write_report
 
-    try:
-        written = write_report(output, results, balances, index, Scale(), samples, star_order,
-                               _stars(results, star_order, samples), with_html)
-    except OutputError as exc:
-        _fail(str(exc))
+    target = Path(output)
+    if target.exists() and not target.is_dir():
+        raise click.ClickException(f"{output}: is not a folder; give a folder for the report")
+    _guard([target] + [target / name for name in REPORT_FILES], files)
+    _settings(samples, max_order)
+    if star_order > max_order:
+        raise click.ClickException(f"--star-order {star_order} is above --max-order {max_order}")
+    results = _analyse_all(_load_all(files), samples, max_order)
+    with _reported():
+        comparison = comparison_of(results, reference)
+    balances = _run_each(results, "Balancing", counterweights)
+    with _reported():
+        written = write_report(target, comparison, balances, star_order, with_html)
     for path in written:
         click.echo(f"wrote {path}")
 

@@ -1,18 +1,24 @@
-"""Configuration format version 1: TOML file -> :class:`~balance_cli.model.Engine`.
+"""Configuration format version 1: TOML -> :class:`~balance_cli.model.Engine`.
 
-Every error names the file, the key (``banks[3].angle``) and what to do about it.
-Unknown keys are errors: a typo must not be silently ignored.
+Every error names the file, the key (``banks[3].angle``) and what to do about it. Unknown keys
+are errors: a typo must not be silently ignored. This module reads values (types, units,
+ranges, signs); the rules that relate values to each other (a rod longer than the crank, link
+rods on master rods of their own throw, one cylinder per bore, a firing order that lists every
+cylinder) are the model's, whose messages are translated here into the file's key names.
 """
 
 import math
+import os
+import re
 import tomllib
 from pathlib import Path
 
+from .errors import ConfigError, ModelError, UnitError
 from .kinematics import check_assembly
-from .model import Cylinder, Engine, ModelError, Throw
-from .units import UnitError, parse_quantity
+from .model import Cylinder, Engine, Throw
+from .units import parse_quantity
 
-__all__ = ["ConfigError", "load", "load_many", "find_configs"]
+__all__ = ["load", "loads", "build", "find_configs", "load_many"]
 
 _TOP_KEYS = {
     "name", "source", "cycle", "speed", "crank_radius", "rod_length", "pin_offset", "frame",
@@ -26,15 +32,17 @@ _CYLINDER_KEYS = {
     "number", "bank", "throw", "z", "reciprocating", "master", "link_length", "knuckle_radius",
     "knuckle_angle",
 }
-
-
-class ConfigError(ValueError):
-    """A configuration that cannot be read; the message names file, key and fix."""
-
-    def __init__(self, path, key, problem):
-        self.path, self.key, self.problem = str(path), key, problem
-        where = f"{self.path}: {key}: " if key else f"{self.path}: "
-        super().__init__(where + problem)
+#: model field -> configuration key, for the model's messages
+_KEYS = {
+    "speed_rad_s": "speed", "crank_radius_m": "crank_radius", "rod_length_m": "rod_length",
+    "pin_offset_m": "pin_offset", "rotating_kg": "masses.rotating", "crank_kg": "masses.crank",
+    "reciprocating_kg": "reciprocating", "knuckle_kg": "masses.knuckle",
+    "link_length_m": "link_length", "knuckle_radius_m": "knuckle_radius",
+    "knuckle_angle_rad": "knuckle_angle", "bank_angles_rad": "banks", "z_m": "z",
+}
+_FIELD = re.compile(r"\b(" + "|".join(map(re.escape, _KEYS)) + r")\b")
+#: angles are plain numbers of degrees within one turn either way
+_ANGLE_LIMIT_DEG = 360.0
 
 
 class _Reader:
@@ -51,11 +59,8 @@ class _Reader:
                     path, prefix + key, f"unknown key; check the spelling (known keys: {known})"
                 )
 
-    def name(self, key):
-        return self.prefix + key
-
     def error(self, key, problem):
-        return ConfigError(self.path, self.name(key), problem)
+        return ConfigError(self.path, self.prefix + key, problem)
 
     def has(self, key):
         return key in self.table
@@ -67,7 +72,8 @@ class _Reader:
             return None
         return self.table[key]
 
-    def quantity(self, key, dimension, required=True, default=None, positive=True, minimum=None):
+    def quantity(self, key, dimension, required=True, default=None, sign="positive"):
+        """A value with a unit, in SI; ``sign`` "positive", "non-negative" or "any"."""
         raw = self._get(key, required)
         if raw is None:
             return default
@@ -75,18 +81,21 @@ class _Reader:
             value = parse_quantity(raw, dimension)
         except UnitError as exc:
             raise self.error(key, str(exc)) from None
-        if positive and value <= 0.0:
+        if sign == "positive" and value <= 0.0:
             raise self.error(key, f"must be greater than zero, got {raw!r}")
-        if minimum is not None and value < minimum:
+        if sign == "non-negative" and value < 0.0:
             raise self.error(key, f"must not be negative, got {raw!r}")
         return value
 
-    def number(self, key, required=True, default=None):
+    def degrees(self, key, required=True):
         raw = self._get(key, required)
         if raw is None:
-            return default
+            return None
         if isinstance(raw, bool) or not isinstance(raw, (int, float)) or not math.isfinite(raw):
             raise self.error(key, f"expected a number of degrees such as 40 or -22.5, got {raw!r}")
+        if abs(raw) > _ANGLE_LIMIT_DEG:
+            raise self.error(key, f"must be between -{_ANGLE_LIMIT_DEG:g} and "
+                                  f"{_ANGLE_LIMIT_DEG:g} degrees, got {raw!r}")
         return float(raw)
 
     def integer(self, key, required=True, default=None, low=None, high=None):
@@ -105,6 +114,8 @@ class _Reader:
             return default
         if not isinstance(raw, str) or not raw.strip():
             raise self.error(key, f"expected a non-empty string, got {raw!r}")
+        if not raw.isprintable():
+            raise self.error(key, f"must be one line of printable text, got {raw!r}")
         if choices and raw not in choices:
             options = " or ".join(f'"{c}"' for c in choices)
             raise self.error(key, f"must be {options}, got {raw!r}")
@@ -119,23 +130,44 @@ class _Reader:
         return raw
 
 
-def load(path):
-    """Read, validate and build the engine described by the TOML file at ``path``."""
+def load(path) -> Engine:
+    """Read, check and build the engine described by the TOML file at ``path``.
+
+    Raises
+    ------
+    ConfigError
+        naming the file, the key and the fix
+    """
     path = Path(path)
     try:
-        text = path.read_bytes().decode("utf-8")
+        data = path.read_bytes()
     except FileNotFoundError:
         raise ConfigError(path, "", "no such file; check the path") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ConfigError(path, "", f"cannot read the file ({exc})") from None
+    except IsADirectoryError:
+        raise ConfigError(path, "", "is a folder; give a .toml file (or the folder where a "
+                                    "command takes folders)") from None
+    except OSError as exc:
+        raise ConfigError(path, "", f"cannot read the file ({exc.strerror or exc}); check its "
+                                    "permissions") from None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise ConfigError(path, "", f"not UTF-8 text ({exc.reason} at byte {exc.start}); save it "
+                                    "as UTF-8") from None
+    return loads(text, name=str(path))
+
+
+def loads(text, name="<string>") -> Engine:
+    """The engine described by TOML ``text``; ``name`` stands for the file in messages and
+    becomes the engine's ``config_path``."""
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise ConfigError(path, "", f"not valid TOML: {exc}; fix the syntax there") from None
-    return build(data, path)
+        raise ConfigError(name, "", f"not valid TOML: {exc}; fix the syntax there") from None
+    return build(data, name)
 
 
-def build(data, path="<config>"):
+def build(data, path="<config>") -> Engine:
     """Build an engine from parsed TOML ``data`` (a dict), naming ``path`` in errors."""
     top = _Reader(path, data, "", _TOP_KEYS)
     name = top.string("name")
@@ -146,34 +178,22 @@ def build(data, path="<config>"):
     speed = top.quantity("speed", "angular speed")
     crank_radius = top.quantity("crank_radius", "length")
     rod_length = top.quantity("rod_length", "length")
-    pin_offset = top.quantity("pin_offset", "length", required=False, default=0.0, positive=False)
+    pin_offset = top.quantity("pin_offset", "length", required=False, default=0.0, sign="any")
     frame = top.string("frame", required=False, default="fixed", choices=("fixed", "rotary"))
-    if rod_length <= crank_radius + abs(pin_offset):
-        raise top.error(
-            "rod_length",
-            f"{data['rod_length']!r} is not longer than the crank radius plus |pin_offset|, so "
-            "the rod cannot reach the cylinder axis; make it longer or the crank shorter",
-        )
 
     masses = _Reader(path, top._get("masses", True), "masses.", _MASS_KEYS)
     reciprocating = masses.quantity("reciprocating", "mass")
-    rotating = masses.quantity("rotating", "mass", required=False, default=0.0, positive=False,
-                               minimum=0.0)
-    knuckle = masses.quantity("knuckle", "mass", required=False, default=0.0, positive=False,
-                              minimum=0.0)
-    crank = masses.quantity("crank", "mass", required=False, default=0.0, positive=False,
-                            minimum=0.0)
+    rotating, knuckle, crank = (
+        masses.quantity(key, "mass", required=False, default=0.0, sign="non-negative")
+        for key in ("rotating", "knuckle", "crank"))
 
-    banks = []
-    for i, table in enumerate(top.tables("banks"), 1):
-        bank = _Reader(path, table, f"banks[{i}].", _BANK_KEYS)
-        banks.append(math.radians(bank.number("angle")))
+    banks = [math.radians(_Reader(path, table, f"banks[{i}].", _BANK_KEYS).degrees("angle"))
+             for i, table in enumerate(top.tables("banks"), 1)]
     throws = []
     for i, table in enumerate(top.tables("throws"), 1):
         throw = _Reader(path, table, f"throws[{i}].", _THROW_KEYS)
-        throws.append(Throw(math.radians(throw.number("phase")),
-                            throw.quantity("z", "length", required=False, default=0.0,
-                                           positive=False)))
+        throws.append(Throw(math.radians(throw.degrees("phase")),
+                            throw.quantity("z", "length", required=False, default=0.0, sign="any")))
 
     links = None
     if top.has("links"):
@@ -184,11 +204,12 @@ def build(data, path="<config>"):
             "knuckle_radius": reader.quantity("knuckle_radius", "length"),
         }
 
-    if top.has("cylinders"):
-        cylinders = _listed_cylinders(path, top.tables("cylinders"), banks, throws, reciprocating,
-                                      knuckle, links)
+    listed = top.has("cylinders")
+    if listed:
+        cylinders, keys = _listed_cylinders(path, top.tables("cylinders"), banks, throws,
+                                            reciprocating, knuckle, links)
     else:
-        cylinders = _grid_cylinders(banks, throws, reciprocating, knuckle, links)
+        cylinders, keys = _grid_cylinders(banks, throws, reciprocating, knuckle, links), {}
 
     firing_order = None
     if top.has("firing_order"):
@@ -197,27 +218,30 @@ def build(data, path="<config>"):
             isinstance(n, int) and not isinstance(n, bool) for n in raw
         ):
             raise top.error("firing_order", "expected a list of cylinder numbers such as [1, 3, 4, 2]")
-        numbers = sorted(c.number for c in cylinders)
-        if sorted(raw) != numbers:
-            raise top.error(
-                "firing_order",
-                f"{raw} is not a permutation of the cylinder numbers {numbers}; "
-                "list every cylinder exactly once",
-            )
         firing_order = tuple(raw)
 
-    engine = Engine(
-        name=name, cycle=cycle, speed_rad_s=speed, crank_radius_m=crank_radius,
-        rod_length_m=rod_length, bank_angles_rad=tuple(banks), throws=tuple(throws),
-        cylinders=tuple(cylinders), rotating_kg=rotating, crank_kg=crank, pin_offset_m=pin_offset,
-        frame=frame,
-        firing_order=firing_order, source=source, config_path=str(path),
-    )
     try:
+        engine = Engine(
+            name=name, cycle=cycle, speed_rad_s=speed, crank_radius_m=crank_radius,
+            rod_length_m=rod_length, bank_angles_rad=tuple(banks), throws=tuple(throws),
+            cylinders=tuple(cylinders), rotating_kg=rotating, crank_kg=crank,
+            pin_offset_m=pin_offset, frame=frame, firing_order=firing_order, source=source,
+            config_path=str(path),
+        )
         check_assembly(engine)
     except ModelError as exc:
-        raise ConfigError(path, "", f"{exc}") from None
+        raise _translated(path, exc, keys) from None
     return engine
+
+
+def _translated(path, exc, cylinder_keys):
+    """A model error as a configuration error: the key it concerns, the file's key names."""
+    problem = _FIELD.sub(lambda m: _KEYS[m.group(1)], exc.problem)
+    if exc.parameter:
+        key = _KEYS.get(exc.parameter, exc.parameter)
+    else:
+        key = cylinder_keys.get(exc.cylinder, "")
+    return ConfigError(path, key, problem)
 
 
 def _link_fields(cylinder_bank, master_bank, banks, links, knuckle_mass):
@@ -244,25 +268,26 @@ def _grid_cylinders(banks, throws, reciprocating, knuckle, links):
 
 
 def _listed_cylinders(path, tables, banks, throws, reciprocating, knuckle, links):
-    """The complete list of [[cylinders]], with link rods resolved against their masters."""
+    """The complete list of [[cylinders]] with link rods given their defaults, and the key of
+    each cylinder's table by number (for the model's messages)."""
     rows = []
-    seen = set()
+    keys = {}
     for i, table in enumerate(tables, 1):
         r = _Reader(path, table, f"cylinders[{i}].", _CYLINDER_KEYS)
         number = r.integer("number", low=1, high=10_000)
-        if number in seen:
+        if number in keys:
             raise r.error("number", f"cylinder {number} is listed twice; give each a unique number")
-        seen.add(number)
-        bank = r.integer("bank", low=1, high=len(banks)) - 1
+        keys[number] = f"cylinders[{i}]"
         throw = r.integer("throw", low=1, high=len(throws)) - 1
         rows.append(dict(
-            reader=r, number=number, bank=bank, throw=throw,
-            z=r.quantity("z", "length", required=False, default=throws[throw].z_m, positive=False),
+            reader=r, number=number, bank=r.integer("bank", low=1, high=len(banks)) - 1,
+            throw=throw,
+            z=r.quantity("z", "length", required=False, default=throws[throw].z_m, sign="any"),
             reciprocating=r.quantity("reciprocating", "mass", required=False, default=reciprocating),
             master=r.integer("master", required=False),
             link_length=r.quantity("link_length", "length", required=False),
             knuckle_radius=r.quantity("knuckle_radius", "length", required=False),
-            knuckle_angle=r.number("knuckle_angle", required=False),
+            knuckle_angle=r.degrees("knuckle_angle", required=False),
         ))
     by_number = {row["number"]: row for row in rows}
     if links:
@@ -283,16 +308,9 @@ def _listed_cylinders(path, tables, banks, throws, reciprocating, knuckle, links
         fields = {}
         if row["master"] is not None:
             master = by_number.get(row["master"])
-            if master is None or master is row:
-                raise r.error("master", f"names cylinder {row['master']}, which is not another "
-                              "listed cylinder; give the number of the master-rod cylinder")
-            if master["master"] is not None:
-                raise r.error("master", f"cylinder {row['master']} has a link rod itself; a link "
-                              "rod must ride on a master rod")
-            if master["throw"] != row["throw"]:
-                raise r.error("master", f"cylinder {row['master']} is on throw {master['throw'] + 1} "
-                              f"but this one on throw {row['throw'] + 1}; a link rod rides on the "
-                              "master rod of its own throw")
+            if master is None:
+                raise r.error("master", f"names cylinder {row['master']}, which is not listed; "
+                                        "give the number of the master-rod cylinder")
             defaults = links or {}
             length = row["link_length"] or defaults.get("length")
             radius = row["knuckle_radius"] or defaults.get("knuckle_radius")
@@ -313,23 +331,37 @@ def _listed_cylinders(path, tables, banks, throws, reciprocating, knuckle, links
                                   "(or [links]) or remove the key")
         cylinders.append(Cylinder(row["number"], row["bank"], row["throw"], row["z"],
                                   row["reciprocating"], **fields))
-    return cylinders
+    return cylinders, keys
 
 
 def find_configs(paths):
-    """Expand files and directories (recursively, sorted) into a list of .toml files."""
+    """Expand files and folders (recursively, sorted by path) into a list of .toml files.
+
+    A path that does not exist is kept (reading it says so); a folder that cannot be read, or
+    holds no .toml file, is a ConfigError.
+    """
     found = []
     for p in map(Path, paths):
-        if p.is_dir():
-            found.extend(sorted(p.rglob("*.toml")))
-        else:
+        if not p.is_dir():
             found.append(p)
+            continue
+        files = []
+
+        def unreadable(exc, folder=p):
+            raise ConfigError(exc.filename or folder, "", f"cannot read the folder "
+                              f"({exc.strerror or exc}); check its permissions") from None
+
+        if not os.access(p, os.R_OK | os.X_OK):
+            unreadable(PermissionError(13, "Permission denied", str(p)))
+        for folder, subfolders, names in os.walk(p, onerror=unreadable):
+            subfolders.sort()
+            files += [Path(folder) / n for n in names if n.endswith(".toml")]
+        if not files:
+            raise ConfigError(p, "", "no .toml configuration found in this folder")
+        found += sorted(files)
     return found
 
 
 def load_many(paths):
-    """Load every configuration under ``paths``; raise ConfigError when there is none."""
-    files = find_configs(paths)
-    if not files:
-        raise ConfigError(", ".join(map(str, paths)), "", "no .toml configuration found there")
-    return [load(f) for f in files]
+    """Load every configuration under ``paths`` (see :func:`find_configs`)."""
+    return [load(f) for f in find_configs(paths)]

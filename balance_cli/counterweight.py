@@ -1,28 +1,28 @@
 """Counterweights, balancer shafts, the antivibrateur and balancing-machine test masses.
 
-Everything works on the phasors of ``shaking``: a mass m at radius ρ turning with the crank at
-angle φ (measured like a throw phase) adds m·ρ·ω²·e^{iφ} to the forward first-order force
-and (z − z̄) times that to the free moment. A balancer shaft of order k adds m·e·(kω)²·e^{iφ}
-to the forward (or, counter-rotating, the backward) part of order k.
+Everything works on the phasors of the shaking analysis: a mass m at radius ρ turning with
+the crank at angle φ (measured like a throw phase) adds m·ρ·ω²·e^{iφ} to the forward
+first-order force and (z − z̄) times that to the free moment. A balancer shaft of order k adds
+m·e·(kω)²·e^{iφ} to the forward (or, counter-rotating, the backward) part of order k.
 """
 
 import cmath
 import math
+import numbers
 from dataclasses import dataclass
 
-from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, mean_cylinder_z, per_mass_force_coefficients, shaking
+from .analysis import DOCUMENT_VERSION, EngineResult, analyse
+from .errors import CounterweightError, UnitError
+from .model import Engine
+from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, Shaking
+from .tolerances import SAME_POSITION_M
+from .units import check_finite_range, rad_s_to_rpm, wrap_degrees
 
-__all__ = [
-    "BalanceError", "Plane", "Counterweight", "Shaft", "Antivibrateur", "Balance", "balance",
-    "plane_at_throw", "plane_at",
-]
+__all__ = ["Plane", "Counterweight", "Shaft", "Antivibrateur", "Balance", "counterweights",
+           "counterweight_document", "plane_at_throw", "plane_at"]
 
-#: a moment below this fraction of m_rec·r·ω²·n times one metre needs no pair of shafts
-_NEGLIGIBLE = 1e-9
-
-
-class BalanceError(ValueError):
-    """A balancing request that cannot be carried out (bad planes, radius, orders)."""
+#: the balance factor is a fraction of the reciprocating masses
+_BALANCE_FACTOR_RANGE = (0.0, 1.0)
 
 
 @dataclass(frozen=True)
@@ -45,6 +45,10 @@ class Counterweight:
     radius_m: float
     angle_deg: float
 
+    def to_dict(self) -> dict:
+        return {"z_m": self.plane.z_m, "throw": self.plane.throw, "mass_kg": self.mass_kg,
+                "radius_m": self.radius_m, "angle_deg": self.angle_deg}
+
 
 @dataclass(frozen=True)
 class Shaft:
@@ -61,8 +65,13 @@ class Shaft:
     z_m: float
 
     @property
-    def direction(self):
+    def direction(self) -> str:
         return "with the crank" if self.speed_ratio > 0 else "against the crank"
+
+    def to_dict(self) -> dict:
+        return {"order": self.order, "speed_ratio": self.speed_ratio,
+                "mass_eccentricity_kgm": self.mass_eccentricity_kgm, "phase_deg": self.phase_deg,
+                "z_m": self.z_m}
 
 
 @dataclass(frozen=True)
@@ -75,57 +84,148 @@ class Antivibrateur:
     phase_deg: float
 
     @property
-    def mass_kg(self):
+    def mass_kg(self) -> float:
         return self.mass_eccentricity_kgm / self.eccentricity_m
+
+    def to_dict(self) -> dict:
+        return {"mass_eccentricity_kgm": self.mass_eccentricity_kgm,
+                "eccentricity_m": self.eccentricity_m, "mass_kg": self.mass_kg,
+                "phase_deg": self.phase_deg}
 
 
 @dataclass(frozen=True)
 class Balance:
-    """What ``balance counterweight`` reports for one engine."""
+    """What ``balance counterweight`` reports for one engine.
 
-    engine: object
-    original: object             # Shaking before anything is added
+    Attributes
+    ----------
+    engine : Engine
+    original : Shaking
+        before anything is added
+    antivibrateur : Antivibrateur or None
+    counterweights : tuple of Counterweight
+    balance_factor : float or None
+        None when the counterweights cancel the forward first order exactly
+    residual : Shaking
+        after the antivibrateur and the counterweights
+    shafts : tuple of Shaft
+    after_shafts : Shaking or None
+        after the shafts too (None when no shaft was asked for)
+    test_masses_kg : tuple of float or None
+        the balancing-machine mass for each crank pin, in throw order (when asked for)
+    samples : int
+    """
+
+    engine: Engine
+    original: Shaking
     antivibrateur: Antivibrateur | None
     counterweights: tuple
     balance_factor: float | None
-    residual: object             # Shaking after antivibrateur and counterweights
+    residual: Shaking
     shafts: tuple
-    after_shafts: object | None  # Shaking after the shafts too
+    after_shafts: Shaking | None
     test_masses_kg: tuple | None
+    samples: int = DEFAULT_SAMPLES
+
+    @property
+    def max_order(self) -> int:
+        return self.original.max_order
+
+    def to_dict(self) -> dict:
+        """This engine's entry of ``counterweight --format json`` (SI units; see the README)."""
+        engine = self.engine
+        floor = engine.noise_floor_n
+
+        def stage(shaking):
+            return {"largest_resultant_N": shaking.largest_force(),
+                    "orders": [o.to_dict(floor) for o in shaking.orders]}
+
+        entry = {
+            "name": engine.name,
+            "config": engine.config_path,
+            "cylinders": engine.n_cylinders,
+            "frame": engine.frame,
+            "speed_rpm": rad_s_to_rpm(engine.speed_rad_s),
+            "unit_force_N": engine.unit_force_n,
+            "balance_factor": self.balance_factor,
+            "counterweights": [c.to_dict() for c in self.counterweights],
+            "antivibrateur": None if self.antivibrateur is None else self.antivibrateur.to_dict(),
+            "residual": stage(self.residual),
+        }
+        if self.after_shafts is not None:
+            entry["shafts"] = [s.to_dict() for s in self.shafts]
+            entry["after_shafts"] = stage(self.after_shafts)
+        if self.test_masses_kg is not None:
+            entry["test_masses_kg"] = list(self.test_masses_kg)
+        return entry
 
 
-def plane_at_throw(engine, number):
-    if not 1 <= number <= len(engine.throws):
-        raise BalanceError(f"--planes: there is no throw {number} (the engine has "
-                           f"{len(engine.throws)}); give throw numbers or positions such as '120 mm'")
-    return Plane(engine.throws[number - 1].z_m, number)
+def plane_at_throw(engine, number) -> Plane:
+    """The plane of throw ``number`` (1-based)."""
+    if isinstance(number, bool) or not isinstance(number, numbers.Integral) \
+            or not 1 <= number <= len(engine.throws):
+        raise CounterweightError(f"names throw {number!r}, but the engine has throws 1 to "
+                                 f"{len(engine.throws)}; give throw numbers or axial positions",
+                                 "planes")
+    return Plane(engine.throws[number - 1].z_m, int(number))
 
 
-def plane_at(engine, z_m):
-    """A plane at an axial position, on a throw if one sits there."""
+def plane_at(engine, z_m) -> Plane:
+    """A plane at an axial position, m; on a throw if one sits there."""
+    try:
+        check_finite_range(float(z_m), "length")
+    except UnitError as exc:
+        raise CounterweightError(f"has an axial position that is invalid: {exc}", "planes") from None
     for i, throw in enumerate(engine.throws, 1):
-        if math.isclose(throw.z_m, z_m, abs_tol=1e-9):
+        if math.isclose(throw.z_m, z_m, abs_tol=SAME_POSITION_M):
             return Plane(throw.z_m, i)
-    return Plane(z_m, None)
+    return Plane(float(z_m), None)
+
+
+def _plane(engine, spec):
+    if isinstance(spec, Plane):
+        return spec
+    if isinstance(spec, numbers.Integral) and not isinstance(spec, bool):
+        return plane_at_throw(engine, spec)
+    if isinstance(spec, numbers.Real) and not isinstance(spec, bool):
+        return plane_at(engine, spec)
+    raise CounterweightError(f"takes throw numbers (int), axial positions in metres (float) or "
+                             f"Plane objects, got {spec!r}", "planes")
 
 
 def default_planes(engine):
     """The first and last throws, or one plane where every throw sits at one position."""
     first, last = plane_at_throw(engine, 1), plane_at_throw(engine, len(engine.throws))
-    return (first,) if math.isclose(first.z_m, last.z_m, abs_tol=1e-9) else (first, last)
+    return (first,) if math.isclose(first.z_m, last.z_m, abs_tol=SAME_POSITION_M) else (first, last)
 
 
 def _angle_deg(phasor):
-    """Direction of a phasor in [0, 360) degrees; rounding noise below 0 reads as 0."""
-    degrees = math.degrees(cmath.phase(phasor)) % 360.0 if phasor else 0.0
-    return 0.0 if degrees > 360.0 - 1e-7 else degrees
+    """Direction of a phasor in [0, 360) degrees."""
+    return wrap_degrees(math.degrees(cmath.phase(phasor))) if phasor else 0.0
 
 
-def _check_planes(planes):
+def _checked_planes(engine, planes):
+    if planes is None:
+        return default_planes(engine)
+    planes = tuple(_plane(engine, p) for p in planes)
     if not 1 <= len(planes) <= 2:
-        raise BalanceError("--planes takes one plane (force only) or two (force and moment)")
-    if len(planes) == 2 and math.isclose(planes[0].z_m, planes[1].z_m, abs_tol=1e-9):
-        raise BalanceError("--planes: the two planes coincide; choose planes apart, or give one")
+        raise CounterweightError(f"takes one plane (force only) or two (force and moment), got "
+                                 f"{len(planes)}", "planes")
+    if len(planes) == 2 and math.isclose(planes[0].z_m, planes[1].z_m, abs_tol=SAME_POSITION_M):
+        raise CounterweightError("coincide; choose two planes apart, or give one", "planes")
+    return planes
+
+
+def _positive_length(value, parameter):
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise CounterweightError(f"must be a length in metres, got {value!r}", parameter)
+    try:
+        check_finite_range(float(value), "length")
+    except UnitError as exc:
+        raise CounterweightError(f"is invalid: {exc}", parameter) from None
+    if value <= 0:
+        raise CounterweightError(f"must be greater than zero, got {value!r}", parameter)
+    return float(value)
 
 
 def _share(force, moment, planes, z_mean):
@@ -140,30 +240,24 @@ def _share(force, moment, planes, z_mean):
     return (first, force - first)
 
 
-def _rotating_target(engine, factor, speed):
+def _rotating_target(engine, factor):
     """Forward first-order force and moment (N, N·m) of the classic per-throw counterweights:
     rotating, crank and knuckle masses plus ``factor`` times the reciprocating ones, opposite
     each throw at crank radius."""
-    z_mean = mean_cylinder_z(engine)
     force = moment = 0j
     for index, throw in enumerate(engine.throws):
         on_throw = [c for c in engine.cylinders if c.throw == index]
         mass = (engine.rotating_kg + engine.crank_kg + sum(c.knuckle_kg for c in on_throw)
                 + factor * sum(c.reciprocating_kg for c in on_throw))
-        phasor = -mass * engine.crank_radius_m * speed**2 * cmath.exp(1j * throw.phase_rad)
+        phasor = -mass * engine.crank_radius_m * engine.speed_rad_s**2 * cmath.exp(1j * throw.phase_rad)
         force += phasor
-        moment += (throw.z_m - z_mean) * phasor
+        moment += (throw.z_m - engine.mean_z_m) * phasor
     return force, moment
 
 
-def _antivibrateur(engine, shaking_, eccentricity):
+def _antivibrateur(engine, shaking, eccentricity):
     """Size the rotor to cancel the forward second order exactly; return it and its phasors."""
-    if len(engine.throws) != 1:
-        raise BalanceError("the antivibrateur turns on the crank pin of a single-throw engine "
-                           f"(this one has {len(engine.throws)} throws)")
-    if eccentricity <= 0:
-        raise BalanceError("--antivibrateur-radius must be greater than zero")
-    second = shaking_.orders[1].force_forward
+    second = shaking.order(2).force_forward
     omega = engine.speed_rad_s
     me = abs(second) / (4 * omega**2)
     rotor = Antivibrateur(me, eccentricity, _angle_deg(-second))
@@ -172,34 +266,35 @@ def _antivibrateur(engine, shaking_, eccentricity):
     return rotor, -second, pin
 
 
-def _shafts_for(order, shaking_, planes, z_mean, speed, scale):
+def _shafts_for(order, shaking, planes, engine):
     """Shafts cancelling order ``order``: per turning sense, one shaft at z̄ when the part has
     no moment (with its counterpart: Lanchester's pair for a line force), else two apart."""
-    o = shaking_.orders[order - 1]
+    o = shaking.order(order)
+    floor = engine.noise_floor_n
     out = []
     for sign, force, moment in ((1, o.force_forward, o.moment_forward),
                                 (-1, o.force_backward, o.moment_backward)):
-        if abs(force) < _NEGLIGIBLE * scale and abs(moment) < _NEGLIGIBLE * scale:
+        if abs(force) < floor and abs(moment) < floor:
             continue
-        if abs(moment) < _NEGLIGIBLE * scale or len(planes) == 1:
-            where = (Plane(z_mean),)
+        if abs(moment) < floor or len(planes) == 1:
+            where = (Plane(engine.mean_z_m),)
             phasors = (-force,)
         else:
             where = planes
-            phasors = _share(-force, -moment, planes, z_mean)
+            phasors = _share(-force, -moment, planes, engine.mean_z_m)
         for plane, phasor in zip(where, phasors):
-            if abs(phasor) < _NEGLIGIBLE * scale:
+            if abs(phasor) < floor:
                 continue
-            out.append(Shaft(order, sign * order, abs(phasor) / (order * speed) ** 2,
+            out.append(Shaft(order, sign * order, abs(phasor) / (order * engine.speed_rad_s) ** 2,
                              _angle_deg(phasor), plane.z_m))
     return out
 
 
-def _test_masses(engine, samples):
+def _test_masses(engine, shaking):
     """Mass to hang on each crank pin so that the counterweighted shaft balances on a machine:
     the forward first order of everything on the throw but the crankshaft itself, as a mass
     at crank radius (Nakanishi § 4)."""
-    coefficients, masses = per_mass_force_coefficients(engine, samples)
+    coefficients, masses = shaking.mass_coefficients, shaking.masses
     unit = engine.crank_radius_m * engine.speed_rad_s**2
     out = []
     for index, throw in enumerate(engine.throws):
@@ -210,66 +305,106 @@ def _test_masses(engine, samples):
     return tuple(out)
 
 
-def balance(engine, planes=None, radius_m=None, balance_factor=None, shaft_orders=(),
-            antivibrateur_radius_m=None, test_masses=False, samples=DEFAULT_SAMPLES,
-            max_order=DEFAULT_MAX_ORDER):
+def _checked_orders(shaft_orders, max_order):
+    orders = []
+    for k in shaft_orders:
+        if isinstance(k, bool) or not isinstance(k, numbers.Integral) or not 1 <= k <= max_order:
+            raise CounterweightError(f"names order {k!r}, outside the orders analysed (1 to "
+                                     f"{max_order}: max_order)", "shaft_orders")
+        orders.append(int(k))
+    return sorted(set(orders))
+
+
+def counterweights(engine, planes=None, radius_m=None, balance_factor=None, shaft_orders=(),
+                   antivibrateur_radius_m=None, test_masses=False, samples=DEFAULT_SAMPLES,
+                   max_order=DEFAULT_MAX_ORDER) -> Balance:
     """Counterweights (and optionally antivibrateur, shafts, test masses) for ``engine``.
 
     Parameters
     ----------
-    planes : sequence of Plane, optional
-        one plane (cancel the force only) or two (force and moment); default the first and
+    engine : Engine or EngineResult
+        an analysed engine (:func:`~balance_cli.analyse`) is not analysed again: its samples
+        and max_order are used
+    planes : sequence of int, float or Plane, optional
+        one plane (cancel the force only) or two (force and moment): a throw number (int,
+        1-based), an axial position (float, m) or a :class:`Plane`; default the first and
         last throws
     radius_m : float, optional
         radius of the counterweights' centre of mass, m; default the crank radius
     balance_factor : float, optional
-        size for the rotating masses plus this fraction of the reciprocating ones per throw,
-        instead of cancelling the forward first order exactly
+        size for the rotating masses plus this fraction (0 to 1) of the reciprocating ones
+        per throw, instead of cancelling the forward first order exactly
     shaft_orders : sequence of int
         residual orders to cancel with balancer shafts
     antivibrateur_radius_m : float, optional
         add Fraeys de Veubeke's rotor of this eccentricity, m, sized to cancel the forward
-        second order (single-throw engines)
+        second order (single-throw engines with a turning crank)
+    test_masses : bool
+        also give the balancing-machine mass for each crank pin (not for a rotary)
+    samples, max_order : int
+        as for :func:`~balance_cli.analyse`
+
+    Raises
+    ------
+    CounterweightError
+        naming the parameter that cannot be used
     """
-    planes = tuple(planes) if planes else default_planes(engine)
-    _check_planes(planes)
-    radius = engine.crank_radius_m if radius_m is None else radius_m
-    if radius <= 0:
-        raise BalanceError("--radius must be greater than zero")
-    bad = [k for k in shaft_orders if not 1 <= k <= max_order]
-    if bad:
-        raise BalanceError(f"--shafts: order {bad[0]} is outside 1..{max_order} (--max-order)")
+    if isinstance(engine, EngineResult):
+        shaking, samples = engine.shaking, engine.samples
+        engine = engine.engine
+    else:
+        shaking = analyse(engine, samples, max_order).shaking
+    max_order = shaking.max_order
+    planes = _checked_planes(engine, planes)
+    radius = engine.crank_radius_m if radius_m is None else _positive_length(radius_m, "radius_m")
+    if balance_factor is not None:
+        low, high = _BALANCE_FACTOR_RANGE
+        if isinstance(balance_factor, bool) or not isinstance(balance_factor, numbers.Real) \
+                or not low <= balance_factor <= high:
+            raise CounterweightError(f"must be a fraction of the reciprocating masses from "
+                                     f"{low:g} to {high:g}, got {balance_factor!r}", "balance_factor")
+        balance_factor = float(balance_factor)
+    orders = _checked_orders(shaft_orders, max_order)
+    if antivibrateur_radius_m is not None:
+        _positive_length(antivibrateur_radius_m, "antivibrateur_radius_m")
+        if engine.is_rotary or len(engine.throws) != 1 or max_order < 2:
+            raise CounterweightError(
+                "needs a single-throw engine with a turning crank and max_order of at least 2: "
+                f"the rotor turns on the crank pin (this engine: {len(engine.throws)} throws, "
+                f"frame {engine.frame}, max_order {max_order})", "antivibrateur_radius_m")
+    if test_masses and engine.is_rotary:
+        raise CounterweightError("do not apply to a rotary engine: its crank stands still, so "
+                                 "there is no crankshaft to run on a balancing machine",
+                                 "test_masses")
     omega = engine.speed_rad_s
-    z_mean = mean_cylinder_z(engine)
-    scale = engine.unit_force_n * engine.n_cylinders
-    original = shaking(engine, samples, max_order)
-    current = original
+    z_mean = engine.mean_z_m
+    current = shaking
 
     rotor = None
     if antivibrateur_radius_m is not None:
-        rotor, second, pin = _antivibrateur(engine, current, antivibrateur_radius_m)
+        rotor, second, pin = _antivibrateur(engine, current, float(antivibrateur_radius_m))
         lever = engine.throws[0].z_m - z_mean
         current = current.plus(2, forward=second, forward_moment=lever * second)
         current = current.plus(1, forward=pin, forward_moment=lever * pin)
 
-    first = current.orders[0]
+    first = current.order(1)
     if balance_factor is None:
         target_force, target_moment = -first.force_forward, -first.moment_forward
     else:
-        target_force, target_moment = _rotating_target(engine, balance_factor, omega)
-    counterweights = []
+        target_force, target_moment = _rotating_target(engine, balance_factor)
+    weights = []
     for plane, phasor in zip(planes, _share(target_force, target_moment, planes, z_mean)):
-        if abs(phasor) < _NEGLIGIBLE * scale:
+        if abs(phasor) < engine.noise_floor_n:
             phasor = 0j  # rounding noise of a balanced first order: no counterweight
-        counterweights.append(Counterweight(plane, abs(phasor) / (radius * omega**2), radius,
-                                            _angle_deg(phasor)))
+        weights.append(Counterweight(plane, abs(phasor) / (radius * omega**2), radius,
+                                     _angle_deg(phasor)))
         current = current.plus(1, forward=phasor, forward_moment=(plane.z_m - z_mean) * phasor)
     residual = current
 
     shafts = []
     shaft_planes = planes if len(planes) == 2 else default_planes(engine)
-    for order in sorted(set(shaft_orders)):
-        for shaft in _shafts_for(order, residual, shaft_planes, z_mean, omega, scale):
+    for order in orders:
+        for shaft in _shafts_for(order, residual, shaft_planes, engine):
             shafts.append(shaft)
             phasor = shaft.mass_eccentricity_kgm * (order * omega) ** 2 * cmath.exp(
                 1j * math.radians(shaft.phase_deg))
@@ -279,6 +414,13 @@ def balance(engine, planes=None, radius_m=None, balance_factor=None, shaft_order
             else:
                 current = current.plus(order, backward=phasor, backward_moment=lever)
 
-    masses = _test_masses(engine, samples) if test_masses and engine.frame == "fixed" else None
-    return Balance(engine, original, rotor, tuple(counterweights), balance_factor, residual,
-                   tuple(shafts), current if shaft_orders else None, masses)
+    masses = _test_masses(engine, shaking) if test_masses else None
+    return Balance(engine, shaking, rotor, tuple(weights), balance_factor, residual,
+                   tuple(shafts), current if orders else None, masses, samples)
+
+
+def counterweight_document(balances) -> dict:
+    """What ``counterweight --format json`` writes: one :meth:`Balance.to_dict` per engine."""
+    balances = list(balances)
+    return {"balance_version": DOCUMENT_VERSION, "samples": balances[0].samples,
+            "max_order": balances[0].max_order, "engines": [b.to_dict() for b in balances]}

@@ -5,19 +5,16 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .errors import FiringError
 from .kinematics import piston_travel
+from .tolerances import TDC_PRECISION_DEG, UNIFORM_FIRING_DEG
+from .units import round_degrees, wrap_degrees
 
-__all__ = ["FiringError", "Firing", "tdc_angles", "firing"]
+__all__ = ["Firing", "tdc_angles", "firing_sequence"]
 
-#: intervals within this of the mean count as uniform, degrees
-UNIFORM_TOLERANCE_DEG = 0.01
 #: brute-force search of four-stroke orders up to this many cylinders
 _EXHAUSTIVE_LIMIT = 16
-_EPS = 1e-3
-
-
-class FiringError(ValueError):
-    """A firing order that is not a permutation of the cylinders or does not fit the crank."""
+_EPS = TDC_PRECISION_DEG
 
 
 @dataclass(frozen=True)
@@ -33,7 +30,7 @@ class Firing:
     intervals_deg : tuple of float
         gaps between consecutive firings, the last wrapping round the cycle, degrees
     uniform : bool
-        every interval within ``UNIFORM_TOLERANCE_DEG`` of cycle/cylinders
+        every interval within ``UNIFORM_FIRING_DEG`` of cycle/cylinders
     given : bool
         the order came from the configuration (else it was chosen as the most uniform)
     tdc_deg : dict
@@ -48,9 +45,15 @@ class Firing:
     tdc_deg: dict = field(default_factory=dict, compare=False)
 
     @property
-    def max_deviation_deg(self):
+    def max_deviation_deg(self) -> float:
         mean = sum(self.intervals_deg) / len(self.intervals_deg)
         return max(abs(i - mean) for i in self.intervals_deg)
+
+    def to_dict(self) -> dict:
+        """The ``firing`` entry of ``compare --format json``."""
+        return {"order": list(self.order), "angles_deg": list(self.angles_deg),
+                "intervals_deg": list(self.intervals_deg), "uniform": self.uniform,
+                "max_deviation_deg": self.max_deviation_deg, "given": self.given}
 
 
 def tdc_angles(engine):
@@ -71,14 +74,13 @@ def tdc_angles(engine):
         best = np.array([local[i, np.argmax(travel[n][i])] for i, n in enumerate(numbers)])
         step /= 50
     crank = np.degrees(best)
-    angles = (-crank if engine.frame == "rotary" else crank) % 360.0
-    return {n: float(a) for n, a in zip(numbers, angles)}
+    angles = -crank if engine.is_rotary else crank
+    return {n: wrap_degrees(a, tolerance=TDC_PRECISION_DEG) for n, a in zip(numbers, angles)}
 
 
 def _after(angle, reference):
     """``angle`` − ``reference`` in [0, 360), with TDCs equal to search precision made equal."""
-    turn = (angle - reference) % 360.0
-    return 0.0 if turn > 360.0 - _EPS else turn
+    return wrap_degrees(angle - reference, tolerance=_EPS)
 
 
 def _fit_order(order, tdc, cycle_deg):
@@ -97,7 +99,8 @@ def _fit_order(order, tdc, cycle_deg):
         if angle >= cycle_deg - _EPS:
             raise FiringError(
                 f"cylinder {number} cannot fire after cylinder {order[len(angles) - 1]} within one "
-                f"{cycle_deg:.0f}° cycle (its TDCs are at {tdc[number]:.1f}° + n·360°); "
+                f"{cycle_deg:.0f}° cycle (its TDCs are at {round_degrees(tdc[number], 1):.1f}° "
+                f"+ n·360°); "
                 f"list an order the crank allows, or leave firing_order out to get one"
             )
         angles.append(angle)
@@ -155,19 +158,21 @@ def _most_uniform_four_stroke(numbers, tdc):
     return order, [float(angles[j]) for j in sequence[choice]]
 
 
-def firing(engine):
-    """The engine's firing sequence: the configured order checked, or the most uniform one."""
+def firing_sequence(engine) -> Firing:
+    """The engine's firing sequence: the configured order fitted to the crank, or the most
+    uniform one the crank allows.
+
+    Raises
+    ------
+    FiringError
+        the engine's ``firing_order`` cannot be fired within one cycle on this crank
+    """
     tdc = tdc_angles(engine)
-    cycle_deg = 180.0 * engine.cycle
+    cycle_deg = engine.cycle_deg
     numbers = sorted(tdc)
     given = engine.firing_order is not None
     if given:
         order = tuple(engine.firing_order)
-        if sorted(order) != numbers:
-            raise FiringError(
-                f"firing_order {list(order)} is not a permutation of the cylinder numbers "
-                f"{numbers}; list every cylinder exactly once"
-            )
         angles = _fit_order(order, tdc, cycle_deg)
     elif engine.cycle == 2:
         first = numbers[0]
@@ -177,5 +182,5 @@ def firing(engine):
         order, angles = _most_uniform_four_stroke(numbers, tdc)
     intervals = _intervals(angles, cycle_deg)
     ideal = cycle_deg / len(order)
-    uniform = max(abs(i - ideal) for i in intervals) <= UNIFORM_TOLERANCE_DEG
+    uniform = max(abs(i - ideal) for i in intervals) <= UNIFORM_FIRING_DEG
     return Firing(order, tuple(angles), tuple(intervals), uniform, given, tdc)

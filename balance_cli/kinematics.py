@@ -10,11 +10,12 @@ Masses (point masses, as in Tanaka 1925 and Fraeys de Veubeke 1949 §8):
 """
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import NamedTuple
 
 import numpy as np
 
-from .model import ModelError
+from .errors import ModelError
 
 __all__ = ["MassSet", "Linkage", "linkage", "mass_positions", "piston_travel", "check_assembly",
            "engine_angles"]
@@ -54,18 +55,32 @@ def engine_angles(samples):
     return 2.0 * np.pi * np.arange(samples) / samples
 
 
-def _slider(point, axis_angle, length, offset):
+def _slider(point, axis_angle, length, offset, cylinder, crank_angles):
     """Piston pin on a cylinder axis, joined by a rod of ``length`` to ``point``.
 
     Returns the pin position and the travel along the axis (both exact), and the
-    squared half-chord ``length² − (offset − y)²`` that must stay positive for the
-    rod to reach the axis.
+    squared half-chord ``length² − (offset − y)²``, which must stay positive for the
+    rod to reach the axis: where it does not, the linkage cannot be assembled and
+    ModelError names the cylinder and the crank angle.
     """
     turn = np.exp(-1j * axis_angle)
     local = point * turn
     reach = length**2 - (offset - local.imag) ** 2
-    travel = local.real + np.sqrt(np.maximum(reach, 0.0))
+    if reach.size and reach.min() <= 0.0:
+        _cannot_reach(cylinder, np.asarray(crank_angles).flat[int(np.argmin(reach))])
+    travel = local.real + np.sqrt(reach)
     return (travel + 1j * offset) / turn, travel, reach
+
+
+def _cannot_reach(cylinder, crank_angle):
+    where = f"{np.degrees(crank_angle) % 360.0:.1f}°"
+    if cylinder.is_link:
+        raise ModelError(f"cylinder {cylinder.number}: its link rod cannot reach the cylinder axis "
+                         f"at crank angle {where}; make link_length_m longer or knuckle_radius_m "
+                         "smaller", cylinder=cylinder.number)
+    raise ModelError(f"cylinder {cylinder.number}: the rod cannot reach the cylinder axis at crank "
+                     f"angle {where}; rod_length_m must exceed crank_radius_m plus |pin_offset_m|",
+                     cylinder=cylinder.number)
 
 
 class Linkage(NamedTuple):
@@ -93,7 +108,7 @@ def linkage(engine, crank_angles):
             continue
         axis = engine.bank_angles_rad[cyl.bank]
         piston[cyl.number], travel[cyl.number], reach[cyl.number] = _slider(
-            pins[cyl.throw], axis, engine.rod_length_m, engine.pin_offset_m
+            pins[cyl.throw], axis, engine.rod_length_m, engine.pin_offset_m, cyl, crank_angles
         )
     for cyl in engine.cylinders:
         if not cyl.is_link:
@@ -107,7 +122,7 @@ def linkage(engine, crank_angles):
         )
         axis = engine.bank_angles_rad[cyl.bank]
         piston[cyl.number], travel[cyl.number], reach[cyl.number] = _slider(
-            knuckle[cyl.number], axis, cyl.link_length_m, engine.pin_offset_m
+            knuckle[cyl.number], axis, cyl.link_length_m, engine.pin_offset_m, cyl, crank_angles
         )
     return Linkage(piston, travel, reach, knuckle, pins)
 
@@ -118,26 +133,14 @@ def _crank_angles(engine, angles):
     In a rotary the crankcase turns forward about a fixed crank, so the crank turns
     backward relative to the cylinders.
     """
-    return -angles if engine.frame == "rotary" else angles
+    return -angles if engine.is_rotary else angles
 
 
+@lru_cache(maxsize=256)
 def check_assembly(engine):
-    """Raise :class:`ModelError` naming the first cylinder whose rod cannot reach its axis."""
-    angles = engine_angles(_CHECK_SAMPLES)
-    reach = linkage(engine, angles).reach
-    for cyl in engine.cylinders:
-        worst = int(np.argmin(reach[cyl.number]))
-        if reach[cyl.number][worst] <= 0.0:
-            where = np.degrees(angles[worst])
-            if cyl.is_link:
-                raise ModelError(
-                    f"cylinder {cyl.number}: its link rod cannot reach the cylinder axis at crank "
-                    f"angle {where:.1f}°; make link_length longer or knuckle_radius smaller"
-                )
-            raise ModelError(
-                f"cylinder {cyl.number}: the rod cannot reach the cylinder axis at crank angle "
-                f"{where:.1f}°; rod_length must exceed crank_radius plus |pin_offset|"
-            )
+    """Raise :class:`ModelError` naming the first cylinder whose rod cannot reach its axis
+    somewhere on a 0.1° grid of a revolution. Every analysis calls it first (it is cached)."""
+    linkage(engine, engine_angles(_CHECK_SAMPLES))
 
 
 def piston_travel(engine, crank_angles):
@@ -146,11 +149,13 @@ def piston_travel(engine, crank_angles):
     ``crank_angles`` are crank angles seen from the crankcase (any shape); returns a dict
     keyed by cylinder number.
     """
+    check_assembly(engine)
     return linkage(engine, crank_angles).travel
 
 
 def mass_positions(engine, angles):
     """Every point mass of ``engine`` at engine angles ``angles`` (1-D, rad), in the fixed frame."""
+    check_assembly(engine)
     piston, _, _, knuckle, pins = linkage(engine, _crank_angles(engine, angles))
     rows = []  # (position, mass, z, owner, throw)
     for cyl in engine.cylinders:
@@ -162,7 +167,7 @@ def mass_positions(engine, angles):
             if mass:
                 rows.append((pin, mass, throw.z_m, owner, index))
     positions = np.array([row[0] for row in rows])
-    if engine.frame == "rotary":
+    if engine.is_rotary:
         # the crankcase frame turns forward by the engine angle
         positions = positions * np.exp(1j * angles)
     return MassSet(positions, *(np.array([row[i] for row in rows]) for i in range(1, 5)))

@@ -1,15 +1,24 @@
-"""The engine model: immutable, SI units and radians throughout.
+"""The engine model: immutable, SI units and radians throughout, checked when built.
 
-This is the ground floor of the package: it imports nothing from the rest of it.
+This is the ground floor of the analyses: it imports only the errors, tolerances and units.
+An :class:`Engine` built in code is checked exactly as one read from a configuration file
+(the reader puts its key names into the messages); whether its linkage can be assembled over
+a revolution is checked by :func:`balance_cli.kinematics.check_assembly`, which every analysis
+calls first.
 """
 
+import math
 from dataclasses import dataclass, field
 
-__all__ = ["Throw", "Cylinder", "Engine", "ModelError"]
+from .errors import ModelError, UnitError
+from .tolerances import NOISE_FLOOR, SAME_POSITION_M
+from .units import check_finite_range
 
+__all__ = ["Throw", "Cylinder", "Engine", "FRAMES"]
 
-class ModelError(ValueError):
-    """An engine that cannot exist: a linkage that cannot be assembled, a bad reference."""
+#: "fixed": the crank turns in a fixed crankcase; "rotary": the crankcase and its cylinders
+#: turn about a fixed crank
+FRAMES = ("fixed", "rotary")
 
 
 @dataclass(frozen=True)
@@ -72,7 +81,7 @@ class Cylinder:
     knuckle_kg: float = 0.0
 
     @property
-    def is_link(self):
+    def is_link(self) -> bool:
         return self.master is not None
 
 
@@ -83,7 +92,7 @@ class Engine:
     Parameters
     ----------
     name : str
-        display name
+        display name, one line
     cycle : int
         2 or 4 (strokes per cycle)
     speed_rad_s : float
@@ -106,6 +115,11 @@ class Engine:
         cylinder numbers in firing order, if the configuration gives one
     source, config_path : str
         where the data came from, and the file it was read from
+
+    Raises
+    ------
+    ModelError
+        naming the field (``parameter``) or the cylinder (``cylinder``) that is wrong
     """
 
     name: str
@@ -127,6 +141,7 @@ class Engine:
 
     def __post_init__(self):
         object.__setattr__(self, "_by_number", {c.number: c for c in self.cylinders})
+        _check(self)
 
     def cylinder(self, number):
         """The cylinder with this number."""
@@ -142,14 +157,147 @@ class Engine:
         return "master" if self.is_master(cylinder) else "plain"
 
     @property
-    def n_cylinders(self):
+    def n_cylinders(self) -> int:
         return len(self.cylinders)
 
     @property
-    def mean_reciprocating_kg(self):
+    def is_rotary(self) -> bool:
+        """The crankcase turns about a fixed crank (a rotary engine)."""
+        return self.frame == "rotary"
+
+    @property
+    def cycle_deg(self) -> float:
+        """Crank degrees of one working cycle: 360 (two-stroke) or 720 (four-stroke)."""
+        return 180.0 * self.cycle
+
+    @property
+    def mean_reciprocating_kg(self) -> float:
         return sum(c.reciprocating_kg for c in self.cylinders) / len(self.cylinders)
 
     @property
-    def unit_force_n(self):
+    def mean_z_m(self) -> float:
+        """z̄, the axial position free moments are taken about: the cylinders' mean, m."""
+        return sum(c.z_m for c in self.cylinders) / len(self.cylinders)
+
+    @property
+    def unit_force_n(self) -> float:
         """m_rec·r·ω² with the mean reciprocating mass per cylinder, N."""
         return self.mean_reciprocating_kg * self.crank_radius_m * self.speed_rad_s**2
+
+    @property
+    def per_cylinder_unit_n(self) -> float:
+        """m_rec·r·ω²·n, N: divide a force by it to get Tanaka's per-cylinder figure."""
+        return self.unit_force_n * self.n_cylinders
+
+    @property
+    def noise_floor_n(self) -> float:
+        """Forces below this (N), and moments below it times one metre (N·m), are rounding
+        noise: :data:`~balance_cli.tolerances.NOISE_FLOOR` of m_rec·r·ω²·n."""
+        return NOISE_FLOOR * self.per_cylinder_unit_n
+
+
+def _quantity(value, dimension, parameter, sign="positive", cylinder=None):
+    """A finite SI value within the accepted range; ``sign`` "positive", "non-negative" or "any"."""
+    prefix = f"cylinder {cylinder}: {parameter} " if cylinder is not None else ""
+    name = None if prefix else parameter
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ModelError(f"{prefix}must be a number, got {value!r}", name, cylinder)
+    try:
+        # a value that may be zero may also be tiny (rounding noise of a computed position)
+        check_finite_range(float(value), dimension, smallest=sign == "positive")
+    except UnitError as exc:
+        raise ModelError(f"{prefix}is invalid: {exc}", name, cylinder) from None
+    if sign == "positive" and value <= 0 or sign == "non-negative" and value < 0:
+        need = "greater than zero" if sign == "positive" else "zero or more"
+        raise ModelError(f"{prefix}must be {need}, got {value!r}", name, cylinder)
+
+
+def _angle(value, parameter, cylinder=None):
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
+            or abs(value) > 2 * math.pi + 1e-12:
+        where = f"cylinder {cylinder}: {parameter} " if cylinder is not None else ""
+        raise ModelError(f"{where}must be a finite angle between -2π and 2π rad, got {value!r}",
+                         None if where else parameter, cylinder)
+
+
+def _check(engine):
+    """Every rule an engine must satisfy, whether built in code or read from a file."""
+    if not isinstance(engine.name, str) or not engine.name.strip() or not engine.name.isprintable():
+        raise ModelError(f"must be a non-empty line of printable text, got {engine.name!r}", "name")
+    if engine.cycle not in (2, 4) or isinstance(engine.cycle, bool):
+        raise ModelError(f"must be 2 or 4 (strokes per cycle), got {engine.cycle!r}", "cycle")
+    if engine.frame not in FRAMES:
+        raise ModelError(f'must be "fixed" or "rotary", got {engine.frame!r}', "frame")
+    _quantity(engine.speed_rad_s, "angular speed", "speed_rad_s")
+    _quantity(engine.crank_radius_m, "length", "crank_radius_m")
+    _quantity(engine.rod_length_m, "length", "rod_length_m")
+    _quantity(engine.pin_offset_m, "length", "pin_offset_m", sign="any")
+    _quantity(engine.rotating_kg, "mass", "rotating_kg", sign="non-negative")
+    _quantity(engine.crank_kg, "mass", "crank_kg", sign="non-negative")
+    if engine.rod_length_m <= engine.crank_radius_m + abs(engine.pin_offset_m):
+        raise ModelError(
+            f"of {engine.rod_length_m:g} m is not longer than the crank radius plus |pin offset| "
+            f"({engine.crank_radius_m:g} m + {abs(engine.pin_offset_m):g} m), so the rod cannot "
+            "reach the cylinder axis; make it longer or the crank shorter", "rod_length_m")
+    if not engine.bank_angles_rad:
+        raise ModelError("needs at least one cylinder-axis direction", "bank_angles_rad")
+    for angle in engine.bank_angles_rad:
+        _angle(angle, "bank_angles_rad")
+    if not engine.throws:
+        raise ModelError("needs at least one crank throw", "throws")
+    for throw in engine.throws:
+        _angle(throw.phase_rad, "throws")
+        _quantity(throw.z_m, "length", "throws", sign="any")
+    if not engine.cylinders:
+        raise ModelError("needs at least one cylinder", "cylinders")
+    numbers = [c.number for c in engine.cylinders]
+    if len(set(numbers)) != len(numbers):
+        twice = next(n for n in numbers if numbers.count(n) > 1)
+        raise ModelError(f"cylinder {twice} is listed twice; give each a unique number",
+                         cylinder=twice)
+    bores = {}
+    for c in engine.cylinders:
+        _check_cylinder(engine, c)
+        bore = (c.bank, c.throw, round(c.z_m / SAME_POSITION_M))
+        if bore in bores:
+            raise ModelError(
+                f"cylinder {c.number} sits in the bore of cylinder {bores[bore]} (bank {c.bank + 1}, "
+                f"throw {c.throw + 1}, same z); give it another bank, throw or axial position",
+                cylinder=c.number)
+        bores[bore] = c.number
+    if engine.firing_order is not None:
+        order = list(engine.firing_order)
+        if sorted(order) != sorted(numbers) or not all(isinstance(n, int) for n in order):
+            raise ModelError(f"{order} is not a permutation of the cylinder numbers "
+                             f"{sorted(numbers)}; list every cylinder exactly once", "firing_order")
+
+
+def _check_cylinder(engine, c):
+    n = c.number
+    if isinstance(n, bool) or not isinstance(n, int) or n < 1:
+        raise ModelError(f"cylinder numbers are whole numbers from 1, got {n!r}", "cylinders")
+    if not 0 <= c.bank < len(engine.bank_angles_rad):
+        raise ModelError(f"cylinder {n}: bank index {c.bank} is not one of the engine's "
+                         f"{len(engine.bank_angles_rad)} banks", cylinder=n)
+    if not 0 <= c.throw < len(engine.throws):
+        raise ModelError(f"cylinder {n}: throw index {c.throw} is not one of the engine's "
+                         f"{len(engine.throws)} throws", cylinder=n)
+    _quantity(c.z_m, "length", "z_m", sign="any", cylinder=n)
+    _quantity(c.reciprocating_kg, "mass", "reciprocating_kg", cylinder=n)
+    if not c.is_link:
+        return
+    master = engine._by_number.get(c.master)
+    if master is None or master is c:
+        raise ModelError(f"cylinder {n}: its master {c.master} is not another cylinder; give the "
+                         "number of the master-rod cylinder", cylinder=n)
+    if master.is_link:
+        raise ModelError(f"cylinder {n}: cylinder {c.master} has a link rod itself; a link rod "
+                         "must ride on a master rod", cylinder=n)
+    if master.throw != c.throw:
+        raise ModelError(f"cylinder {n}: its master, cylinder {c.master}, is on throw "
+                         f"{master.throw + 1} but this one on throw {c.throw + 1}; a link rod rides "
+                         "on the master rod of its own throw", cylinder=n)
+    _quantity(c.link_length_m, "length", "link_length_m", cylinder=n)
+    _quantity(c.knuckle_radius_m, "length", "knuckle_radius_m", cylinder=n)
+    _angle(c.knuckle_angle_rad, "knuckle_angle_rad", cylinder=n)
+    _quantity(c.knuckle_kg, "mass", "knuckle_kg", sign="non-negative", cylinder=n)

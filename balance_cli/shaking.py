@@ -5,14 +5,63 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .harmonics import check_sampling, forward_backward, fourier, synthesize
-from .kinematics import engine_angles, mass_positions
+from .errors import AnalysisError
+from .harmonics import check_sampling, forward_backward, fourier, orders_of, synthesize
+from .kinematics import MassSet, engine_angles, mass_positions
+from .tolerances import minimum_samples
+from .units import wrap_degrees
 
-__all__ = ["OrderComponents", "Shaking", "shaking", "ellipse", "cylinder_phasors",
-           "mean_cylinder_z", "per_mass_force_coefficients"]
+__all__ = ["DEFAULT_SAMPLES", "DEFAULT_MAX_ORDER", "MAX_SAMPLES", "OrderComponents", "Shaking",
+           "shaking_forces", "ellipse", "check_settings"]
 
 DEFAULT_SAMPLES = 256
 DEFAULT_MAX_ORDER = 8
+#: more samples than this cost memory for nothing: 256 already resolve orders to rounding
+MAX_SAMPLES = 1 << 16
+
+
+def check_settings(samples, max_order):
+    """Raise AnalysisError unless ``samples`` and ``max_order`` are whole numbers that work
+    together: max_order ≥ 1, and samples from 4·max_order + 1 to MAX_SAMPLES."""
+    for name, value in (("max_order", max_order), ("samples", samples)):
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+            raise AnalysisError(f"must be a whole number, got {value!r}", name)
+    if max_order < 1:
+        raise AnalysisError(f"must be at least 1, got {max_order}", "max_order")
+    low = minimum_samples(max_order)
+    if not low <= samples <= MAX_SAMPLES:
+        raise AnalysisError(f"must be from {low} to {MAX_SAMPLES} for orders up to {max_order} "
+                            f"(more than four a revolution per order), got {samples}", "samples")
+
+
+def ellipse(forward, backward):
+    """Largest and smallest magnitude over a revolution, and the major-axis angle (rad, [0, π))."""
+    a, b = abs(forward), abs(backward)
+    if a == 0.0 and b == 0.0:
+        axis = 0.0
+    else:
+        # both phasors line up where kθ + arg X⁺ = −kθ + arg X⁻
+        axis = (math.atan2(forward.imag, forward.real) + math.atan2(backward.imag, backward.real)) / 2
+        axis = math.radians(wrap_degrees(math.degrees(axis), 180.0))
+    return a + b, abs(a - b), axis
+
+
+def _phase_deg(phasor):
+    """Angle of a phasor from the reference axis, positive with rotation, in [0, 360)."""
+    return wrap_degrees(math.degrees(math.atan2(phasor.imag, phasor.real))) if phasor else 0.0
+
+
+def _part_values(forward, backward, floor, unit):
+    """One quantity's entry of an order: magnitudes, phases and ellipse, noise as exact zeros."""
+    clean = lambda z: z if abs(z) >= floor else 0j  # noqa: E731
+    forward, backward = clean(forward), clean(backward)
+    largest, smallest, axis = ellipse(forward, backward)
+    return {
+        f"forward_{unit}": abs(forward), "forward_deg": _phase_deg(forward),
+        f"backward_{unit}": abs(backward), "backward_deg": _phase_deg(backward),
+        f"max_{unit}": largest, f"min_{unit}": smallest if smallest >= floor else 0.0,
+        "axis_deg": math.degrees(axis),
+    }
 
 
 @dataclass(frozen=True)
@@ -28,17 +77,18 @@ class OrderComponents:
     moment_forward: complex
     moment_backward: complex
 
+    def to_dict(self, noise_floor_n=0.0) -> dict:
+        """The order as ``compare --format json`` writes it (SI). Parts below
+        ``noise_floor_n`` (N, or N·m for moments) are rounding noise: exact zeros, phase 0."""
+        return {"order": self.order,
+                "force": _part_values(self.force_forward, self.force_backward, noise_floor_n, "N"),
+                "moment": _part_values(self.moment_forward, self.moment_backward, noise_floor_n,
+                                       "Nm")}
 
-def ellipse(forward, backward):
-    """Largest and smallest magnitude over a revolution, and the major-axis angle (rad, mod π)."""
-    a, b = abs(forward), abs(backward)
-    if a == 0.0 and b == 0.0:
-        axis = 0.0
-    else:
-        # both phasors line up where kθ + arg X⁺ = −kθ + arg X⁻
-        axis = (math.atan2(forward.imag, forward.real) + math.atan2(backward.imag, backward.real)) / 2
-        axis %= math.pi
-    return a + b, abs(a - b), axis
+    def is_zero(self, noise_floor_n) -> bool:
+        """Neither force nor moment above the noise floor."""
+        return max(abs(self.force_forward), abs(self.force_backward), abs(self.moment_forward),
+                   abs(self.moment_backward)) < noise_floor_n
 
 
 @dataclass(frozen=True)
@@ -53,12 +103,28 @@ class Shaking:
         all Fourier coefficients of the resultant force (N) and free moment (N·m)
     sampling_ok : bool
         False when the highest orders still carried energy (a SamplingWarning was issued)
+    mass_coefficients : ndarray, complex, shape (n_masses, N), or None
+        each point mass's share of ``force_coefficients`` (None once a balancer is added)
+    masses : MassSet or None
+        the point masses those shares belong to
     """
 
     orders: tuple
     force_coefficients: np.ndarray
     moment_coefficients: np.ndarray
     sampling_ok: bool
+    mass_coefficients: np.ndarray | None = None
+    masses: MassSet | None = None
+
+    @property
+    def max_order(self) -> int:
+        return len(self.orders)
+
+    def order(self, k) -> OrderComponents:
+        """Order ``k`` (1-based); KeyError outside 1..max_order."""
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 1 <= k <= self.max_order:
+            raise KeyError(f"order {k!r} is not among the orders analysed (1 to {self.max_order})")
+        return self.orders[k - 1]
 
     def force(self, upsample=1, skip_forward_first=False):
         """The resultant force over one revolution (all orders), N, on a grid N·upsample."""
@@ -67,7 +133,7 @@ class Shaking:
             c[1] = 0.0
         return synthesize(c, upsample)
 
-    def largest_force(self, skip_forward_first=False):
+    def largest_force(self, skip_forward_first=False) -> float:
         """Largest magnitude of the resultant force over a revolution, N."""
         return float(np.abs(self.force(16, skip_forward_first)).max())
 
@@ -76,7 +142,7 @@ class Shaking:
         the reference axis); one order only if ``order`` is given."""
         theta = 2 * np.pi * np.arange(points) / points
         if order is not None:
-            o = self.orders[order - 1]
+            o = self.order(order)
             forward = 0j if (skip_forward_first and order == 1) else o.force_forward
             return forward * np.exp(1j * order * theta) + o.force_backward * np.exp(-1j * order * theta)
         n = self.force_coefficients.shape[-1]
@@ -84,8 +150,25 @@ class Shaking:
             raise ValueError(f"points must be a multiple of the {n} samples")
         return self.force(points // n, skip_forward_first)
 
+    def cylinder_phasors(self, order):
+        """Each cylinder's share of order ``order``: [(label, forward N, backward N)], the
+        crank-pin masses together as "pins"; they add up to the engine's phasors (the star)."""
+        if self.mass_coefficients is None:
+            raise ValueError("this Shaking has no per-mass shares (a balancer was added)")
+        self.order(order)
+        shares = []
+        numbers = list(dict.fromkeys(int(n) for n in self.masses.cylinder if n > 0))
+        for number in numbers + ["pins"]:
+            mine = self.masses.cylinder <= 0 if number == "pins" else self.masses.cylinder == number
+            if number == "pins" and not mine.any():
+                continue
+            shares.append((str(number), complex(self.mass_coefficients[mine, order].sum()),
+                           complex(self.mass_coefficients[mine, -order].sum())))
+        return shares
+
     @classmethod
-    def from_coefficients(cls, force, moment, max_order, sampling_ok=True):
+    def from_coefficients(cls, force, moment, max_order, sampling_ok=True, mass_coefficients=None,
+                          masses=None):
         """Orders 1..max_order read off full coefficient arrays (N, N·m)."""
         orders = np.arange(1, max_order + 1)
         ff, fb = forward_backward(force, orders)
@@ -94,7 +177,7 @@ class Shaking:
             OrderComponents(int(k), complex(ff[i]), complex(fb[i]), complex(mf[i]), complex(mb[i]))
             for i, k in enumerate(orders)
         )
-        return cls(table, force, moment, sampling_ok)
+        return cls(table, force, moment, sampling_ok, mass_coefficients, masses)
 
     def plus(self, order, forward=0j, backward=0j, forward_moment=0j, backward_moment=0j):
         """A copy with phasors added to ``order`` (N, N·m): a balancer's contribution."""
@@ -103,55 +186,28 @@ class Shaking:
         force[-order] += backward
         moment[order] += forward_moment
         moment[-order] += backward_moment
-        return Shaking.from_coefficients(force, moment, len(self.orders), self.sampling_ok)
+        return Shaking.from_coefficients(force, moment, self.max_order, self.sampling_ok)
 
 
-def mean_cylinder_z(engine):
-    """z̄, the axial position free moments are taken about: the cylinders' mean, m."""
-    return float(np.mean([c.z_m for c in engine.cylinders]))
-
-
-def _inertia_coefficients(weighted_positions, speed_rad_s):
-    """Coefficients of −Σ m·a from coefficients of Σ m·x: multiply by (kω)²."""
-    coefficients = fourier(weighted_positions)
-    n = coefficients.shape[-1]
-    k = np.fft.fftfreq(n, 1.0 / n)
-    return coefficients * (k * speed_rad_s) ** 2
-
-
-def shaking(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER):
+def shaking_forces(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER) -> Shaking:
     """Resultant shaking force and free moment of ``engine``, order by order.
 
     The force is the sum of the inertia forces −m·a of every point mass; the moment is
     Σ (z − z̄)·(−m·a), z̄ the mean axial position of the cylinders.
+
+    Raises
+    ------
+    AnalysisError
+        ``samples`` or ``max_order`` out of range (see :func:`check_settings`)
+    ModelError
+        a linkage that cannot be assembled
     """
-    if max_order >= samples // 4:
-        raise ValueError(
-            f"--max-order {max_order} needs more than {4 * max_order} samples; raise --samples"
-        )
-    per_mass, masses = per_mass_force_coefficients(engine, samples)
-    force = per_mass.sum(axis=0)
-    moment = ((masses.z_m - mean_cylinder_z(engine))[:, None] * per_mass).sum(axis=0)
-    ok = check_sampling(per_mass, max_order, f"{engine.name}: ")
-    return Shaking.from_coefficients(force, moment, max_order, ok)
-
-
-def cylinder_phasors(engine, order, samples=DEFAULT_SAMPLES):
-    """Each cylinder's share of order ``order``: [(label, forward N, backward N)], the crank-pin
-    masses together as "pins"; they add up to the engine's phasors (the star diagram)."""
-    coefficients, masses = per_mass_force_coefficients(engine, samples)
-    shares = []
-    for number in [c.number for c in engine.cylinders] + ["pins"]:
-        mine = masses.cylinder <= 0 if number == "pins" else masses.cylinder == number
-        if number == "pins" and not mine.any():
-            continue
-        shares.append((str(number), complex(coefficients[mine, order].sum()),
-                       complex(coefficients[mine, -order].sum())))
-    return shares
-
-
-def per_mass_force_coefficients(engine, samples=DEFAULT_SAMPLES):
-    """Fourier coefficients of each point mass's inertia force, N, and the mass set."""
+    check_settings(samples, max_order)
     masses = mass_positions(engine, engine_angles(samples))
-    weights = masses.masses_kg[:, None] * masses.positions
-    return _inertia_coefficients(weights, engine.speed_rad_s), masses
+    positions = fourier(masses.masses_kg[:, None] * masses.positions)
+    # the inertia force −m·a has the coefficients of m·x times (kω)²
+    per_mass = positions * (orders_of(samples) * engine.speed_rad_s) ** 2
+    force = per_mass.sum(axis=0)
+    moment = ((masses.z_m - engine.mean_z_m)[:, None] * per_mass).sum(axis=0)
+    ok = check_sampling(positions, max_order, f"{engine.name}: ")
+    return Shaking.from_coefficients(force, moment, max_order, ok, per_mass, masses)

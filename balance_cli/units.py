@@ -1,14 +1,22 @@
-"""Quantities with units at the edges of the program; SI inside.
+"""Quantities with units at the edges of the program; SI and radians inside.
 
-A configuration value such as ``"82.5 mm"`` or ``"1650 rpm"`` is parsed once, here,
-into SI (metres, kilograms, radians per second). Nothing else in the package knows
-about millimetres, grams or revolutions per minute.
+A configuration value such as ``"82.5 mm"`` or ``"1650 rpm"`` is parsed once, here, into SI
+(metres, kilograms, radians per second), and reports turn SI back into display units here.
+Nothing else in the package knows about millimetres, grams, kilogram-force or revolutions per
+minute. Angles in degrees are normalised here too, once for the whole package.
 """
 
 import math
 import re
 
-__all__ = ["UnitError", "parse_quantity", "DIMENSIONS", "STANDARD_GRAVITY", "rad_s_to_rpm"]
+from .errors import UnitError
+from .tolerances import ANGLE_TOLERANCE_DEG
+
+__all__ = [
+    "DIMENSIONS", "LIMITS", "STANDARD_GRAVITY", "parse_quantity", "check_finite_range",
+    "rad_s_to_rpm", "rpm_to_rad_s", "m_to_mm", "kg_to_g", "n_to_kgf", "wrap_degrees",
+    "round_degrees",
+]
 
 #: m/s², the conventional value used to turn kilogram-force into newtons
 STANDARD_GRAVITY = 9.80665
@@ -22,11 +30,17 @@ DIMENSIONS = {
     "angular speed": {"rpm": _RPM, "rev/min": _RPM, "rad/s": 1.0, "rps": 2.0 * math.pi},
 }
 
+#: smallest and largest magnitude (SI) of a non-zero value, per dimension, with the unit the
+#: limits are shown in. Wide enough for a watch and a ship; narrow enough that m·r·ω² and its
+#: moments stay far from overflow (1e22) and underflow (1e-20) in double precision.
+LIMITS = {
+    "length": (1e-6, 1e3, "mm", 1e-3),
+    "mass": (1e-6, 1e6, "kg", 1.0),
+    "angular speed": (1e-3 * _RPM, 1e6 * _RPM, "rpm", _RPM),
+}
+
 _QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([A-Za-z/]+)\s*$")
-
-
-class UnitError(ValueError):
-    """A value whose unit is missing, unknown or of the wrong dimension."""
+_EXAMPLES = {"length": "82.5 mm", "mass": "1770.4 g", "angular speed": "1650 rpm"}
 
 
 def _units_of(dimension):
@@ -46,33 +60,80 @@ def parse_quantity(text, dimension):
     Returns
     -------
     float
-        the value in SI (m, kg or rad/s)
+        the value in SI (m, kg or rad/s): finite, and zero or within :data:`LIMITS`
+
+    Raises
+    ------
+    UnitError
+        a missing, unknown or wrong unit, or a number out of range
     """
+    example = _EXAMPLES[dimension]
     if isinstance(text, bool) or not isinstance(text, str):
-        raise UnitError(
-            f'expected a string with a unit such as "{_example(dimension)}", got {text!r}'
-        )
+        raise UnitError(f'expected a string with a unit such as "{example}", got {text!r}')
     match = _QUANTITY.match(text)
     if not match:
-        raise UnitError(
-            f'cannot read {text!r}: write a number and a unit, such as "{_example(dimension)}"'
-        )
+        raise UnitError(f'cannot read {text!r}: write a number and a unit, such as "{example}"')
     number, unit = float(match.group(1)), match.group(2)
     factors = DIMENSIONS[dimension]
-    if unit in factors:
-        return number * factors[unit]
-    for other, table in DIMENSIONS.items():
-        if unit in table:
-            raise UnitError(
-                f"{text!r} is a {other}, but a {dimension} is needed (units: {_units_of(dimension)})"
-            )
-    raise UnitError(f"unknown unit {unit!r} in {text!r} (units: {_units_of(dimension)})")
+    if unit not in factors:
+        for other, table in DIMENSIONS.items():
+            if unit in table:
+                raise UnitError(f"{text!r} is a {other}, but a {dimension} is needed "
+                                f"(units: {_units_of(dimension)})")
+        raise UnitError(f"unknown unit {unit!r} in {text!r} (units: {_units_of(dimension)})")
+    value = number * factors[unit]
+    check_finite_range(value, dimension, shown=repr(text))
+    return value
 
 
-def _example(dimension):
-    return {"length": "82.5 mm", "mass": "1770.4 g", "angular speed": "1650 rpm"}[dimension]
+def check_finite_range(value, dimension, shown=None, smallest=True):
+    """Raise UnitError unless ``value`` (SI) is finite and zero or within :data:`LIMITS`
+    (with ``smallest`` False, any magnitude up to the largest)."""
+    low, high, unit, factor = LIMITS[dimension]
+    low = low if smallest else 0.0
+    shown = shown or f"{value!r}"
+    if not math.isfinite(value):
+        raise UnitError(f'{shown} is not a finite number; give a value such as "{_EXAMPLES[dimension]}"')
+    if value and not low <= abs(value) <= high:
+        raise UnitError(f"{shown} is outside the {dimension}s balance accepts: "
+                        f"{low / factor:g} to {high / factor:g} {unit}")
 
 
 def rad_s_to_rpm(speed_rad_s):
     """Angular speed, rad/s -> rev/min."""
     return speed_rad_s / _RPM
+
+
+def rpm_to_rad_s(speed_rpm):
+    """Angular speed, rev/min -> rad/s."""
+    return speed_rpm * _RPM
+
+
+def m_to_mm(length_m):
+    return length_m * 1e3
+
+
+def kg_to_g(mass_kg):
+    return mass_kg * 1e3
+
+
+def n_to_kgf(force_n):
+    """Newtons (or N·m) -> kilogram-force (or kgf·m), with standard gravity."""
+    return force_n / STANDARD_GRAVITY
+
+
+def wrap_degrees(angle_deg, period=360.0, tolerance=None):
+    """``angle_deg`` in [0, ``period``): the one normalisation of angles in balance.
+
+    An angle within ``tolerance`` (default ``ANGLE_TOLERANCE_DEG``)
+    below a full period is rounding noise of 0 and comes out as exactly 0.
+    """
+    tolerance = ANGLE_TOLERANCE_DEG if tolerance is None else tolerance
+    wrapped = float(angle_deg) % period
+    return 0.0 if wrapped >= period - tolerance else wrapped
+
+
+def round_degrees(angle_deg, digits, period=360.0):
+    """``angle_deg`` rounded for display and kept in [0, ``period``): 359.996 shown with two
+    digits is 0.00, not 360.00."""
+    return wrap_degrees(round(angle_deg, digits), period, tolerance=0.5 * 10.0**-digits)

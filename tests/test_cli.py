@@ -213,13 +213,15 @@ def test_reference_by_prefix_changes_the_percentages():
 
 def test_max_order_needs_enough_samples():
     result = run("compare", PART3, "--samples", "32", "--max-order", "8")
-    assert result.exit_code != 0 and "--samples above 32" in result.output
+    assert result.exit_code == 1
+    assert "--samples must be from 33 to 65536 for orders up to 8" in result.output
+    assert run("compare", PART3, "--samples", "33", "--max-order", "8").exit_code == 0
 
 
 def test_coarse_sampling_is_reported():
     result = run("compare", CONFIGS / "inline-4-marine.toml", "--samples", "16", "--max-order", "3")
     assert result.exit_code == 0
-    assert "samples are too few" in result.output
+    assert "16 samples a revolution are too few for orders up to 3" in result.output
 
 
 def test_list_and_show():

@@ -7,7 +7,8 @@ import pytest
 from numpy.testing import assert_allclose
 
 from balance_cli import load
-from balance_cli.firing import FiringError, firing, tdc_angles
+from balance_cli.errors import FiringError, ModelError
+from balance_cli.firing import firing_sequence as firing, tdc_angles
 from balance_cli.model import Cylinder, Engine, Throw
 from conftest import CONFIGS, make_engine
 
@@ -51,9 +52,10 @@ def test_order_that_does_not_fit_the_crank_is_refused():
         firing(make_engine([0], INLINE4, firing_order=(1, 4, 2, 3)))
 
 
-def test_order_that_is_not_a_permutation_is_refused():
-    with pytest.raises(FiringError, match="not a permutation"):
-        firing(make_engine([0], INLINE4, firing_order=(1, 3, 3, 2)))
+def test_order_that_is_not_a_permutation_is_refused_when_the_engine_is_built():
+    with pytest.raises(ModelError, match="not a permutation") as caught:
+        make_engine([0], INLINE4, firing_order=(1, 3, 3, 2))
+    assert caught.value.parameter == "firing_order"
 
 
 def test_most_uniform_order_of_a_nine_cylinder_radial_skips_every_other_cylinder():

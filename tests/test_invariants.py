@@ -12,7 +12,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from balance_cli.kinematics import check_assembly, mass_positions
-from balance_cli.shaking import shaking
+from balance_cli.shaking import shaking_forces as shaking
 from conftest import make_engine
 
 SAMPLES = 256

@@ -24,13 +24,10 @@ FIRING_DEG = 1e-4
 def current():
     """The comparison document of every configuration in configs/, as balance writes it."""
     sys.path.insert(0, str(ROOT))
-    from balance_cli.compare import analyse
-    from balance_cli.config import find_configs, load
-    from balance_cli.report.document import compare_document
+    import balance_cli as balance
 
-    files = find_configs([ROOT / "configs"])
-    results = [analyse(load(f), SAMPLES, MAX_ORDER) for f in files]
-    document = compare_document(results, 0, SAMPLES, MAX_ORDER)
+    engines = balance.load_many([ROOT / "configs"])
+    document = balance.compare([balance.analyse(e, SAMPLES, MAX_ORDER) for e in engines]).to_dict()
     for engine in document["engines"]:
         engine["config"] = str(Path(engine["config"]).relative_to(ROOT))
     return document
@@ -77,7 +74,9 @@ def _walk(path, a, b, scale):
             tolerance = FIRING_DEG
         else:
             tolerance = PHASE_DEG if path.endswith("_deg") else RELATIVE * scale
-        if path.endswith("_deg") and abs((b - a + 180) % 360 - 180) <= tolerance:
+        # angles compare round their period: an ellipse's axis is defined modulo 180°
+        period = 180.0 if path.endswith("axis_deg") else 360.0
+        if path.endswith("_deg") and abs((b - a + period / 2) % period - period / 2) <= tolerance:
             return []
         if abs(b - a) > tolerance:
             return [f"{path}: {a!r} -> {b!r} ({b - a:+.3g})"]

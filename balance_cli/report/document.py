@@ -1,102 +1,57 @@
-"""The JSON document of ``balance compare``: a contract other programs read (see README)."""
+"""The comparison report's content, as blocks any renderer (Markdown, HTML) can write.
 
-import json
+Blocks: ``("h", level, text)``, ``("p", text)`` (backticks mark code), ``("table", headers,
+rows)`` (rows of text; user text is made safe by the renderer), ``("figure", file, title,
+caption)``.
+"""
 
+from .. import __version__
 from ..units import rad_s_to_rpm
-from .values import order_values
+from .display import Scale
+from .tables import balance_summary, compare_parts
 
-__all__ = ["compare_document", "balance_document", "to_json"]
+__all__ = ["PICTURES", "blocks"]
 
-
-def engine_document(result, reference):
-    """One engine's entry: identification, firing, largest resultant and every order."""
-    engine = result.engine
-    firing = result.firing
-    return {
-        "name": engine.name,
-        "config": engine.config_path,
-        "source": engine.source,
-        "cylinders": engine.n_cylinders,
-        "cycle": engine.cycle,
-        "frame": engine.frame,
-        "speed_rpm": rad_s_to_rpm(engine.speed_rad_s),
-        "unit_force_N": engine.unit_force_n,
-        "firing": {
-            "order": list(firing.order),
-            "angles_deg": list(firing.angles_deg),
-            "intervals_deg": list(firing.intervals_deg),
-            "uniform": firing.uniform,
-            "max_deviation_deg": firing.max_deviation_deg,
-            "given": firing.given,
-        },
-        "largest_resultant_N": result.largest_force_n,
-        "counterweighted_resultant_N": result.counterweighted_force_n,
-        "counterweighted_resultant_per_cylinder": result.counterweighted_per_cylinder,
-        "percent_of_reference": result.percent_of(reference),
-        "sampling_ok": result.shaking.sampling_ok,
-        "orders": [
-            {"order": o.order, **order_values(o, result.per_cylinder_unit_n)} for o in result.shaking.orders
-        ],
-    }
+#: (file, kind, title, caption) of each picture, in the order they appear
+PICTURES = [
+    ("locus.svg", "locus", "Locus of the resultant force per cylinder",
+     "All orders, after an ideal crankshaft counterweight (none on a rotary), in units of "
+     "m_rec·r·ω² per cylinder; horizontal across the reference axis, vertical along it "
+     "(Tanaka 1925, Fig. 9)."),
+    ("spectrum.svg", "spectrum", "Spectrum of orders",
+     "Forward (solid) and backward (hatched) parts of each order, forces per cylinder and free "
+     "moments, on a log axis with a floor."),
+    ("star.svg", "star", "Star of order {star}",
+     "Each cylinder's forward and backward phasor of order {star} at θ = 0, chained tip to tail; "
+     "the dashed line is the engine's resultant."),
+    ("firing.svg", "firing", "Firing", "Firing angles over one working cycle, intervals in red."),
+]
 
 
-def compare_document(results, reference_index, samples, max_order):
-    reference = results[reference_index]
-    return {
-        "balance_version": 1,
-        "samples": samples,
-        "max_order": max_order,
-        "reference": reference.engine.name,
-        "engines": [engine_document(r, reference) for r in results],
-    }
-
-
-def to_json(document):
-    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
-
-
-def _orders(shaking, unit_n):
-    return [{"order": o.order, **order_values(o, unit_n)} for o in shaking.orders]
-
-
-def balance_document(results, samples, max_order):
-    """JSON of ``balance counterweight``: see the README for every key."""
-    engines = []
-    for r in results:
-        engine = r.engine
-        unit = engine.unit_force_n * engine.n_cylinders
-        entry = {
-            "name": engine.name,
-            "config": engine.config_path,
-            "cylinders": engine.n_cylinders,
-            "frame": engine.frame,
-            "speed_rpm": rad_s_to_rpm(engine.speed_rad_s),
-            "unit_force_N": engine.unit_force_n,
-            "balance_factor": r.balance_factor,
-            "counterweights": [
-                {"z_m": c.plane.z_m, "throw": c.plane.throw, "mass_kg": c.mass_kg,
-                 "radius_m": c.radius_m, "angle_deg": c.angle_deg}
-                for c in r.counterweights
-            ],
-            "antivibrateur": None if r.antivibrateur is None else {
-                "mass_eccentricity_kgm": r.antivibrateur.mass_eccentricity_kgm,
-                "eccentricity_m": r.antivibrateur.eccentricity_m,
-                "mass_kg": r.antivibrateur.mass_kg,
-                "phase_deg": r.antivibrateur.phase_deg,
-            },
-            "residual": {"largest_resultant_N": r.residual.largest_force(),
-                         "orders": _orders(r.residual, unit)},
-        }
-        if r.after_shafts is not None:
-            entry["shafts"] = [
-                {"order": s.order, "speed_ratio": s.speed_ratio,
-                 "mass_eccentricity_kgm": s.mass_eccentricity_kgm, "phase_deg": s.phase_deg,
-                 "z_m": s.z_m}
-                for s in r.shafts
-            ]
-            entry["after_shafts"] = {"largest_resultant_N": r.after_shafts.largest_force(),
-                                     "orders": _orders(r.after_shafts, unit)}
-        if r.test_masses_kg is not None:
-            entry["test_masses_kg"] = list(r.test_masses_kg)
-        engines.append(entry)
-    return {"balance_version": 1, "samples": samples, "max_order": max_order, "engines": engines}
+def blocks(comparison, balances, star_order):
+    """The report: engines, comparison tables, counterweights, pictures."""
+    results = comparison.results
+    out = [("h", 1, "Balance report"),
+           ("p", f"Generated by balance {__version__}: {len(results)} engines, "
+                 f"{comparison.samples} samples a revolution. Conventions, units and the method "
+                 "are in the README.")]
+    out.append(("h", 2, "Engines"))
+    out.append(("table", ["Engine", "Config", "Cyl", "Cycle", "Frame", "Speed (rpm)", "Source"],
+                [[r.engine.name, r.engine.config_path, str(r.engine.n_cylinders),
+                  str(r.engine.cycle), r.engine.frame, f"{rad_s_to_rpm(r.engine.speed_rad_s):g}",
+                  r.engine.source] for r in results]))
+    out.append(("h", 2, "Comparison"))
+    for title, headers, rows, note in compare_parts(comparison, Scale()):
+        out += [("h", 3, title), ("table", headers, rows)]
+        if note:
+            out.append(("p", note))
+    out.append(("h", 2, "Counterweights"))
+    out.append(("p", "Counterweights at crank radius cancelling the forward first order, in the "
+                     "first and last throws' planes (`balance counterweight` for other choices), "
+                     "and what is left."))
+    headers, rows = balance_summary(balances)
+    out.append(("table", headers, rows))
+    out.append(("h", 2, "Pictures"))
+    for file, _, title, caption in PICTURES:
+        out.append(("figure", file, title.format(star=star_order), caption.format(star=star_order)))
+    return out

@@ -235,7 +235,7 @@ def _link_first_harmonic(record):
     master = engine.cylinder(1)
     link = next(c for c in engine.cylinders if c.is_link)
     probe = dataclasses.replace(
-        engine, bank_angles_rad=(0.0, phi), throws=engine.throws[:1],
+        engine, bank_angles_rad=(0.0, phi), throws=engine.throws[:1], firing_order=None,
         cylinders=(dataclasses.replace(master, bank=0),
                    dataclasses.replace(link, number=2, bank=1, master=1, knuckle_angle_rad=phi,
                                        **({"knuckle_radius_m": record["knuckle_radius_mm"] / 1000}

@@ -1,0 +1,93 @@
+"""Every error and warning balance raises, under one base a caller can catch.
+
+Library errors name the library's own parameters (``radius_m must be greater than zero``);
+front ends put their own names in place of them: the configuration reader its keys, the
+command line its flags. An error that concerns one parameter keeps it in ``parameter`` and the
+rest of the sentence in ``problem``, so a front end can say ``--radius must be greater than
+zero`` without parsing the message.
+"""
+
+__all__ = [
+    "BalanceError", "UnitError", "ConfigError", "ModelError", "FiringError", "AnalysisError",
+    "CounterweightError", "PlotError", "OutputError", "SamplingWarning",
+]
+
+
+class BalanceError(Exception):
+    """Base of every error balance raises.
+
+    Parameters
+    ----------
+    problem : str
+        what is wrong and what to do about it
+    parameter : str, optional
+        the parameter (function argument or model field) the problem is about; when given,
+        the message reads ``"<parameter> <problem>"``
+    """
+
+    def __init__(self, problem, parameter=None):
+        self.problem, self.parameter = problem, parameter
+        super().__init__(f"{parameter} {problem}" if parameter else problem)
+
+    def named(self, names):
+        """The message with ``parameter`` replaced by ``names[parameter]`` where it has one."""
+        if self.parameter and self.parameter in names:
+            return f"{names[self.parameter]} {self.problem}"
+        return str(self)
+
+
+class UnitError(BalanceError, ValueError):
+    """A value whose unit is missing, unknown or of the wrong dimension, or whose number is not
+    finite or outside the range balance accepts."""
+
+
+class ModelError(BalanceError, ValueError):
+    """An engine that cannot exist: a field out of range, a bad reference, two cylinders in one
+    bore, a firing order that is not a permutation, a linkage that cannot be assembled.
+
+    ``cylinder`` is the number of the cylinder concerned, when there is one.
+    """
+
+    def __init__(self, problem, parameter=None, cylinder=None):
+        self.cylinder = cylinder
+        super().__init__(problem, parameter)
+
+
+class ConfigError(BalanceError, ValueError):
+    """A configuration that cannot be read; the message names the file, the key and the fix."""
+
+    def __init__(self, path, key, problem):
+        self.path, self.key = str(path), key
+        where = f"{self.path}: {key}: " if key else f"{self.path}: "
+        super().__init__(problem)
+        self.args = (where + problem,)
+
+    def __str__(self):
+        return self.args[0]
+
+
+class FiringError(BalanceError, ValueError):
+    """A firing order that does not fit the crank."""
+
+
+class AnalysisError(BalanceError, ValueError):
+    """Analysis settings that cannot work (too few samples for the orders asked, say)."""
+
+
+class CounterweightError(BalanceError, ValueError):
+    """A balancing request that cannot be carried out (bad planes, radius, orders)."""
+
+
+class PlotError(BalanceError, ValueError):
+    """A picture that cannot be drawn as asked (no engines, unknown units or file format)."""
+
+
+class OutputError(BalanceError, OSError):
+    """An output that cannot be written; nothing was left behind."""
+
+    def __str__(self):
+        return self.problem
+
+
+class SamplingWarning(UserWarning):
+    """The sampling is too coarse for the orders asked for."""

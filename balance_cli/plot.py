@@ -1,0 +1,318 @@
+"""Pictures of analysed engines (matplotlib).
+
+Each function takes results of :func:`balance_cli.analyse`, draws, and returns the Figure; none
+recomputes an analysis. Give ``ax`` (locus) or ``fig`` (the others) to draw into your own;
+otherwise a new pyplot figure is made, so figures show inline in a notebook. Importing this
+module never chooses a backend: that is the application's business (the command line uses Agg).
+
+Kinds: :func:`locus` (Tanaka's Fig. 9), :func:`spectrum`, :func:`star`, :func:`firing`.
+:func:`save` writes a figure in the format its file name's extension names.
+"""
+
+import math
+import sys
+from pathlib import Path
+
+import matplotlib
+import numpy as np
+
+from .errors import PlotError
+from .output import write_bytes
+from .units import n_to_kgf
+
+__all__ = ["KINDS", "FORMATS", "locus", "spectrum", "star", "firing", "save", "format_of",
+           "grid_size", "locus_points", "spectrum_data", "star_chains", "colours"]
+
+KINDS = ("locus", "spectrum", "star", "firing")
+#: file formats :func:`save` writes (those of matplotlib's that need neither LaTeX nor a viewer
+#: for raw pixels)
+FORMATS = ("png", "svg", "svgz", "pdf", "eps", "ps", "jpg", "jpeg", "tif", "tiff", "webp")
+#: inches per subplot cell of the star and firing grids, and dots per inch of bitmaps
+CELL_IN = 4.0
+DPI = 100
+#: parts below this fraction of the largest m_rec·r·ω²·n are not drawn on the spectrum's log axis
+SPECTRUM_FLOOR = 1e-6
+SPECTRUM_UNITS = ("per-cylinder", "N", "kgf")
+
+
+def _new_figure(size):
+    import matplotlib.pyplot as plt  # only when the caller gives no figure of their own
+
+    return plt.figure(figsize=size, dpi=DPI)
+
+
+def _results(results):
+    results = list(results)
+    if not results:
+        raise PlotError("needs at least one analysed engine", "results")
+    return results
+
+
+def grid_size(count):
+    """Columns and rows of a grid of ``count`` small pictures."""
+    columns = min(3, count)
+    return columns, math.ceil(count / columns)
+
+
+def colours(count):
+    """``count`` distinguishable colours: matplotlib's tab10 or tab20, else a sampled map."""
+    if count <= 10:
+        return [matplotlib.colormaps["tab10"](i) for i in range(count)]
+    if count <= 20:
+        # tab20's dark shades first, then its light ones
+        table = matplotlib.colormaps["tab20"]
+        return [table(2 * i if i < 10 else 2 * (i - 10) + 1) for i in range(count)]
+    return [matplotlib.colormaps["turbo"](x) for x in np.linspace(0.05, 0.95, count)]
+
+
+def locus_points(result, order=None):
+    """Per-cylinder resultant force over a revolution after an ideal crankshaft counterweight
+    (none on a rotary), as x = across, y = along the reference axis (Tanaka's Fig. 9)."""
+    force = result.counterweighted_locus(order) / result.per_cylinder_unit_n
+    return force.imag, force.real
+
+
+def locus(results, order=None, ax=None):
+    """Locus of the resultant shaking force per cylinder over one revolution, every engine on
+    one set of equal-scaled axes; ``order`` draws one order only."""
+    results = _results(results)
+    if ax is None:
+        ax = _new_figure((8, 8)).add_subplot()
+    fig = ax.figure
+    for r, colour in zip(results, colours(len(results))):
+        x, y = locus_points(r, order)
+        ax.plot(np.append(x, x[0]), np.append(y, y[0]), label=r.engine.name, linewidth=1.6,
+                color=colour)
+    ax.axhline(0, color="0.6", linewidth=0.6)
+    ax.axvline(0, color="0.6", linewidth=0.6)
+    ax.set_aspect("equal", adjustable="datalim")
+    what = f"order {order}" if order else "all orders"
+    ax.set_title(f"Locus of the resultant shaking force per cylinder ({what}),\n"
+                 "after an ideal crankshaft counterweight (none on a rotary)")
+    ax.set_xlabel("across the reference axis (× m_rec·r·ω² per cylinder)")
+    ax.set_ylabel("along the reference axis (× m_rec·r·ω² per cylinder)")
+    ax.legend(fontsize=8, loc="upper right")
+    ax.grid(True, linewidth=0.3)
+    return fig
+
+
+def spectrum_data(results, units="per-cylinder"):
+    """What :func:`spectrum` draws: orders, per engine the forward and backward magnitudes of
+    forces and moments in display units, the floors below which nothing is drawn, and labels.
+
+    ``units``: "per-cylinder" (forces × m_rec·r·ω²·n, moments N·m), "N" (N, N·m) or "kgf"
+    (kgf, kgf·m).
+    """
+    if units not in SPECTRUM_UNITS:
+        raise PlotError(f"must be one of {', '.join(SPECTRUM_UNITS)}, got {units!r}", "units")
+    results = _results(results)
+    convert = n_to_kgf if units == "kgf" else (lambda x: x)
+    largest = max(r.per_cylinder_unit_n for r in results)
+    engines = []
+    for r in results:
+        per = r.per_cylinder_unit_n if units == "per-cylinder" else 1.0
+        engines.append({
+            "name": r.engine.name,
+            "force": np.array([[convert(abs(o.force_forward) / per), convert(abs(o.force_backward) / per)]
+                               for o in r.shaking.orders]),
+            "moment": np.array([[convert(abs(o.moment_forward)), convert(abs(o.moment_backward))]
+                                for o in r.shaking.orders]),
+        })
+    force_floor = SPECTRUM_FLOOR * (1.0 if units == "per-cylinder" else convert(largest))
+    moment_floor = SPECTRUM_FLOOR * convert(largest)
+    force_unit = {"per-cylinder": "× m_rec·r·ω² per cylinder", "N": "N", "kgf": "kgf"}[units]
+    return {
+        "orders": np.arange(1, max(r.max_order for r in results) + 1),
+        "engines": engines,
+        "force_floor": force_floor, "moment_floor": moment_floor,
+        "force_label": f"force ({force_unit})",
+        "moment_label": f"free moment ({'kgf·m' if units == 'kgf' else 'N·m'})",
+        "has_moments": any((e["moment"] > moment_floor).any() for e in engines),
+    }
+
+
+def spectrum(results, units="per-cylinder", fig=None):
+    """Forward (solid) and backward (hatched) amplitude of every order: forces, and free
+    moments when any engine has one above the floor; grouped bars on a log axis."""
+    from matplotlib.patches import Patch
+    from matplotlib.ticker import FuncFormatter
+
+    data = spectrum_data(results, units)
+    panels = 2 if data["has_moments"] else 1
+    if fig is None:
+        fig = _new_figure((12, 8 if panels == 2 else 4.5))
+    axes = fig.subplots(panels, 1, sharex=True, squeeze=False)[:, 0]
+    orders = data["orders"]
+    n = len(data["engines"])
+    width = 0.8 / (2 * n)
+    handles = []
+    quantities = [("force", data["force_floor"], data["force_label"])]
+    if panels == 2:
+        quantities.append(("moment", data["moment_floor"], data["moment_label"]))
+    for i, (engine, colour) in enumerate(zip(data["engines"], colours(n))):
+        offset = -0.4 + 2 * i * width
+        for ax, (quantity, floor, _) in zip(axes, quantities):
+            values = engine[quantity]
+            for part, shift, style in ((0, 0.0, {}), (1, width, {"alpha": 0.45, "hatch": "//"})):
+                heights = values[: len(orders), part]
+                shown = heights > floor
+                _bars(ax, orders[: len(heights)][shown] + offset + shift, heights[shown], floor,
+                      width, facecolor=colour, **style)
+        handles.append(Patch(color=colour, label=engine["name"]))
+    handles += [Patch(facecolor="white", edgecolor="black", label="forward (turns with the crank)"),
+                Patch(facecolor="white", edgecolor="black", hatch="//", label="backward (against it)")]
+    for ax, (quantity, floor, label) in zip(axes, quantities):
+        ax.set_yscale("log")
+        top = max((e[quantity].max() for e in data["engines"]), default=floor)
+        ax.set_ylim(floor, max(top, floor) * 3)
+        # plain labels ("1e-06"): mathematical text costs more than drawing all the bars
+        ax.yaxis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
+        ax.set_ylabel(label)
+        ax.set_xlim(0.5, orders[-1] + 0.5)
+        ax.set_xticks(orders)
+        ax.grid(True, axis="y", linewidth=0.3)
+    axes[-1].set_xlabel("order")
+    title = (f"Forward and backward parts by order (parts below {SPECTRUM_FLOOR:g} of "
+             "m_rec·r·ω²·n not drawn)")
+    if panels == 1:
+        title += "\nno engine has a free moment above that floor"
+    axes[0].set_title(title, y=1.0)
+    fig.legend(handles=handles, loc="center right", fontsize=8, frameon=False)
+    fig.subplots_adjust(left=0.07, right=0.72, top=0.93 if panels == 2 else 0.84,
+                        bottom=0.08 if panels == 2 else 0.14, hspace=0.08)
+    return fig
+
+
+def _bars(ax, left, top, bottom, width, **style):
+    """Bars from ``bottom`` up to each ``top``, starting at each ``left``, as one collection
+    (one artist for all: hundreds of separate rectangles are slow to draw)."""
+    from matplotlib.collections import PolyCollection
+
+    if len(left) == 0:
+        return
+    corners = [[(x, bottom), (x + width, bottom), (x + width, y), (x, y)] for x, y in zip(left, top)]
+    ax.add_collection(PolyCollection(corners, linewidth=0, **style), autolim=False)
+
+
+def star_chains(result, order):
+    """For :func:`star`: each part ("forward", "backward") of order ``order`` as a list of
+    (label, tail, head) arrows per cylinder, chained tip to tail, in units of m_rec·r·ω²·n
+    (complex: real along the reference axis); the last head is the engine's resultant."""
+    shares = result.shaking.cylinder_phasors(order)
+    unit = result.per_cylinder_unit_n
+    floor = result.engine.noise_floor_n / unit
+    chains = {}
+    for part, index in (("forward", 1), ("backward", 2)):
+        tip, arrows = 0j, []
+        for share in shares:
+            phasor = share[index] / unit
+            if abs(phasor) < floor:
+                continue
+            arrows.append((share[0], tip, tip + phasor))
+            tip += phasor
+        chains[part] = arrows
+    return chains
+
+
+def star(results, order=2, fig=None):
+    """Each cylinder's forward (blue) and backward (red) phasor of ``order`` at θ = 0, chained
+    tip to tail and labelled by cylinder; the dashed line is the engine's resultant. One small
+    picture per engine."""
+    results = _results(results)
+    columns, rows = grid_size(len(results))
+    if fig is None:
+        fig = _new_figure((CELL_IN * columns, CELL_IN * rows))
+    axes = fig.subplots(rows, columns, squeeze=False)
+    for ax in axes.flat[len(results):]:
+        ax.axis("off")
+    for ax, r in zip(axes.flat, results):
+        chains = star_chains(r, order)
+        for row, (part, colour) in enumerate((("forward", "C0"), ("backward", "C3"))):
+            arrows = chains[part]
+            end = arrows[-1][2] if arrows else 0j
+            if arrows:
+                tails = np.array([a[1] for a in arrows])
+                steps = np.array([a[2] for a in arrows]) - tails
+                ax.quiver(tails.imag, tails.real, steps.imag, steps.real, angles="xy",
+                          scale_units="xy", scale=1, color=colour, width=0.006)
+                for label, tail, head in arrows:
+                    middle = (tail + head) / 2
+                    ax.text(middle.imag, middle.real, label, fontsize=6, color=colour)
+            ax.plot([0, end.imag], [0, end.real], linestyle="--", color=colour, linewidth=1.4)
+            # a text, not a legend: 17 legends cost more to lay out than the rest of the picture
+            ax.text(0.02, 0.98 - 0.06 * row, f"{part}: |Σ| = {abs(end):.4f}", color=colour,
+                    fontsize=7, transform=ax.transAxes, va="top")
+        ax.plot([0], [0], marker="o", color="k", markersize=3)
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.set_title(r.engine.name, fontsize=9, y=1.0)
+        ax.locator_params(nbins=4)
+        ax.tick_params(labelsize=7)
+        ax.grid(True, linewidth=0.3)
+    fig.suptitle(f"Order {order}: each cylinder's forward (blue) and backward (red) phasor at "
+                 "θ = 0, chained; dashed: the resultant\n(× m_rec·r·ω²·n; horizontal across the "
+                 "reference axis, vertical along it)", fontsize=9)
+    fig.subplots_adjust(left=0.06, right=0.97, bottom=0.04, top=1 - 1.1 / (CELL_IN * rows),
+                        wspace=0.3, hspace=0.35)
+    return fig
+
+
+def firing(results, fig=None):
+    """Firing angles on a dial of one working cycle (720° or 360°, clockwise from the top),
+    cylinder numbers outside, intervals in red."""
+    results = _results(results)
+    columns, rows = grid_size(len(results))
+    if fig is None:
+        fig = _new_figure((CELL_IN * columns, CELL_IN * rows))
+    axes = fig.subplots(rows, columns, squeeze=False)
+    for ax in axes.flat:
+        ax.axis("off")
+    ring = np.linspace(0, 2 * np.pi, 181)
+    for ax, r in zip(axes.flat, results):
+        cycle = r.engine.cycle_deg
+        fire = r.firing
+        where = lambda angle, radius: (radius * math.sin(2 * math.pi * angle / cycle),  # noqa: E731
+                                       radius * math.cos(2 * math.pi * angle / cycle))
+        ax.plot(np.sin(ring), np.cos(ring), color="0.7", linewidth=0.6)
+        for tick in np.arange(0, cycle, 90.0):
+            ax.text(*where(tick, 1.32), f"{tick:g}°", ha="center", va="center", fontsize=6,
+                    color="0.5")
+        for angle, number in zip(fire.angles_deg, fire.order):
+            x, y = where(angle, 1.0)
+            ax.plot([0, x], [0, y], color="C0", linewidth=1.2)
+            ax.text(*where(angle, 1.13), str(number), ha="center", va="center", fontsize=8)
+        for angle, gap in zip(fire.angles_deg, fire.intervals_deg):
+            ax.text(*where(angle + gap / 2, 0.65), f"{gap:.4g}°", ha="center", va="center",
+                    fontsize=6, color="C3")
+        ax.set_xlim(-1.45, 1.45)
+        ax.set_ylim(-1.45, 1.45)
+        ax.set_aspect("equal")
+        uniform = "uniform" if fire.uniform else f"±{fire.max_deviation_deg:.2f}° from uniform"
+        ax.set_title(f"{r.engine.name}\n{r.engine.cycle}-stroke, {uniform}", fontsize=9, y=1.0)
+    fig.suptitle("Firing angles over one working cycle (crank degrees from the first firing)",
+                 fontsize=10)
+    fig.subplots_adjust(left=0.02, right=0.98, bottom=0.02, top=1 - 0.8 / (CELL_IN * rows),
+                        wspace=0.1, hspace=0.25)
+    return fig
+
+
+def format_of(path):
+    """The file format :func:`save` writes to ``path``: its extension, one of :data:`FORMATS`."""
+    suffix = Path(path).suffix.lower().lstrip(".")
+    if suffix not in FORMATS:
+        shown = f"'.{suffix}'" if suffix else "no extension"
+        raise PlotError(f"{str(path)!r} has {shown}; end the file name in one of "
+                        f"{', '.join('.' + f for f in FORMATS)}", "path")
+    return suffix
+
+
+def save(fig, path):
+    """Write ``fig`` to ``path`` atomically, in the format of its extension (see
+    :func:`format_of`), then close it if pyplot manages it."""
+    fmt = format_of(path)
+    try:
+        with matplotlib.rc_context({"svg.fonttype": "none"}):
+            write_bytes(path, lambda handle: fig.savefig(handle, format=fmt, dpi=DPI))
+    finally:
+        pyplot = sys.modules.get("matplotlib.pyplot")
+        if pyplot is not None:
+            pyplot.close(fig)

@@ -1,0 +1,38 @@
+"""The report folder: pictures, report.md and (optionally) report.html, written whole."""
+
+from .. import plot
+from ..output import write_folder, write_text
+from .document import PICTURES, blocks
+from .html import page
+from .markdown import markdown
+
+__all__ = ["write_report", "REPORT_FILES"]
+
+REPORT_FILES = [file for file, *_ in PICTURES] + ["report.md", "report.html"]
+
+
+def write_report(target, comparison, balances, star_order, with_html):
+    """Write the report of ``comparison`` (and its ``balances``) into the folder ``target``;
+    nothing is left behind if any part fails. Returns the paths written."""
+    results = comparison.results
+    figures = {
+        "locus": lambda: plot.locus(results),
+        "spectrum": lambda: plot.spectrum(results),
+        "star": lambda: plot.star(results, star_order),
+        "firing": lambda: plot.firing(results),
+    }
+
+    def fill(folder):
+        names = []
+        for file, kind, _, _ in PICTURES:
+            plot.save(figures[kind](), folder / file)
+            names.append(file)
+        content = blocks(comparison, balances, star_order)
+        write_text(folder / "report.md", markdown(content))
+        names.append("report.md")
+        if with_html:
+            write_text(folder / "report.html", page(content, folder))
+            names.append("report.html")
+        return names
+
+    return write_folder(target, fill)

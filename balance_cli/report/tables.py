@@ -1,0 +1,260 @@
+"""Plain-text and Markdown tables, in the style of Tanaka's Part III.
+
+Every table is rendered from result objects' ``to_dict()`` records; text that comes from a
+user (engine names, paths, sources) is made safe for the format here.
+"""
+
+import math
+
+from tabulate import tabulate
+
+from ..units import kg_to_g, m_to_mm, rad_s_to_rpm, round_degrees
+from .display import markdown_text, plain_text
+
+__all__ = ["render", "compare_parts", "compare_tables", "order_rows", "order_headers",
+           "balance_tables", "balance_summary", "list_table", "show_table"]
+
+_TABLEFMT = {"table": "simple", "markdown": "pipe"}
+
+
+def _safe(fmt):
+    return markdown_text if fmt == "markdown" else plain_text
+
+
+def render(headers, rows, fmt):
+    """One table as text ("table") or Markdown ("markdown"); cells must already be text."""
+    safe = _safe(fmt)
+    return tabulate([[safe(c) for c in row] for row in rows], headers=[safe(h) for h in headers],
+                    tablefmt=_TABLEFMT[fmt], disable_numparse=True)
+
+
+def _digits(scale):
+    return 4 if not scale.absolute else 1 if scale.units == "N" else 2
+
+
+def order_values(order, unit_n, scale, floor):
+    """Force forward/backward/max/min, axis and moment forward/backward/max of one order in
+    display units, or None when the order is zero (below the noise floor)."""
+    values = order.to_dict(floor)
+    f, m = values["force"], values["moment"]
+    if f["max_N"] == 0.0 and m["max_Nm"] == 0.0:
+        return None
+    return ([scale.force(f[k], unit_n) for k in ("forward_N", "backward_N", "max_N", "min_N")]
+            + [f["axis_deg"]]
+            + [scale.moment(m[k]) for k in ("forward_Nm", "backward_Nm", "max_Nm")])
+
+
+def order_rows(name, shaking, engine, scale):
+    """Text rows (engine, order, force fwd/bwd/max/min/axis, moment fwd/bwd/max) of the orders
+    above the noise floor."""
+    digits = _digits(scale)
+    rows = []
+    for order in shaking.orders:
+        v = order_values(order, engine.per_cylinder_unit_n, scale, engine.noise_floor_n)
+        if v is None:
+            continue
+        rows.append([name, str(order.order)] + [f"{x:.{digits}f}" for x in v[:4]]
+                    + [f"{round_degrees(v[4], 0, 180.0):.0f}"] + [f"{x:.2f}" for x in v[5:]])
+    return rows
+
+
+def order_headers(scale):
+    fl, ml = scale.force_label, scale.moment_label
+    return ["Engine", "Order", f"F fwd ({fl})", f"F bwd ({fl})", f"F max ({fl})", f"F min ({fl})",
+            "F axis (°)", f"M fwd ({ml})", f"M bwd ({ml})", f"M max ({ml})"]
+
+
+def _intervals(firing):
+    mean = sum(firing.intervals_deg) / len(firing.intervals_deg)
+    if firing.uniform:
+        return f"every {mean:g}"
+    return f"{min(firing.intervals_deg):.1f} to {max(firing.intervals_deg):.1f}"
+
+
+def _summary_rows(comparison, scale):
+    rows = []
+    for r in comparison.results:
+        largest = (f"{r.counterweighted_per_cylinder:.4f}" if not scale.absolute
+                   else f"{scale.force(r.counterweighted_force_n, r.per_cylinder_unit_n):.1f}")
+        percent = r.percent_of(comparison.reference)
+        rows.append([
+            r.engine.name, str(r.engine.n_cylinders), str(r.engine.cycle), r.engine.frame,
+            "-".join(map(str, r.firing.order)), _intervals(r.firing), largest,
+            "n/a" if percent is None else f"{percent:.1f}",
+        ])
+    return rows
+
+
+def compare_parts(comparison, scale):
+    """The comparison as (title, headers, rows, note) tables, for any renderer."""
+    unit = ("per cylinder, in units of m_rec·r·ω²·n" if not scale.absolute
+            else f"in {scale.units}")
+    reference = comparison.reference.engine.name
+    rows = [row for r in comparison.results
+            for row in order_rows(r.engine.name, r.shaking, r.engine, scale)]
+    return [
+        (f"Free forces and moments by order (forces {unit}; moments in {scale.moment_label})",
+         order_headers(scale), rows,
+         "Orders not listed are zero. fwd turns with the crank, bwd against it; max and min are "
+         "the semi-axes of the order's ellipse, axis the direction of max from the reference axis "
+         f"({comparison.samples} samples a revolution)."),
+        ("Firing and largest resultant (after an ideal crankshaft counterweight)",
+         ["Engine", "Cyl", "Cycle", "Frame", "Firing order", "Intervals (°)",
+          f"Largest ({scale.force_label})", f"% of {reference}"],
+         _summary_rows(comparison, scale),
+         "n/a: the reference engine has no resultant to compare with." if any(
+             r.percent_of(comparison.reference) is None for r in comparison.results) else ""),
+    ]
+
+
+def compare_tables(comparison, scale, fmt):
+    """The comparison as text or Markdown: orders of every engine, then a summary."""
+    heading = "#### " if fmt == "markdown" else ""
+    safe = _safe(fmt)
+    out = []
+    for title, headers, rows, note in compare_parts(comparison, scale):
+        out += [f"{heading}{safe(title)}", "", render(headers, rows, fmt), ""]
+        if note:
+            out += [note, ""]
+    return "\n".join(out)
+
+
+def list_table(engines):
+    rows = [[e.config_path, e.name, str(e.n_cylinders), str(e.cycle), e.frame, e.source]
+            for e in engines]
+    return render(["Config", "Name", "Cyl", "Cycle", "Frame", "Source"], rows, "table")
+
+
+def _mm(length_m):
+    return f"{m_to_mm(length_m):g} mm"
+
+
+def show_table(engine, firing):
+    """One engine, one row per cylinder, with the engine's data above."""
+    knuckles = sorted({c.knuckle_kg for c in engine.cylinders if c.is_link})
+    header = [
+        plain_text(engine.name),
+        f"  source:        {plain_text(engine.source) or '-'}",
+        f"  config:        {plain_text(engine.config_path)}",
+        f"  cycle:         {engine.cycle}-stroke, frame {engine.frame}, "
+        f"{rad_s_to_rpm(engine.speed_rad_s):g} rpm",
+        f"  crank radius:  {_mm(engine.crank_radius_m)}, rod {_mm(engine.rod_length_m)}, "
+        f"pin offset {_mm(engine.pin_offset_m)}",
+        f"  masses:        reciprocating {kg_to_g(engine.mean_reciprocating_kg):g} g mean per "
+        f"cylinder, rotating {kg_to_g(engine.rotating_kg):g} g and crank "
+        f"{kg_to_g(engine.crank_kg):g} g per throw"
+        + "".join(f", knuckle {kg_to_g(kg):g} g per link rod" for kg in knuckles),
+        f"  firing:        {'-'.join(map(str, firing.order))} "
+        f"({'given' if firing.given else 'most uniform the crank allows'})",
+        f"  intervals (°): {', '.join(f'{i:.2f}' for i in firing.intervals_deg)}",
+        "",
+    ]
+    rows = []
+    for c in engine.cylinders:
+        rod = engine.rod_type(c)
+        if c.is_link:
+            rod = (f"link on {c.master} ({_mm(c.link_length_m)}, knuckle {_mm(c.knuckle_radius_m)} "
+                   f"at {math.degrees(c.knuckle_angle_rad):g}°)")
+        bank = math.degrees(engine.bank_angles_rad[c.bank])
+        rows.append([
+            str(c.number), f"{c.bank + 1} ({bank:g}°)", str(c.throw + 1),
+            f"{math.degrees(engine.throws[c.throw].phase_rad):g}", f"{m_to_mm(c.z_m):g}",
+            f"{kg_to_g(c.reciprocating_kg):g}", rod, f"{round_degrees(firing.tdc_deg[c.number], 2):.2f}",
+        ])
+    table = render(["Cyl", "Bank (angle)", "Throw", "Phase (°)", "z (mm)", "Recip. (g)", "Rod",
+                    "TDC (°)"], rows, "table")
+    return "\n".join(header) + table + "\n"
+
+
+#: how the SI records of counterweights and shafts are shown: (key, column heading, text)
+WEIGHT_COLUMNS = [
+    ("throw", "Throw", lambda v: "-" if v is None else str(v)),
+    ("z_m", "z (mm)", lambda v: f"{m_to_mm(v):g}"),
+    ("mass_kg", "Mass (kg)", lambda v: f"{v:.4f}"),
+    ("radius_m", "Radius (mm)", lambda v: f"{m_to_mm(v):g}"),
+    ("angle_deg", "Angle (° from throw 1)", lambda v: f"{round_degrees(v, 2):.2f}"),
+]
+SHAFT_COLUMNS = [
+    ("order", "Order", str),
+    ("speed_ratio", "Speed ratio", lambda v: f"{v:+d}"),
+    ("speed_ratio", "Turning", lambda v: "with the crank" if v > 0 else "against the crank"),
+    ("mass_eccentricity_kgm", "m·e (kg·mm)", lambda v: f"{m_to_mm(v):.3f}"),
+    ("phase_deg", "Phase at θ = 0 (°)", lambda v: f"{round_degrees(v, 2):.2f}"),
+    ("z_m", "z (mm)", lambda v: f"{m_to_mm(v):g}"),
+]
+
+
+def _record_table(records, columns, fmt):
+    headers = [label for _, label, _ in columns]
+    rows = [[shown(record[key]) for key, _, shown in columns] for record in records]
+    return render(headers, rows, fmt)
+
+
+def _plane_text(weight):
+    if weight["throw"]:
+        return f"throw {weight['throw']}"
+    return f"z = {m_to_mm(weight['z_m']):g} mm"
+
+
+def balance_tables(balances, scale, fmt):
+    """``balance counterweight`` as text or Markdown, engine by engine."""
+    heading = "#### " if fmt == "markdown" else ""
+    safe = _safe(fmt)
+    unit = "per cylinder, × m_rec·r·ω²·n" if not scale.absolute else scale.units
+    out = []
+    for b in balances:
+        engine = b.engine
+        record = b.to_dict()
+        how = ("cancelling the forward first order" if b.balance_factor is None else
+               f"balance factor {b.balance_factor:g}: rotating masses plus {b.balance_factor:g} of "
+               "the reciprocating ones per throw")
+        carrier = "crankcase" if engine.is_rotary else "crank"
+        out += [f"{heading}{safe(engine.name)}: counterweights on the {carrier}, {how}", "",
+                _record_table(record["counterweights"], WEIGHT_COLUMNS, fmt), ""]
+        if b.antivibrateur is not None:
+            a = record["antivibrateur"]
+            out += [f"Antivibrateur on the crank pin, turning at twice crank speed with the crank: "
+                    f"M·e = {m_to_mm(a['mass_eccentricity_kgm']):.2f} kg·mm (M = {a['mass_kg']:.4f} "
+                    f"kg at e = {m_to_mm(a['eccentricity_m']):g} mm), at "
+                    f"{round_degrees(a['phase_deg'], 2):.2f}° when θ = 0; the counterweights above "
+                    "include its mass.", ""]
+        first = b.residual.order(1).to_dict(engine.noise_floor_n)
+        f, m = first["force"], first["moment"]
+        n_unit = engine.per_cylinder_unit_n
+        out += [f"First order left: forward {scale.force(f['forward_N'], n_unit):.4g}, "
+                f"backward {scale.force(f['backward_N'], n_unit):.4g} ({unit}; no counterweight "
+                f"touches the backward part); moment {scale.moment(m['forward_Nm']):.4g} forward, "
+                f"{scale.moment(m['backward_Nm']):.4g} backward ({scale.moment_label}).", ""]
+        out += ["Left after the counterweights:", "",
+                render(order_headers(scale), order_rows(engine.name, b.residual, engine, scale), fmt),
+                ""]
+        if b.after_shafts is not None:
+            out += ["Balancer shafts:", "",
+                    _record_table(record["shafts"], SHAFT_COLUMNS, fmt), "",
+                    "Left after the shafts:", "",
+                    render(order_headers(scale), order_rows(engine.name, b.after_shafts, engine,
+                                                            scale), fmt), ""]
+        if b.test_masses_kg is not None:
+            rows = [[str(i + 1), f"{m:.4f}"] for i, m in enumerate(record["test_masses_kg"])]
+            out += ["Balancing-machine test masses (hang on each crank pin; the crankshaft's own "
+                    "unbalance excluded):", "",
+                    render(["Throw", "Mass (kg)"], rows, fmt), ""]
+    return "\n".join(out)
+
+
+def balance_summary(balances):
+    """One row per engine of ``balance counterweight`` with default planes: (headers, rows)."""
+    rows = []
+    for b in balances:
+        engine = b.engine
+        n_unit = engine.per_cylinder_unit_n
+        first = b.residual.order(1).to_dict(engine.noise_floor_n)["force"]
+        weights = "; ".join(
+            f"{c['mass_kg']:.4g} kg at {round_degrees(c['angle_deg'], 1):.1f}° ({_plane_text(c)})"
+            for c in b.to_dict()["counterweights"])
+        rows.append([engine.name, weights, f"{first['forward_N'] / n_unit:.4f}",
+                     f"{first['backward_N'] / n_unit:.4f}",
+                     f"{b.residual.largest_force() / n_unit:.4f}"])
+    headers = ["Engine", "Counterweights at crank radius", "1st order left fwd (per cyl)",
+               "1st order bwd (per cyl)", "Largest resultant left (per cyl)"]
+    return headers, rows

@@ -1,0 +1,38 @@
+"""Every numerical tolerance of balance, with its reason, in one place.
+
+Imports nothing: the ground floor of the package.
+"""
+
+__all__ = ["NOISE_FLOOR", "ALIASING_TOLERANCE", "ANGLE_TOLERANCE_DEG", "TDC_PRECISION_DEG",
+           "UNIFORM_FIRING_DEG", "SAME_POSITION_M", "minimum_samples"]
+
+#: A force below this fraction of m_rec·r·ω²·n (N), or a moment below it times one metre
+#: (N·m), is rounding noise and is reported as an exact zero. The FFT of exact positions is
+#: good to about 1e-13 of the largest mass's force, so 1e-9 leaves four orders of margin and
+#: still resolves the smallest order the papers print (about 1e-4).
+NOISE_FLOOR = 1e-9
+
+#: The spectral content above a quarter of the samples, weighted as it would alias into the
+#: highest order reported, may be this fraction of the largest inertia force before a
+#: SamplingWarning says the samples are too few (the same margin as NOISE_FLOOR).
+ALIASING_TOLERANCE = 1e-9
+
+#: An angle within this of a full period (360°, or 180° for an axis) is that period's start:
+#: phases of phasors carry rounding errors of about 1e-9°, far below it.
+ANGLE_TOLERANCE_DEG = 1e-6
+
+#: The top-dead-centre search is refined to about 2e-6°; TDCs closer than this are the same.
+TDC_PRECISION_DEG = 1e-3
+
+#: Firing intervals within this of the mean count as uniform.
+UNIFORM_FIRING_DEG = 0.01
+
+#: Axial positions closer than this are the same plane.
+SAME_POSITION_M = 1e-9
+
+
+def minimum_samples(max_order):
+    """Fewest samples a revolution for orders up to ``max_order``: more than four per order,
+    so that a band of orders above ``max_order`` and below half the samples is left in which
+    aliasing can be seen."""
+    return 4 * max_order + 1
