@@ -15,7 +15,7 @@ from pathlib import Path
 
 from .errors import ConfigError, ModelError, UnitError
 from .kinematics import check_assembly
-from .model import Cylinder, Engine, Throw
+from .model import FRAMES, Cylinder, Engine, Throw
 from .units import parse_quantity
 
 __all__ = ["load", "loads", "build", "find_configs", "load_many"]
@@ -179,7 +179,7 @@ def build(data, path="<config>") -> Engine:
     crank_radius = top.quantity("crank_radius", "length")
     rod_length = top.quantity("rod_length", "length")
     pin_offset = top.quantity("pin_offset", "length", required=False, default=0.0, sign="any")
-    frame = top.string("frame", required=False, default="fixed", choices=("fixed", "rotary"))
+    frame = top.string("frame", required=False, default="fixed", choices=FRAMES)
 
     masses = _Reader(path, top._get("masses", True), "masses.", _MASS_KEYS)
     reciprocating = masses.quantity("reciprocating", "mass")

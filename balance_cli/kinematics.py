@@ -16,6 +16,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .errors import ModelError
+from .units import round_degrees
 
 __all__ = ["MassSet", "Linkage", "linkage", "mass_positions", "piston_travel", "check_assembly",
            "engine_angles"]
@@ -73,7 +74,7 @@ def _slider(point, axis_angle, length, offset, cylinder, crank_angles):
 
 
 def _cannot_reach(cylinder, crank_angle):
-    where = f"{np.degrees(crank_angle) % 360.0:.1f}°"
+    where = f"{round_degrees(np.degrees(crank_angle), 1):.1f}°"
     if cylinder.is_link:
         raise ModelError(f"cylinder {cylinder.number}: its link rod cannot reach the cylinder axis "
                          f"at crank angle {where}; make link_length_m longer or knuckle_radius_m "

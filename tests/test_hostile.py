@@ -1,0 +1,449 @@
+"""A hostile tester's inputs (issue 8): malformed, extreme and non-finite values, odd paths and
+permissions. For every one: the exit status, exactly one error line, no traceback (the command
+ended in SystemExit, not an exception), the input files unchanged and no output file left."""
+
+import json
+import os
+import shutil
+import stat
+import tempfile
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from balance_cli.cli import main
+from conftest import CONFIGS
+
+GOOD = """\
+name = "hostile twin"
+cycle = 4
+speed = "3000 rpm"
+crank_radius = "40 mm"
+rod_length = "140 mm"
+firing_order = [1, 2]
+
+[masses]
+reciprocating = "500 g"
+
+[[banks]]
+angle = 0
+
+[[throws]]
+phase = 0
+z = "0 mm"
+[[throws]]
+phase = 180
+z = "90 mm"
+"""
+
+LISTED = """\
+name = "listed V"
+cycle = 4
+speed = "3000 rpm"
+crank_radius = "40 mm"
+rod_length = "140 mm"
+
+[masses]
+reciprocating = "500 g"
+
+[[banks]]
+angle = -30
+[[banks]]
+angle = 30
+
+[[throws]]
+phase = 0
+
+[[cylinders]]
+number = 1
+bank = 1
+throw = 1
+[[cylinders]]
+number = 2
+bank = 2
+throw = 1
+"""
+
+ROTARY = CONFIGS / "clerget-rotary.toml"
+
+
+def replaced(old, new, base=GOOD):
+    assert old in base, old
+    return base.replace(old, new, 1)
+
+
+#: (id, configuration text, words the one error line must hold); run as `compare FILE -o OUT`
+CONFIG_CASES = [
+    ("not-toml", "name = \n", "not valid TOML"),
+    ("empty", "", "name: missing"),
+    ("unclosed-string", replaced('"hostile twin"', '"hostile twin'), "not valid TOML"),
+    ("missing-name", replaced('name = "hostile twin"\n', ""), "name: missing"),
+    ("name-newline", replaced('"hostile twin"', '"hostile\\ntwin"'), "name: must be one line"),
+    ("name-empty", replaced('"hostile twin"', '"  "'), "name: expected a non-empty string"),
+    ("name-number", replaced('"hostile twin"', "12"), "name: expected a non-empty string"),
+    ("cycle-3", replaced("cycle = 4", "cycle = 3"), "cycle: must be 2 or 4"),
+    ("cycle-string", replaced("cycle = 4", 'cycle = "4"'), "cycle: expected a whole number"),
+    ("cycle-bool", replaced("cycle = 4", "cycle = true"), "cycle: expected a whole number"),
+    ("speed-no-unit", replaced('"3000 rpm"', '"3000"'), "speed: cannot read '3000'"),
+    ("speed-huge", replaced('"3000 rpm"', '"1e200 rpm"'), "speed: '1e200 rpm' is outside"),
+    ("speed-tiny", replaced('"3000 rpm"', '"1e-300 rpm"'), "speed: '1e-300 rpm' is outside"),
+    ("speed-zero", replaced('"3000 rpm"', '"0 rpm"'), "speed: must be greater than zero"),
+    ("speed-negative", replaced('"3000 rpm"', '"-3000 rpm"'), "speed: must be greater than zero"),
+    ("speed-nan", replaced('"3000 rpm"', '"nan rpm"'), "speed: cannot read 'nan rpm'"),
+    ("speed-inf", replaced('"3000 rpm"', '"inf rpm"'), "speed: cannot read 'inf rpm'"),
+    ("speed-overflow", replaced('"3000 rpm"', '"1e400 rpm"'), "is not a finite number"),
+    ("speed-length", replaced('"3000 rpm"', '"3000 mm"'), "is a length, but a angular speed"),
+    ("speed-number", replaced('"3000 rpm"', "3000"), "speed: expected a string with a unit"),
+    ("crank-overflow", replaced('"40 mm"', '"1e400 mm"'), "crank_radius: '1e400 mm' is not a finite"),
+    ("crank-mass", replaced('"40 mm"', '"40 kg"'), "crank_radius: '40 kg' is a mass"),
+    ("crank-unknown-unit", replaced('"40 mm"', '"40 furlong"'), "unknown unit 'furlong'"),
+    ("crank-huge", replaced('"40 mm"', '"40 km"'), "unknown unit 'km'"),
+    ("crank-too-big", replaced('"40 mm"', '"4e6 mm"'), "crank_radius: '4e6 mm' is outside"),
+    ("rod-shorter", replaced('"140 mm"', '"35 mm"'), "rod_length: of 0.035 m is not longer"),
+    ("rod-equal", replaced('"140 mm"', '"40 mm"'), "rod_length: of 0.04 m is not longer"),
+    ("rod-with-offset", replaced('rod_length = "140 mm"', 'rod_length = "60 mm"\npin_offset = "25 mm"'),
+     "is not longer than the crank radius plus |pin offset|"),
+    ("offset-overflow", replaced('rod_length = "140 mm"', 'rod_length = "140 mm"\npin_offset = "1e400 mm"'),
+     "pin_offset: '1e400 mm' is not a finite"),
+    ("mass-overflow", replaced('"500 g"', '"1e400 g"'), "masses.reciprocating: '1e400 g' is not a finite"),
+    ("mass-zero", replaced('"500 g"', '"0 g"'), "masses.reciprocating: must be greater than zero"),
+    ("mass-huge", replaced('"500 g"', '"1e12 g"'), "masses.reciprocating: '1e12 g' is outside"),
+    ("rotating-negative", replaced('reciprocating = "500 g"', 'reciprocating = "500 g"\nrotating = "-1 g"'),
+     "masses.rotating: must not be negative"),
+    ("masses-unknown-key", replaced('reciprocating = "500 g"', 'reciprocating = "500 g"\npiston = "1 g"'),
+     "masses.piston: unknown key"),
+    ("masses-missing", replaced('[masses]\nreciprocating = "500 g"\n', ""), "masses: missing"),
+    ("masses-not-table", replaced('[masses]\nreciprocating = "500 g"\n', ""). replace(
+        'firing_order = [1, 2]', 'firing_order = [1, 2]\nmasses = 3'), "masses: expected a table"),
+    ("banks-missing", replaced("[[banks]]\nangle = 0\n", ""), "banks: missing"),
+    ("bank-angle-text", replaced("angle = 0", 'angle = "zero"'), "banks[1].angle: expected a number"),
+    ("bank-angle-inf", replaced("angle = 0", "angle = inf"), "banks[1].angle: expected a number"),
+    ("bank-angle-nan", replaced("angle = 0", "angle = nan"), "banks[1].angle: expected a number"),
+    ("bank-angle-huge", replaced("angle = 0", "angle = 1e9"), "banks[1].angle: must be between -360"),
+    ("throws-empty", "throws = []\n" + GOOD[: GOOD.index("[[throws]]")],
+     "throws: expected one or more [[throws]] tables"),
+    ("throw-phase-missing", replaced("phase = 180\n", ""), "throws[2].phase: missing"),
+    ("throw-z-mass", replaced('z = "90 mm"', 'z = "90 kg"'), "throws[2].z: '90 kg' is a mass"),
+    ("unknown-top-key", "colour = \"red\"\n" + GOOD, "colour: unknown key"),
+    ("firing-repeated", replaced("[1, 2]", "[1, 1]"), "firing_order: [1, 1] is not a permutation"),
+    ("firing-too-long", replaced("[1, 2]", "[1, 2, 3]"), "firing_order: [1, 2, 3] is not a permutation"),
+    ("firing-strings", replaced("[1, 2]", '["1", "2"]'), "firing_order: expected a list of cylinder numbers"),
+    ("frame-unknown", 'frame = "upside-down"\n' + GOOD, 'frame: must be "fixed" or "rotary"'),
+    ("links-bank-out-of-range", LISTED.replace("[[cylinders]]", '[links]\nmaster_bank = 5\nlength = "110 mm"\n'
+                                               'knuckle_radius = "30 mm"\n\n[[cylinders]]', 1),
+     "links.master_bank: must be between 1 and 2"),
+    ("link-cannot-reach", LISTED + 'master = 1\nlink_length = "20 mm"\nknuckle_radius = "30 mm"\n',
+     "cylinders[2]: cylinder 2: its link rod cannot reach the cylinder axis"),
+    ("two-in-one-bore", LISTED.replace("number = 2\nbank = 2", "number = 2\nbank = 1"),
+     "cylinders[2]: cylinder 2 sits in the bore of cylinder 1"),
+    ("cylinder-twice", LISTED.replace("number = 2", "number = 1"), "cylinders[2].number: cylinder 1 is listed twice"),
+    ("master-missing", LISTED + "master = 7\n", "cylinders[2].master: names cylinder 7, which is not listed"),
+    ("master-itself", LISTED + 'master = 2\nlink_length = "110 mm"\nknuckle_radius = "30 mm"\n',
+     "cylinders[2]: cylinder 2: its master 2 is not another cylinder"),
+    ("cylinder-bank-zero", LISTED.replace("number = 2\nbank = 2", "number = 2\nbank = 0"),
+     "cylinders[2].bank: must be between 1 and 2"),
+    ("cylinder-throw-nine", LISTED.replace("bank = 2\nthrow = 1", "bank = 2\nthrow = 9"),
+     "cylinders[2].throw: must be between 1 and 1"),
+    ("cylinder-number-bool", LISTED.replace("number = 2", "number = true"),
+     "cylinders[2].number: expected a whole number"),
+    ("knuckle-angle-huge", LISTED + 'master = 1\nlink_length = "110 mm"\nknuckle_radius = "30 mm"\n'
+                                    "knuckle_angle = 1000\n", "cylinders[2].knuckle_angle: must be between"),
+    ("plain-rod-with-link-key", LISTED + 'link_length = "110 mm"\n', "cylinders[2].link_length: only a link rod"),
+    ("firing-does-not-fit", replaced('firing_order = [1, 2]', 'firing_order = [1, 4, 2, 3]').replace(
+        '[[throws]]\nphase = 180\nz = "90 mm"\n',
+        '[[throws]]\nphase = 180\nz = "90 mm"\n[[throws]]\nphase = 180\nz = "180 mm"\n'
+        '[[throws]]\nphase = 0\nz = "270 mm"\n'), "firing_order: cylinder 3 cannot fire after cylinder 2"),
+]
+
+#: (id, command arguments after the command name and the input, words); input GOOD, or ROTARY
+OPTION_CASES = [
+    ("samples-below", ["compare", "--samples", "17"], 1, "--samples must be from 33 to 65536"),
+    ("samples-zero", ["compare", "--samples", "0"], 1, "--samples must be from 33"),
+    ("samples-huge", ["compare", "--samples", "10000000"], 1, "--samples must be from 33 to 65536"),
+    ("samples-text", ["compare", "--samples", "many"], 2, "'many' is not a valid integer"),
+    ("max-order-zero", ["compare", "--max-order", "0"], 1, "--max-order must be at least 1"),
+    ("max-order-negative", ["compare", "--max-order", "-3"], 1, "--max-order must be at least 1"),
+    ("reference-none", ["compare", "--reference", "Zeppelin"], 1, "--reference 'Zeppelin' matches no engine"),
+    ("units-unknown", ["compare", "--units", "lbf"], 2, "'lbf' is not one of"),
+    ("format-unknown", ["compare", "--format", "xml"], 2, "'xml' is not one of"),
+    ("balance-factor-nan", ["counterweight", "--balance-factor", "nan"], 1,
+     "--balance-factor must be a fraction of the reciprocating masses from 0 to 1, got nan"),
+    ("balance-factor-inf", ["counterweight", "--balance-factor", "inf"], 1, "got inf"),
+    ("balance-factor-negative", ["counterweight", "--balance-factor", "-0.5"], 1, "got -0.5"),
+    ("radius-overflow", ["counterweight", "--radius", "1e400 mm"], 1, "--radius: '1e400 mm' is not a finite number"),
+    ("radius-zero", ["counterweight", "--radius", "0 mm"], 1, "--radius must be greater than zero"),
+    ("radius-mass", ["counterweight", "--radius", "5 kg"], 1, "--radius: '5 kg' is a mass"),
+    ("planes-missing-throw", ["counterweight", "--planes", "1,9"], 1, "--planes names throw 9"),
+    ("planes-coincide", ["counterweight", "--planes", "1,1"], 1, "--planes coincide"),
+    ("planes-three", ["counterweight", "--planes", "1,2,1"], 1, "--planes takes one plane"),
+    ("planes-text", ["counterweight", "--planes", "1,two"], 1, "--planes: cannot read 'two'"),
+    ("planes-overflow", ["counterweight", "--planes", "1,1e400 mm"], 1, "--planes: '1e400 mm' is not a finite"),
+    ("shafts-outside", ["counterweight", "--shafts", "99"], 1, "--shafts names order 99"),
+    ("shafts-text", ["counterweight", "--shafts", "second"], 2, "give orders as whole numbers"),
+    ("antivibrateur-two-throws", ["counterweight", "--antivibrateur"], 1, "--antivibrateur-radius needs a single-throw"),
+    ("antivibrateur-radius-negative", ["counterweight", "--antivibrateur", "--antivibrateur-radius", "-4 mm"], 1,
+     "--antivibrateur-radius must be greater than zero"),
+    ("star-order-above", ["report", "--star-order", "9"], 1, "--star-order 9 is above --max-order 8"),
+]
+
+ROTARY_CASES = [
+    ("antivibrateur-rotary", ["counterweight", "--antivibrateur"], "with a turning crank"),
+    ("test-masses-rotary", ["counterweight", "--test-masses"], "--test-masses do not apply to a rotary"),
+]
+
+
+def snapshot(folder):
+    """Every file under ``folder`` with its bytes (and what each symbolic link points to)."""
+    out = {}
+    for path in sorted(Path(folder).rglob("*")):
+        if path.is_symlink():
+            out[str(path)] = ("link", os.readlink(path))
+        elif path.is_file():
+            out[str(path)] = path.read_bytes()
+        else:
+            out[str(path)] = "folder"
+    return out
+
+
+def check_refused(result, code, words, before, folder):
+    """The one error line, its words, the exit status, no traceback, nothing changed."""
+    assert isinstance(result.exception, SystemExit), result.exception
+    assert result.exit_code == code, (result.exit_code, result.output)
+    errors = [line for line in result.stderr.splitlines() if line.startswith("Error:")]
+    assert len(errors) == 1, result.stderr
+    assert words in errors[0], errors[0]
+    if code == 1:
+        assert result.stderr.count("\n") == 1, result.stderr    # exactly one line
+    assert result.stdout == "", result.stdout
+    assert snapshot(folder) == before
+
+
+def invoke(*args):
+    return CliRunner().invoke(main, [str(a) for a in args])
+
+
+@pytest.mark.parametrize("text, words", [case[1:] for case in CONFIG_CASES],
+                         ids=[case[0] for case in CONFIG_CASES])
+def test_malformed_configuration(tmp_path, text, words):
+    config = tmp_path / "engine.toml"
+    config.write_text(text, encoding="utf-8")
+    before = snapshot(tmp_path)
+    result = invoke("compare", config, "--output", tmp_path / "out.json")
+    check_refused(result, 1, f"{config}: ", before, tmp_path)
+    assert words in result.stderr
+
+
+def test_not_utf8(tmp_path):
+    config = tmp_path / "engine.toml"
+    config.write_bytes(b"name = \"\xff\xfe\"\n")
+    before = snapshot(tmp_path)
+    result = invoke("compare", config, "-o", tmp_path / "o.txt")
+    check_refused(result, 1, "not UTF-8 text", before, tmp_path)
+
+
+@pytest.mark.parametrize("args, code, words", [case[1:] for case in OPTION_CASES],
+                         ids=[case[0] for case in OPTION_CASES])
+def test_bad_option(tmp_path, args, code, words):
+    config = tmp_path / "engine.toml"
+    config.write_text(GOOD, encoding="utf-8")
+    before = snapshot(tmp_path)
+    out = tmp_path / ("report" if args[0] == "report" else "out.txt")
+    result = invoke(args[0], config, *args[1:], "--output", out)
+    check_refused(result, code, words, before, tmp_path)
+
+
+@pytest.mark.parametrize("args, words", [case[1:] for case in ROTARY_CASES],
+                         ids=[case[0] for case in ROTARY_CASES])
+def test_rotary_refuses_what_needs_a_turning_crank(tmp_path, args, words):
+    config = tmp_path / "rotary.toml"
+    shutil.copy(ROTARY, config)
+    before = snapshot(tmp_path)
+    check_refused(invoke(args[0], config, *args[1:], "-o", tmp_path / "o.txt"), 1, words, before,
+                  tmp_path)
+
+
+def test_ambiguous_reference_lists_only_the_matches(tmp_path):
+    for name in ("Alpha one", "Alpha two", "Beta"):
+        (tmp_path / f"{name.replace(' ', '_')}.toml").write_text(
+            replaced('"hostile twin"', f'"{name}"'), encoding="utf-8")
+    before = snapshot(tmp_path)
+    result = invoke("compare", tmp_path, "--reference", "alpha", "-o", tmp_path / "o.txt")
+    check_refused(result, 1, "--reference 'alpha' matches several engines: Alpha one; Alpha two;",
+                  before, tmp_path)
+    assert "Beta" not in result.stderr
+
+
+@pytest.mark.parametrize("command", ["compare", "counterweight", "plot", "report"])
+def test_output_that_is_the_input_is_refused_before_computing(tmp_path, command, monkeypatch):
+    import balance_cli.cli as cli
+
+    monkeypatch.setattr(cli, "analyse", lambda *a: pytest.fail("analysed before refusing"))
+    config = tmp_path / "e.toml"
+    config.write_text(GOOD, encoding="utf-8")
+    before = snapshot(tmp_path)
+    extra = ["--kind", "locus"] if command == "plot" else []
+    result = invoke(command, config, *extra, "-o", config)
+    words = "is not a folder" if command == "report" else "is an input file"
+    check_refused(result, 1, words, before, tmp_path)
+
+
+@pytest.mark.parametrize("how", ["symlink", "inside-folder", "relative"])
+def test_output_resolving_to_an_input_is_refused(tmp_path, how, monkeypatch):
+    folder = tmp_path / "engines"
+    folder.mkdir()
+    config = folder / "e.toml"
+    config.write_text(GOOD, encoding="utf-8")
+    if how == "symlink":
+        (tmp_path / "link.txt").symlink_to(config)
+        inputs, output = [config], tmp_path / "link.txt"
+    elif how == "inside-folder":
+        inputs, output = [folder], folder / "e.toml"
+    else:
+        monkeypatch.chdir(tmp_path)
+        inputs, output = [Path("engines")], Path("engines/../engines/e.toml")
+    before = snapshot(tmp_path)
+    check_refused(invoke("compare", *inputs, "-o", output), 1, "is an input file", before, tmp_path)
+
+
+def test_output_that_is_a_folder(tmp_path):
+    config = tmp_path / "e.toml"
+    config.write_text(GOOD, encoding="utf-8")
+    (tmp_path / "out").mkdir()
+    before = snapshot(tmp_path)
+    check_refused(invoke("compare", config, "-o", tmp_path / "out"), 1, "is a folder; give a file name",
+                  before, tmp_path)
+
+
+def test_output_below_a_file(tmp_path):
+    config = tmp_path / "e.toml"
+    config.write_text(GOOD, encoding="utf-8")
+    before = snapshot(tmp_path)
+    check_refused(invoke("compare", config, "-o", tmp_path / "e.toml" / "sub" / "o.json"), 1,
+                  "cannot create the folder", before, tmp_path)
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="no /dev/full on this system")
+def test_device_is_written_directly_and_its_error_reported(tmp_path):
+    config = tmp_path / "e.toml"
+    config.write_text(GOOD, encoding="utf-8")
+    before = snapshot(tmp_path)
+    check_refused(invoke("compare", config, "-o", "/dev/full"), 1,
+                  "cannot write '/dev/full': No space left on device", before, tmp_path)
+    assert stat.S_ISCHR(os.stat("/dev/full").st_mode)   # still the device
+
+
+def test_missing_inputs_and_empty_folder(tmp_path):
+    before = snapshot(tmp_path)
+    check_refused(invoke("compare", tmp_path / "nothing.toml", "-o", tmp_path / "o"), 1,
+                  "no such file; check the path", before, tmp_path)
+    check_refused(invoke("compare", tmp_path, "-o", tmp_path / "o"), 1,
+                  "no .toml configuration found in this folder", before, tmp_path)
+    check_refused(invoke("show", tmp_path), 1, "is a folder; give a .toml file", before, tmp_path)
+
+
+def test_list_of_a_missing_folder_prints_no_table(tmp_path):
+    before = snapshot(tmp_path)
+    check_refused(invoke("list", tmp_path / "nodir"), 1, "no such folder", before, tmp_path)
+
+
+def test_report_that_fails_half_way_leaves_nothing_behind(tmp_path):
+    config = tmp_path / "e.toml"
+    config.write_text(GOOD, encoding="utf-8")
+    (tmp_path / "report" / "report.md").mkdir(parents=True)
+    before = snapshot(tmp_path)
+    result = invoke("report", config, "-o", tmp_path / "report")
+    check_refused(result, 1, "report.md': it is not a regular file", before, tmp_path)
+
+
+def test_plot_with_an_unknown_format(tmp_path):
+    config = tmp_path / "e.toml"
+    config.write_text(GOOD, encoding="utf-8")
+    before = snapshot(tmp_path)
+    for name in ("pic", "pic.jpeg2", "pic.pgf"):
+        check_refused(invoke("plot", config, "--kind", "locus", "-o", tmp_path / name), 1,
+                      "end the file name in one of", before, tmp_path)
+
+
+# ---- permissions: an ordinary user's view (as root, in a child process that becomes nobody) --
+
+
+def as_ordinary_user(args):
+    """Run the command line as it runs for a user without root's powers: directly when this
+    is not root, else in a forked child that drops to the user nobody (no new interpreter
+    needs to start, so root's private folders do not matter)."""
+    if os.geteuid() != 0:
+        result = invoke(*args)
+        return {"code": result.exit_code, "stdout": result.stdout, "stderr": result.stderr,
+                "exception": type(result.exception).__name__}
+    read, write = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # pragma: no cover - the child
+        try:
+            os.close(read)
+            os.setgroups([])
+            os.setgid(65534)
+            os.setuid(65534)
+            result = invoke(*args)
+            payload = {"code": result.exit_code, "stdout": result.stdout, "stderr": result.stderr,
+                       "exception": type(result.exception).__name__}
+            os.write(write, json.dumps(payload).encode())
+        finally:
+            os._exit(0)
+    os.close(write)
+    chunks = []
+    while chunk := os.read(read, 65536):
+        chunks.append(chunk)
+    os.close(read)
+    os.waitpid(pid, 0)
+    return json.loads(b"".join(chunks))
+
+
+@pytest.fixture
+def shared_folder():
+    """A folder every user may enter (pytest's own tmp_path is private to its owner)."""
+    folder = Path(tempfile.mkdtemp(prefix="balance-hostile-"))
+    folder.chmod(0o777)
+    yield folder
+    for path in [folder, *folder.rglob("*")]:
+        if path.is_dir() and not path.is_symlink():
+            path.chmod(0o777)
+    shutil.rmtree(folder)
+
+
+def check_user_refused(outcome, words, before, folder):
+    assert outcome["exception"] == "SystemExit" and outcome["code"] == 1, outcome
+    assert outcome["stdout"] == "" and outcome["stderr"].count("\n") == 1, outcome
+    assert words in outcome["stderr"], outcome["stderr"]
+    assert snapshot(folder) == before
+
+
+def test_folder_without_write_permission(shared_folder):
+    config = shared_folder / "e.toml"
+    config.write_text(GOOD, encoding="utf-8")
+    config.chmod(0o644)
+    locked = shared_folder / "locked"
+    locked.mkdir()
+    locked.chmod(0o555)
+    before = snapshot(shared_folder)
+    outcome = as_ordinary_user(["compare", config, "-o", locked / "out.json"])
+    check_user_refused(outcome, "Permission denied", before, shared_folder)
+
+
+def test_folder_without_read_permission(shared_folder):
+    folder = shared_folder / "secret"
+    folder.mkdir()
+    (folder / "e.toml").write_text(GOOD, encoding="utf-8")
+    folder.chmod(0o300)
+    before = snapshot(shared_folder)
+    outcome = as_ordinary_user(["compare", folder, "-o", shared_folder / "o.json"])
+    check_user_refused(outcome, "cannot read the folder (Permission denied)", before, shared_folder)
+
+
+def test_file_without_read_permission(shared_folder):
+    config = shared_folder / "e.toml"
+    config.write_text(GOOD, encoding="utf-8")
+    config.chmod(0o200)
+    before = snapshot(shared_folder)
+    outcome = as_ordinary_user(["compare", config, "-o", shared_folder / "o.json"])
+    check_user_refused(outcome, "cannot read the file (Permission denied)", before, shared_folder)
