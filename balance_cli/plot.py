@@ -217,7 +217,7 @@ def star_chains(result, order):
 def star(results, order=2, fig=None):
     """Each cylinder's forward (blue) and backward (red) phasor of ``order`` at θ = 0, chained
     tip to tail and labelled by cylinder; the dashed line is the engine's resultant. One small
-    picture per engine."""
+    picture per engine, with a scale bar in units of m_rec·r·ω²·n."""
     results = _results(results)
     columns, rows = grid_size(len(results))
     if fig is None:
@@ -245,15 +245,35 @@ def star(results, order=2, fig=None):
         ax.plot([0], [0], marker="o", color="k", markersize=3)
         ax.set_aspect("equal", adjustable="datalim")
         ax.set_title(r.engine.name, fontsize=9, y=1.0)
-        ax.locator_params(nbins=4)
-        ax.tick_params(labelsize=7)
-        ax.grid(True, linewidth=0.3)
+        # no axes (their ticks cost more than the rest of the picture): a scale bar instead
+        ax.axis("off")
+        _scale_bar(ax, chains)
     fig.suptitle(f"Order {order}: each cylinder's forward (blue) and backward (red) phasor at "
-                 "θ = 0, chained; dashed: the resultant\n(× m_rec·r·ω²·n; horizontal across the "
-                 "reference axis, vertical along it)", fontsize=9)
+                 "θ = 0, chained; dashed: the resultant\n(× m_rec·r·ω²·n, scale bar below each; "
+                 "horizontal across the reference axis, vertical along it)", fontsize=9)
     fig.subplots_adjust(left=0.06, right=0.97, bottom=0.04, top=1 - 1.1 / (CELL_IN * rows),
                         wspace=0.3, hspace=0.35)
     return fig
+
+
+def _nice_length(span):
+    """A round length (1, 2 or 5 times a power of ten) of about a quarter of ``span``."""
+    if span <= 0:
+        return 0.0
+    power = 10.0 ** math.floor(math.log10(span / 4))
+    return next(step * power for step in (5, 2, 1) if step * power <= span / 4 * 1.0001)
+
+
+def _scale_bar(ax, chains):
+    points = [0j] + [p for arrows in chains.values() for _, tail, head in arrows for p in (tail, head)]
+    xs, ys = [p.imag for p in points], [p.real for p in points]
+    span = max(max(xs) - min(xs), max(ys) - min(ys))
+    length = _nice_length(span)
+    if not length:
+        return
+    x0, y0 = min(xs), min(ys) - 0.08 * span
+    ax.plot([x0, x0 + length], [y0, y0], color="k", linewidth=1.5)
+    ax.text(x0 + length / 2, y0 - 0.02 * span, f"{length:g}", ha="center", va="top", fontsize=7)
 
 
 def firing(results, fig=None):
@@ -273,7 +293,7 @@ def firing(results, fig=None):
         where = lambda angle, radius: (radius * math.sin(2 * math.pi * angle / cycle),  # noqa: E731
                                        radius * math.cos(2 * math.pi * angle / cycle))
         ax.plot(np.sin(ring), np.cos(ring), color="0.7", linewidth=0.6)
-        for tick in np.arange(0, cycle, 90.0):
+        for tick in np.arange(0, cycle, cycle / 4):
             ax.text(*where(tick, 1.32), f"{tick:g}°", ha="center", va="center", fontsize=6,
                     color="0.5")
         for angle, number in zip(fire.angles_deg, fire.order):
