@@ -1,6 +1,9 @@
 """The analysis of one engine (shaking, firing, largest resultant) and the comparison of several."""
 
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+
+import numpy as np
 
 from .errors import AnalysisError
 from .firing import Firing, firing_sequence
@@ -62,25 +65,25 @@ class EngineResult:
         """The largest counterweighted resultant in Part III's per-cylinder units."""
         return self.counterweighted_force_n / self.per_cylinder_unit_n
 
-    def order(self, k) -> OrderComponents:
+    def order(self, k: int) -> OrderComponents:
         """Order ``k`` (1-based) of the forces and moments; KeyError outside 1..max_order."""
         return self.shaking.order(k)
 
-    def counterweighted_locus(self, order=None, points=None):
+    def counterweighted_locus(self, order: int | None = None, points: int | None = None) -> np.ndarray:
         """The resultant force over one revolution after an ideal crankshaft counterweight, N
         (complex: real along the reference axis); one order only if ``order`` is given.
         ``points`` defaults to four times the samples."""
         points = points or 4 * self.samples
         return self.shaking.locus(order, self.counterweight_cancels_first_order, points)
 
-    def percent_of(self, reference) -> float | None:
+    def percent_of(self, reference: "EngineResult") -> float | None:
         """The largest counterweighted resultant as a percentage of ``reference``'s; None when
         the reference has none (it is below its noise floor)."""
         if reference.counterweighted_force_n == 0.0:
             return None
         return 100.0 * self.counterweighted_per_cylinder / reference.counterweighted_per_cylinder
 
-    def to_dict(self, reference=None) -> dict:
+    def to_dict(self, reference: "EngineResult | None" = None) -> dict:
         """This engine's entry of ``compare --format json`` (SI units; see the README).
 
         ``reference`` is the result the percentage refers to (default: this one, as in the
@@ -111,7 +114,8 @@ def _above_floor(value, engine):
     return value if value >= engine.noise_floor_n else 0.0
 
 
-def analyse(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER) -> EngineResult:
+def analyse(engine: Engine, samples: int = DEFAULT_SAMPLES,
+            max_order: int = DEFAULT_MAX_ORDER) -> EngineResult:
     """Shaking forces and moments, firing and largest resultant of ``engine``.
 
     Parameters
@@ -149,7 +153,7 @@ def analyse(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER) -> Eng
     )
 
 
-def find_reference(results, name) -> int:
+def find_reference(results: "Sequence[EngineResult]", name: str | None) -> int:
     """Index of the reference engine among ``results``: by name (exact, else a unique
     case-insensitive prefix); the first when ``name`` is None."""
     if name is None:
@@ -197,7 +201,7 @@ class Comparison:
         }
 
 
-def compare(results, reference=None) -> Comparison:
+def compare(results: "Iterable[EngineResult]", reference: str | None = None) -> Comparison:
     """The comparison of analysed engines (:func:`analyse`, same settings); ``reference`` is
     the name (or a unique prefix) of the engine the percentages refer to, default the first."""
     results = tuple(results)

@@ -11,6 +11,7 @@ import math
 import os
 import re
 import tomllib
+from collections.abc import Iterable
 from pathlib import Path
 
 from .errors import ConfigError, ModelError, UnitError
@@ -130,7 +131,7 @@ class _Reader:
         return raw
 
 
-def load(path) -> Engine:
+def load(path: "str | os.PathLike[str]") -> Engine:
     """Read, check and build the engine described by the TOML file at ``path``.
 
     Raises
@@ -157,7 +158,7 @@ def load(path) -> Engine:
     return loads(text, name=str(path))
 
 
-def loads(text, name="<string>") -> Engine:
+def loads(text: str, name: str = "<string>") -> Engine:
     """The engine described by TOML ``text``; ``name`` stands for the file in messages and
     becomes the engine's ``config_path``."""
     try:
@@ -167,7 +168,7 @@ def loads(text, name="<string>") -> Engine:
     return build(data, name)
 
 
-def build(data, path="<config>") -> Engine:
+def build(data: dict, path: str = "<config>") -> Engine:
     """Build an engine from parsed TOML ``data`` (a dict), naming ``path`` in errors."""
     top = _Reader(path, data, "", _TOP_KEYS)
     name = top.string("name")
@@ -334,7 +335,7 @@ def _listed_cylinders(path, tables, banks, throws, reciprocating, knuckle, links
     return cylinders, keys
 
 
-def find_configs(paths):
+def find_configs(paths: "Iterable[str | os.PathLike[str]]") -> list[Path]:
     """Expand files and folders (recursively, sorted by path) into a list of .toml files.
 
     A path that does not exist is kept (reading it says so); a folder that cannot be read, or
@@ -362,6 +363,6 @@ def find_configs(paths):
     return found
 
 
-def load_many(paths):
+def load_many(paths: "Iterable[str | os.PathLike[str]]") -> list[Engine]:
     """Load every configuration under ``paths`` (see :func:`find_configs`)."""
     return [load(f) for f in find_configs(paths)]

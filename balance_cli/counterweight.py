@@ -9,6 +9,7 @@ m·e·(kω)²·e^{iφ} to the forward (or, counter-rotating, the backward) part 
 import cmath
 import math
 import numbers
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from .analysis import DOCUMENT_VERSION, EngineResult, analyse
@@ -163,7 +164,7 @@ class Balance:
 def plane_at_throw(engine, number) -> Plane:
     """The plane of throw ``number`` (1-based)."""
     if isinstance(number, bool) or not isinstance(number, numbers.Integral) \
-            or not 1 <= number <= len(engine.throws):
+            or not 1 <= int(number) <= len(engine.throws):
         raise CounterweightError(f"names throw {number!r}, but the engine has throws 1 to "
                                  f"{len(engine.throws)}; give throw numbers or axial positions",
                                  "planes")
@@ -315,9 +316,12 @@ def _checked_orders(shaft_orders, max_order):
     return sorted(set(orders))
 
 
-def counterweights(engine, planes=None, radius_m=None, balance_factor=None, shaft_orders=(),
-                   antivibrateur_radius_m=None, test_masses=False, samples=DEFAULT_SAMPLES,
-                   max_order=DEFAULT_MAX_ORDER) -> Balance:
+def counterweights(engine: "Engine | EngineResult",
+                   planes: "Sequence[int | float | Plane] | None" = None,
+                   radius_m: float | None = None, balance_factor: float | None = None,
+                   shaft_orders: "Sequence[int]" = (), antivibrateur_radius_m: float | None = None,
+                   test_masses: bool = False, samples: int = DEFAULT_SAMPLES,
+                   max_order: int = DEFAULT_MAX_ORDER) -> Balance:
     """Counterweights (and optionally antivibrateur, shafts, test masses) for ``engine``.
 
     Parameters
@@ -419,7 +423,7 @@ def counterweights(engine, planes=None, radius_m=None, balance_factor=None, shaf
                    tuple(shafts), current if orders else None, masses, samples)
 
 
-def counterweight_document(balances) -> dict:
+def counterweight_document(balances: "Sequence[Balance]") -> dict:
     """What ``counterweight --format json`` writes: one :meth:`Balance.to_dict` per engine."""
     balances = list(balances)
     return {"balance_version": DOCUMENT_VERSION, "samples": balances[0].samples,

@@ -2,6 +2,7 @@
 
 import itertools
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -9,6 +10,9 @@ from .errors import FiringError
 from .kinematics import piston_travel
 from .tolerances import TDC_PRECISION_DEG, UNIFORM_FIRING_DEG
 from .units import round_degrees, wrap_degrees
+
+if TYPE_CHECKING:
+    from .model import Engine
 
 __all__ = ["Firing", "tdc_angles", "firing_sequence"]
 
@@ -56,7 +60,7 @@ class Firing:
                 "max_deviation_deg": self.max_deviation_deg, "given": self.given}
 
 
-def tdc_angles(engine):
+def tdc_angles(engine: "Engine") -> dict[int, float]:
     """Engine angle (degrees in [0, 360)) at which each piston is farthest out, by cylinder number.
 
     The travel has one maximum a revolution: found on a 0.5° grid, then refined three times
@@ -158,7 +162,7 @@ def _most_uniform_four_stroke(numbers, tdc):
     return order, [float(angles[j]) for j in sequence[choice]]
 
 
-def firing_sequence(engine) -> Firing:
+def firing_sequence(engine: "Engine") -> Firing:
     """The engine's firing sequence: the configured order fitted to the crank, or the most
     uniform one the crank allows.
 
@@ -172,7 +176,7 @@ def firing_sequence(engine) -> Firing:
     numbers = sorted(tdc)
     given = engine.firing_order is not None
     if given:
-        order = tuple(engine.firing_order)
+        order = tuple(engine.firing_order or ())
         angles = _fit_order(order, tdc, cycle_deg)
     elif engine.cycle == 2:
         first = numbers[0]

@@ -10,8 +10,11 @@ Kinds: :func:`locus` (Tanaka's Fig. 9), :func:`spectrum`, :func:`star`, :func:`f
 """
 
 import math
+import os
 import sys
+from collections.abc import Iterable
 from pathlib import Path
+from typing import TYPE_CHECKING, cast
 
 import matplotlib
 import numpy as np
@@ -19,6 +22,12 @@ import numpy as np
 from .errors import PlotError
 from .output import write_bytes
 from .units import n_to_kgf
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from .analysis import EngineResult
 
 __all__ = ["KINDS", "FORMATS", "locus", "spectrum", "star", "firing", "save", "format_of",
            "grid_size", "locus_points", "spectrum_data", "star_chains", "colours"]
@@ -41,11 +50,11 @@ def _new_figure(size):
     return plt.figure(figsize=size, dpi=DPI)
 
 
-def _results(results):
-    results = list(results)
-    if not results:
+def _results(results) -> "list[EngineResult]":
+    chosen = list(results)
+    if not chosen:
         raise PlotError("needs at least one analysed engine", "results")
-    return results
+    return chosen
 
 
 def grid_size(count):
@@ -72,14 +81,14 @@ def locus_points(result, order=None):
     return force.imag, force.real
 
 
-def locus(results, order=None, ax=None):
+def locus(results: "Iterable[EngineResult]", order: int | None = None, ax: "Axes | None" = None) -> "Figure":
     """Locus of the resultant shaking force per cylinder over one revolution, every engine on
     one set of equal-scaled axes; ``order`` draws one order only."""
-    results = _results(results)
+    chosen = _results(results)
     if ax is None:
         ax = _new_figure((8, 8)).add_subplot()
-    fig = ax.figure
-    for r, colour in zip(results, colours(len(results))):
+    fig = cast("Figure", ax.figure)
+    for r, colour in zip(chosen, colours(len(chosen))):
         x, y = locus_points(r, order)
         ax.plot(np.append(x, x[0]), np.append(y, y[0]), label=r.engine.name, linewidth=1.6,
                 color=colour)
@@ -105,11 +114,11 @@ def spectrum_data(results, units="per-cylinder"):
     """
     if units not in SPECTRUM_UNITS:
         raise PlotError(f"must be one of {', '.join(SPECTRUM_UNITS)}, got {units!r}", "units")
-    results = _results(results)
+    chosen = _results(results)
     convert = n_to_kgf if units == "kgf" else (lambda x: x)
-    largest = max(r.per_cylinder_unit_n for r in results)
+    largest = max(r.per_cylinder_unit_n for r in chosen)
     engines = []
-    for r in results:
+    for r in chosen:
         per = r.per_cylinder_unit_n if units == "per-cylinder" else 1.0
         engines.append({
             "name": r.engine.name,
@@ -122,7 +131,7 @@ def spectrum_data(results, units="per-cylinder"):
     moment_floor = SPECTRUM_FLOOR * convert(largest)
     force_unit = {"per-cylinder": "× m_rec·r·ω² per cylinder", "N": "N", "kgf": "kgf"}[units]
     return {
-        "orders": np.arange(1, max(r.max_order for r in results) + 1),
+        "orders": np.arange(1, max(r.max_order for r in chosen) + 1),
         "engines": engines,
         "force_floor": force_floor, "moment_floor": moment_floor,
         "force_label": f"force ({force_unit})",
@@ -131,7 +140,8 @@ def spectrum_data(results, units="per-cylinder"):
     }
 
 
-def spectrum(results, units="per-cylinder", fig=None):
+def spectrum(results: "Iterable[EngineResult]", units: str = "per-cylinder",
+             fig: "Figure | None" = None) -> "Figure":
     """Forward (solid) and backward (hatched) amplitude of every order: forces, and free
     moments when any engine has one above the floor; grouped bars on a log axis."""
     from matplotlib.patches import Patch
@@ -214,18 +224,18 @@ def star_chains(result, order):
     return chains
 
 
-def star(results, order=2, fig=None):
+def star(results: "Iterable[EngineResult]", order: int = 2, fig: "Figure | None" = None) -> "Figure":
     """Each cylinder's forward (blue) and backward (red) phasor of ``order`` at θ = 0, chained
     tip to tail and labelled by cylinder; the dashed line is the engine's resultant. One small
     picture per engine, with a scale bar in units of m_rec·r·ω²·n."""
-    results = _results(results)
-    columns, rows = grid_size(len(results))
+    chosen = _results(results)
+    columns, rows = grid_size(len(chosen))
     if fig is None:
         fig = _new_figure((CELL_IN * columns, CELL_IN * rows))
     axes = fig.subplots(rows, columns, squeeze=False)
-    for ax in axes.flat[len(results):]:
+    for ax in axes.flat[len(chosen):]:
         ax.axis("off")
-    for ax, r in zip(axes.flat, results):
+    for ax, r in zip(axes.flat, chosen):
         chains = star_chains(r, order)
         for row, (part, colour) in enumerate((("forward", "C0"), ("backward", "C3"))):
             arrows = chains[part]
@@ -276,18 +286,18 @@ def _scale_bar(ax, chains):
     ax.text(x0 + length / 2, y0 - 0.02 * span, f"{length:g}", ha="center", va="top", fontsize=7)
 
 
-def firing(results, fig=None):
+def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "Figure":
     """Firing angles on a dial of one working cycle (720° or 360°, clockwise from the top),
     cylinder numbers outside, intervals in red."""
-    results = _results(results)
-    columns, rows = grid_size(len(results))
+    chosen = _results(results)
+    columns, rows = grid_size(len(chosen))
     if fig is None:
         fig = _new_figure((CELL_IN * columns, CELL_IN * rows))
     axes = fig.subplots(rows, columns, squeeze=False)
     for ax in axes.flat:
         ax.axis("off")
     ring = np.linspace(0, 2 * np.pi, 181)
-    for ax, r in zip(axes.flat, results):
+    for ax, r in zip(axes.flat, chosen):
         cycle = r.engine.cycle_deg
         fire = r.firing
         where = lambda angle, radius: (radius * math.sin(2 * math.pi * angle / cycle),  # noqa: E731
@@ -315,7 +325,7 @@ def firing(results, fig=None):
     return fig
 
 
-def format_of(path):
+def format_of(path: "str | os.PathLike[str]") -> str:
     """The file format :func:`save` writes to ``path``: its extension, one of :data:`FORMATS`."""
     suffix = Path(path).suffix.lower().lstrip(".")
     if suffix not in FORMATS:
@@ -325,7 +335,7 @@ def format_of(path):
     return suffix
 
 
-def save(fig, path):
+def save(fig: "Figure", path: "str | os.PathLike[str]") -> None:
     """Write ``fig`` to ``path`` atomically, in the format of its extension (see
     :func:`format_of`), then close it if pyplot manages it."""
     fmt = format_of(path)

@@ -2,6 +2,7 @@
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -10,6 +11,9 @@ from .harmonics import check_sampling, forward_backward, fourier, orders_of, syn
 from .kinematics import MassSet, engine_angles, mass_positions
 from .tolerances import minimum_samples
 from .units import wrap_degrees
+
+if TYPE_CHECKING:
+    from .model import Engine
 
 __all__ = ["DEFAULT_SAMPLES", "DEFAULT_MAX_ORDER", "MAX_SAMPLES", "OrderComponents", "Shaking",
            "shaking_forces", "ellipse", "check_settings"]
@@ -77,7 +81,7 @@ class OrderComponents:
     moment_forward: complex
     moment_backward: complex
 
-    def to_dict(self, noise_floor_n=0.0) -> dict:
+    def to_dict(self, noise_floor_n: float = 0.0) -> dict:
         """The order as ``compare --format json`` writes it (SI). Parts below
         ``noise_floor_n`` (N, or N·m for moments) are rounding noise: exact zeros, phase 0."""
         return {"order": self.order,
@@ -120,7 +124,7 @@ class Shaking:
     def max_order(self) -> int:
         return len(self.orders)
 
-    def order(self, k) -> OrderComponents:
+    def order(self, k: int) -> OrderComponents:
         """Order ``k`` (1-based); KeyError outside 1..max_order."""
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 1 <= k <= self.max_order:
             raise KeyError(f"order {k!r} is not among the orders analysed (1 to {self.max_order})")
@@ -150,16 +154,17 @@ class Shaking:
             raise ValueError(f"points must be a multiple of the {n} samples")
         return self.force(points // n, skip_forward_first)
 
-    def cylinder_phasors(self, order):
+    def cylinder_phasors(self, order: int) -> list[tuple[str, complex, complex]]:
         """Each cylinder's share of order ``order``: [(label, forward N, backward N)], the
         crank-pin masses together as "pins"; they add up to the engine's phasors (the star)."""
-        if self.mass_coefficients is None:
+        if self.mass_coefficients is None or self.masses is None:
             raise ValueError("this Shaking has no per-mass shares (a balancer was added)")
         self.order(order)
         shares = []
-        numbers = list(dict.fromkeys(int(n) for n in self.masses.cylinder if n > 0))
+        owners = self.masses.cylinder
+        numbers: list[int | str] = list(dict.fromkeys(int(n) for n in owners if n > 0))
         for number in numbers + ["pins"]:
-            mine = self.masses.cylinder <= 0 if number == "pins" else self.masses.cylinder == number
+            mine = owners <= 0 if number == "pins" else owners == number
             if number == "pins" and not mine.any():
                 continue
             shares.append((str(number), complex(self.mass_coefficients[mine, order].sum()),
@@ -189,7 +194,8 @@ class Shaking:
         return Shaking.from_coefficients(force, moment, self.max_order, self.sampling_ok)
 
 
-def shaking_forces(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER) -> Shaking:
+def shaking_forces(engine: "Engine", samples: int = DEFAULT_SAMPLES,
+                   max_order: int = DEFAULT_MAX_ORDER) -> Shaking:
     """Resultant shaking force and free moment of ``engine``, order by order.
 
     The force is the sum of the inertia forces −m·a of every point mass; the moment is
