@@ -31,9 +31,10 @@ bench: $(STAMP)
 validate: $(STAMP)
 	$(BIN)/python tools/validation_report.py
 
-# rewrite the golden regression tables after an intended change; never in CI
+# rewrite the golden regression tables after an intended change (balance regress --update);
+# never in CI
 regress-update: $(STAMP)
-	$(BIN)/python tools/regress.py --update
+	$(BIN)/balance regress tests/golden/compare.json configs --update
 	@git diff --stat -- tests/golden || true
 
 clean:

@@ -24,14 +24,17 @@ from .errors import (AnalysisError, BalanceError, ConfigError, CounterweightErro
                      FiringError, ModelError, OutputError, PlotError, SamplingWarning, UnitError)
 from .firing import Firing  # noqa: E402
 from .model import Cylinder, Engine, Throw  # noqa: E402
+from .regress import Moved, Regression, RegressError, regression  # noqa: E402
 from .shaking import OrderComponents, Shaking  # noqa: E402
 
 __all__ = [
-    "load", "loads", "load_many", "find_configs", "analyse", "compare", "counterweights", "plot",
+    "load", "loads", "load_many", "find_configs", "analyse", "compare", "counterweights",
+    "regression", "plot", "Regression", "Moved",
     "Engine", "Cylinder", "Throw", "EngineResult", "Comparison", "Shaking", "OrderComponents",
     "Firing", "Balance", "Counterweight", "Plane", "Shaft", "Antivibrateur",
     "BalanceError", "ConfigError", "ModelError", "FiringError", "AnalysisError",
-    "CounterweightError", "PlotError", "OutputError", "UnitError", "SamplingWarning",
+    "CounterweightError", "PlotError", "OutputError", "UnitError", "RegressError",
+    "SamplingWarning",
 ]
 
 

@@ -6,6 +6,7 @@ flags, the configuration file) and become one line on standard error with exit s
 """
 
 import contextlib
+import json
 import sys
 import warnings
 from pathlib import Path
@@ -20,9 +21,13 @@ from .counterweight import counterweight_document, counterweights
 from .errors import BalanceError, ConfigError, FiringError, ModelError, SamplingWarning
 from .firing import firing_sequence
 from .output import refuse_inputs, to_json, write_text
+from .regress import RegressError, check_baseline
+from .regress import regression as regression_of
 from .report.csvfile import balance_csv, compare_csv
 from .report.display import Scale
-from .report.tables import balance_tables, compare_tables, list_table, show_table
+from .report.junit import junit_xml
+from .report.tables import (balance_tables, compare_tables, list_table, regression_tables,
+                            show_table)
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings
 from .units import parse_quantity
 
@@ -411,6 +416,92 @@ def report(paths, output, with_html, reference, star_order, samples, max_order):
         written = write_report(target, comparison, balances, star_order, with_html)
     for path in written:
         click.echo(f"wrote {path}")
+
+
+def _read_baseline(path):
+    """The baseline document, checked; one RegressError line for anything else."""
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise RegressError(f"{path}: no such file; write a baseline with balance compare FILE|DIR "
+                           "--format json -o BASELINE.json") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise RegressError(f"{path}: cannot read the file ({getattr(exc, 'strerror', None) or exc})") from None
+    try:
+        document = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise RegressError(f"{path}: not JSON ({exc}); give what balance compare --format json "
+                           "wrote") from None
+    check_baseline(document, path)
+    return document
+
+
+def _baseline_configs(document, baseline):
+    """The configuration files the baseline names: as written (relative to the current folder),
+    else relative to the baseline's own folder."""
+    files = []
+    for engine in document["engines"]:
+        named = Path(engine["config"])
+        for candidate in (named, Path(baseline).parent / named):
+            if candidate.is_file():
+                files.append(candidate)
+                break
+        else:
+            raise RegressError(f"{baseline}: names the configuration {engine['config']!r} of "
+                               f"{engine['name']!r}, which no longer exists; restore it, or give "
+                               "FILE|DIR to check (and --update to record the change)")
+    return files
+
+
+@main.command()
+@click.argument("baseline", metavar="BASELINE.json")
+@click.argument("paths", nargs=-1, metavar="[FILE|DIR...]")
+@click.option("--rtol", type=float, default=0.0, show_default=True, metavar="R",
+              help="Loosen the tolerances: a force, moment or resultant may move by R times its "
+                   "baseline value, an angle by R radians (0 to below 1).")
+@click.option("--update", is_flag=True,
+              help="Rewrite BASELINE.json (atomically) with the engines as they are now, after "
+                   "printing what changed; exit status 0.")
+@click.option("--format", "fmt", type=click.Choice(["table", "markdown", "json", "junit"]),
+              default="table", show_default=True,
+              help="markdown suits a CI job summary; junit is JUnit XML for CI test reports.")
+@_OUTPUT
+def regress(baseline, paths, rtol, update, fmt, output):
+    """Check engines against a baseline comparison: exit status 1 when anything moved.
+
+    BASELINE.json is what `balance compare --format json` wrote; the engines are analysed again
+    with its samples and orders. FILE|DIR... are the configurations to check (default: the
+    ones the baseline names). Forces and moments may move by 1e-9 of each engine's
+    m_rec·r·ω²·n, phases by 1e-6° (where the phasor is above 1e-6 of it), firing angles by
+    1e-4°. Exit status: 0 nothing moved, 1 something moved (or an error), 2 a usage error.
+    """
+    with _reported():
+        document = _read_baseline(baseline)
+        files = find_configs(paths) if paths else _baseline_configs(document, baseline)
+        refuse_inputs([output], files + [Path(baseline)])
+    samples, max_order = document["samples"], document["max_order"]
+    _settings(samples, max_order)
+    results = _analyse_all(_load_all(files), samples, max_order)
+    names = [r.engine.name for r in results]
+    with _reported():
+        comparison = comparison_of(
+            results, document.get("reference") if document.get("reference") in names else None)
+        regression = regression_of(document, comparison, rtol, str(baseline))
+    if fmt == "json":
+        text = to_json(regression.to_dict())
+    elif fmt == "junit":
+        configs = {e["name"]: e["config"] for e in document["engines"]}
+        configs.update({r.engine.name: r.engine.config_path for r in results})
+        text = junit_xml(regression, configs)
+    else:
+        text = regression_tables(regression, fmt)
+    _write(output, text)
+    if update:
+        _write(baseline, to_json(comparison.to_dict()))
+        click.echo(f"wrote {baseline}", err=True)
+        return
+    if regression.moved:
+        raise SystemExit(1)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -1,39 +1,41 @@
-"""CI regression tables: the whole library's comparison against tests/golden/compare.json.
+"""CI regression tables: the whole library against tests/golden/compare.json, checked by
+`balance regress` itself (one implementation for the project and its users).
 
-On a difference the failure lists which engine, order and quantity moved and by how much.
-Tolerance: 1e-9 of each engine's m_rec·r·ω²·n for forces and moments (rounding differs
-between machines far below that), 1e-6° for phases of phasors above 1e-6 of it, 1e-4° for
-firing angles (the TDC search is good to about 2e-6°).
+Tolerances (balance_cli.regress): 1e-9 of each engine's m_rec·r·ω²·n for forces and moments
+(rounding differs between machines far below that), 1e-6° for phases of phasors above 1e-6 of
+it, 1e-4° for firing angles (the TDC search is good to about 2e-6°).
 `make regress-update` rewrites the file after an intended change.
 """
 
 import copy
 import json
-import sys
-from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT / "tools"))
+from click.testing import CliRunner
 
-import regress  # noqa: E402
+from balance_cli.cli import main
+from balance_cli.regress import regression as regress
+from conftest import ROOT
+
+GOLDEN = ROOT / "tests" / "golden" / "compare.json"
 
 
-def test_library_matches_golden_tables():
-    golden = json.loads(regress.GOLDEN.read_text(encoding="utf-8"))
-    moved = regress.differences(golden, regress.current())
-    assert not moved, "golden tables moved (make regress-update if intended):\n" + "\n".join(moved)
+def test_library_matches_golden_tables(monkeypatch):
+    monkeypatch.chdir(ROOT)   # the golden file names its configurations from the repository root
+    result = CliRunner().invoke(main, ["regress", "tests/golden/compare.json", "configs"])
+    assert result.exit_code == 0, "golden tables moved (make regress-update if intended):\n" + result.output
+    assert "nothing moved beyond tolerance (17 engines checked" in result.stdout
 
 
 def test_a_moved_value_is_reported_by_engine_order_and_quantity():
-    golden = json.loads(regress.GOLDEN.read_text(encoding="utf-8"))
+    golden = json.loads(GOLDEN.read_text(encoding="utf-8"))
     changed = copy.deepcopy(golden)
     engine = changed["engines"][0]
     engine["orders"][1]["force"]["max_N"] *= 1.001
     engine["firing"]["order"] = engine["firing"]["order"][::-1]
-    moved = regress.differences(golden, changed)
-    assert any(line.startswith(f"{engine['name']} order 2.force.max_N:") for line in moved)
-    assert any(".firing.order" in line for line in moved)
+    rows = regress(golden, changed).rows
+    assert {(r.engine, r.order, r.quantity) for r in rows} == {
+        (engine["name"], 2, "force.max_N"), (engine["name"], None, "firing order")}
     # rounding noise far below the tolerance is not reported
     quiet = copy.deepcopy(golden)
     quiet["engines"][0]["orders"][1]["force"]["max_N"] *= 1 + 1e-13
-    assert regress.differences(golden, quiet) == []
+    assert not regress(golden, quiet).moved

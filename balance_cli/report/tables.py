@@ -12,7 +12,7 @@ from ..units import kg_to_g, m_to_mm, rad_s_to_rpm, round_degrees
 from .display import markdown_text, plain_text
 
 __all__ = ["render", "compare_parts", "compare_tables", "order_rows", "order_headers",
-           "balance_tables", "balance_summary", "list_table", "show_table"]
+           "balance_tables", "balance_summary", "list_table", "show_table", "regression_tables"]
 
 _TABLEFMT = {"table": "simple", "markdown": "pipe"}
 
@@ -258,3 +258,43 @@ def balance_summary(balances):
     headers = ["Engine", "Counterweights at crank radius", "1st order left fwd (per cyl)",
                "1st order bwd (per cyl)", "Largest resultant left (per cyl)"]
     return headers, rows
+
+
+def _value_text(value):
+    if isinstance(value, float):
+        return f"{value:.9g}"
+    if isinstance(value, list):
+        return "-".join(map(str, value))
+    return str(value)
+
+
+def regression_tables(regression, fmt):
+    """The regression table as text or Markdown: what moved, then engines added and removed."""
+    heading = "### " if fmt == "markdown" else ""
+    safe = _safe(fmt)
+    checked = len(regression.checked)
+    if not regression.moved:
+        return (f"{heading}balance regress: nothing moved beyond tolerance ({checked} engines "
+                f"checked against {safe(regression.baseline_path)})\n")
+    moved_engines = len({row.engine for row in regression.rows})
+    out = [f"{heading}balance regress: {len(regression.rows)} quantities moved in {moved_engines} "
+           f"of {checked} engines; {len(regression.added)} added, {len(regression.removed)} "
+           f"removed (baseline {safe(regression.baseline_path)})", ""]
+    if regression.rows:
+        rows = []
+        for row in regression.rows:
+            change, relative = row.change, row.relative_change
+            rows.append([row.engine, "-" if row.order is None else str(row.order), row.quantity,
+                         _value_text(row.baseline), _value_text(row.now),
+                         "-" if change is None else f"{change:+.3g}",
+                         "-" if relative is None else f"{100 * relative:+.3g} %",
+                         "-" if row.tolerance is None else f"{row.tolerance:.3g}"])
+        out += [render(["Engine", "Order", "Quantity", "Baseline", "Now", "Change", "Relative",
+                        "Tolerance"], rows, fmt), ""]
+    for title, names in (("Engines added (not in the baseline)", regression.added),
+                         ("Engines removed (in the baseline, not now)", regression.removed)):
+        if names:
+            out += [f"{title}:", ""] + [f"- {safe(n)}" for n in names] + [""]
+    out.append("Units: N and N·m (SI), degrees for *_deg; change is now − baseline. Update the "
+               "baseline on purpose with --update.")
+    return "\n".join(out) + "\n"
