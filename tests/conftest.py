@@ -13,6 +13,29 @@ from balance_cli.model import Cylinder, Engine, Throw
 os.environ.setdefault("MPLBACKEND", "Agg")
 
 ROOT = Path(__file__).resolve().parent.parent
+
+#: a valid two-cylinder configuration that tests of bad input change one key at a time
+TWIN = """\
+name = "test twin"
+cycle = 4
+speed = "3000 rpm"
+crank_radius = "40 mm"
+rod_length = "140 mm"
+firing_order = [1, 2]
+
+[masses]
+reciprocating = "500 g"
+
+[[banks]]
+angle = 0
+
+[[throws]]
+phase = 0
+z = "0 mm"
+[[throws]]
+phase = 180
+z = "90 mm"
+"""
 CONFIGS = ROOT / "configs"
 PART3 = CONFIGS / "tanaka-part3"
 

@@ -9,29 +9,7 @@ import pytest
 from click.testing import CliRunner
 
 from balance_cli.cli import main
-from conftest import CONFIGS, PART3
-
-GOOD = textwrap.dedent("""\
-    name = "test twin"
-    cycle = 4
-    speed = "3000 rpm"
-    crank_radius = "40 mm"
-    rod_length = "140 mm"
-    firing_order = [1, 2]
-
-    [masses]
-    reciprocating = "500 g"
-
-    [[banks]]
-    angle = 0
-
-    [[throws]]
-    phase = 0
-    z = "0 mm"
-    [[throws]]
-    phase = 180
-    z = "90 mm"
-""")
+from conftest import CONFIGS, PART3, TWIN as GOOD
 
 LINKED = textwrap.dedent("""\
     name = "test V"

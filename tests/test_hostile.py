@@ -13,29 +13,7 @@ import pytest
 from click.testing import CliRunner
 
 from balance_cli.cli import main
-from conftest import CONFIGS
-
-GOOD = """\
-name = "hostile twin"
-cycle = 4
-speed = "3000 rpm"
-crank_radius = "40 mm"
-rod_length = "140 mm"
-firing_order = [1, 2]
-
-[masses]
-reciprocating = "500 g"
-
-[[banks]]
-angle = 0
-
-[[throws]]
-phase = 0
-z = "0 mm"
-[[throws]]
-phase = 180
-z = "90 mm"
-"""
+from conftest import CONFIGS, TWIN as GOOD
 
 LISTED = """\
 name = "listed V"
@@ -77,11 +55,11 @@ def replaced(old, new, base=GOOD):
 CONFIG_CASES = [
     ("not-toml", "name = \n", "not valid TOML"),
     ("empty", "", "name: missing"),
-    ("unclosed-string", replaced('"hostile twin"', '"hostile twin'), "not valid TOML"),
-    ("missing-name", replaced('name = "hostile twin"\n', ""), "name: missing"),
-    ("name-newline", replaced('"hostile twin"', '"hostile\\ntwin"'), "name: must be one line"),
-    ("name-empty", replaced('"hostile twin"', '"  "'), "name: expected a non-empty string"),
-    ("name-number", replaced('"hostile twin"', "12"), "name: expected a non-empty string"),
+    ("unclosed-string", replaced('"test twin"', '"hostile twin'), "not valid TOML"),
+    ("missing-name", replaced('name = "test twin"\n', ""), "name: missing"),
+    ("name-newline", replaced('"test twin"', '"hostile\\ntwin"'), "name: must be one line"),
+    ("name-empty", replaced('"test twin"', '"  "'), "name: expected a non-empty string"),
+    ("name-number", replaced('"test twin"', "12"), "name: expected a non-empty string"),
     ("cycle-3", replaced("cycle = 4", "cycle = 3"), "cycle: must be 2 or 4"),
     ("cycle-string", replaced("cycle = 4", 'cycle = "4"'), "cycle: expected a whole number"),
     ("cycle-bool", replaced("cycle = 4", "cycle = true"), "cycle: expected a whole number"),
@@ -266,7 +244,7 @@ def test_rotary_refuses_what_needs_a_turning_crank(tmp_path, args, words):
 def test_ambiguous_reference_lists_only_the_matches(tmp_path):
     for name in ("Alpha one", "Alpha two", "Beta"):
         (tmp_path / f"{name.replace(' ', '_')}.toml").write_text(
-            replaced('"hostile twin"', f'"{name}"'), encoding="utf-8")
+            replaced('"test twin"', f'"{name}"'), encoding="utf-8")
     before = snapshot(tmp_path)
     result = invoke("compare", tmp_path, "--reference", "alpha", "-o", tmp_path / "o.txt")
     check_refused(result, 1, "--reference 'alpha' matches several engines: Alpha one; Alpha two;",
