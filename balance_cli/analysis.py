@@ -56,9 +56,7 @@ class EngineResult:
 
     @property
     def counterweight_cancels_first_order(self) -> bool:
-        """An ideal crankshaft counterweight takes the forward first order away (not on a
-        rotary, whose crank does not turn)."""
-        return not self.engine.is_rotary
+        return _counterweight_cancels_first_order(self.engine)
 
     @property
     def counterweighted_per_cylinder(self) -> float:
@@ -73,7 +71,6 @@ class EngineResult:
         """The resultant force over one revolution after an ideal crankshaft counterweight, N
         (complex: real along the reference axis); one order only if ``order`` is given.
         ``points`` defaults to four times the samples."""
-        points = points or 4 * self.samples
         return self.shaking.locus(order, self.counterweight_cancels_first_order, points)
 
     def percent_of(self, reference: "EngineResult") -> float | None:
@@ -108,6 +105,12 @@ class EngineResult:
             "sampling_ok": self.shaking.sampling_ok,
             "orders": [o.to_dict(floor) for o in self.shaking.orders],
         }
+
+
+def _counterweight_cancels_first_order(engine):
+    """An ideal crankshaft counterweight takes the forward first order away (not on a rotary,
+    whose crank does not turn)."""
+    return not engine.is_rotary
 
 
 def _above_floor(value, engine):
@@ -149,7 +152,8 @@ def analyse(engine: Engine, samples: int = DEFAULT_SAMPLES,
         samples=samples,
         largest_force_n=_above_floor(shaking.largest_force(), engine),
         counterweighted_force_n=_above_floor(
-            shaking.largest_force(skip_forward_first=not engine.is_rotary), engine),
+            shaking.largest_force(skip_forward_first=_counterweight_cancels_first_order(engine)),
+            engine),
     )
 
 

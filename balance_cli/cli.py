@@ -17,11 +17,11 @@ from click.core import ParameterSource
 from . import __version__
 from .analysis import analyse, compare as comparison_of
 from .config import find_configs, load
-from .counterweight import counterweight_document, counterweights
+from .counterweight import Balances, check_options, counterweights
 from .errors import BalanceError, ConfigError, FiringError, ModelError, SamplingWarning
 from .firing import firing_sequence
-from .output import refuse_inputs, to_json, write_text
-from .regress import RegressError, check_baseline
+from .output import check_folder, refuse_inputs, to_json, write_text
+from .regress import RegressError, baseline_configs, check_baseline, check_rtol, compared_like
 from .regress import regression as regression_of
 from .report.csvfile import balance_csv, compare_csv
 from .report.display import Scale
@@ -38,7 +38,8 @@ FLAGS = {
     "samples": "--samples", "max_order": "--max-order", "reference": "--reference",
     "planes": "--planes", "radius_m": "--radius", "balance_factor": "--balance-factor",
     "shaft_orders": "--shafts", "antivibrateur_radius_m": "--antivibrateur-radius",
-    "test_masses": "--test-masses", "path": "--output", "units": "--units",
+    "test_masses": "--test-masses", "path": "--output", "units": "--units", "rtol": "--rtol",
+    "order": "--order",
 }
 
 _INPUTS = click.argument("paths", nargs=-1, required=True, metavar="FILE|DIR...")
@@ -57,27 +58,25 @@ _UNITS = click.option("--units", type=click.Choice(["N", "kgf"]), default="N", s
                       help="Units of absolute forces and of moments; kgf implies --absolute.")
 
 
-def _message(exc, engine=None):
-    """A library error in the command line's words: flags for parameters, the file it concerns."""
+def _message(exc, engine=None, flags=None):
+    """A library error in the command line's words: flags for parameters, and the file of the
+    engine it concerns."""
     if isinstance(exc, ConfigError):
         return str(exc)
     if isinstance(exc, FiringError):
         return str(ConfigError(engine.config_path, "firing_order", str(exc)))
-    text = exc.named(FLAGS)
-    if isinstance(exc, ModelError) and engine is not None:
-        return f"{engine.config_path}: {text}"
-    if engine is not None and exc.parameter not in (None, "samples", "max_order"):
-        return f"{engine.config_path}: {text}"
-    return text
+    text = exc.named({**FLAGS, **(flags or {})})
+    return f"{engine.config_path}: {text}" if engine is not None else text
 
 
 @contextlib.contextmanager
-def _reported(engine=None):
-    """Any library error inside becomes one line and exit status 1."""
+def _reported(engine=None, flags=None):
+    """Any library error inside becomes one line and exit status 1; ``flags`` names this
+    command's options where they differ from the usual ones."""
     try:
         yield
     except BalanceError as exc:
-        raise click.ClickException(_message(exc, engine)) from None
+        raise click.ClickException(_message(exc, engine, flags)) from None
 
 
 def _progress(items, label):
@@ -93,13 +92,17 @@ def _run_each(items, label, work):
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", SamplingWarning)
         results = []
-        with _progress(items, label) as bar:
-            for item in bar:
-                with _reported(getattr(item, "engine", item)):
-                    results.append(work(item))
-    for w in caught:
-        text = f"{w.message} (--samples)" if issubclass(w.category, SamplingWarning) else w.message
-        click.echo(f"warning: {text}", err=True)
+        try:
+            with _progress(items, label) as bar:
+                for item in bar:
+                    with _reported(getattr(item, "engine", item)):
+                        results.append(work(item))
+        finally:
+            # warnings of the engines done before an error are still worth seeing
+            for w in caught:
+                text = f"{w.message} (--samples)" if issubclass(w.category, SamplingWarning) \
+                    else w.message
+                click.echo(f"warning: {text}", err=True)
     return results
 
 
@@ -245,7 +248,7 @@ def _planes(text):
         return None
     planes = []
     for token in (t.strip() for t in text.split(",")):
-        if token.isdigit():
+        if token.isascii() and token.isdigit():
             planes.append(int(token))
         else:
             planes.append(_length_option(token, "--planes"))
@@ -310,6 +313,8 @@ def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, 
     orders = _orders_option(shafts)
     radius_m = _length_option(radius, "--radius")
     rotor = _length_option(antivibrateur_radius, "--antivibrateur-radius") if antivibrateur else None
+    with _reported():
+        check_options(radius_m, balance_factor, orders, rotor, max_order)
     engines = _load_all(files)
 
     def work(engine):
@@ -319,7 +324,7 @@ def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, 
     balances = _run_each(engines, "Balancing", work)
     scale = Scale.of(absolute, units)
     if fmt == "json":
-        text = to_json(counterweight_document(balances))
+        text = to_json(Balances(tuple(balances)).to_dict())
     elif fmt == "csv":
         text = balance_csv(balances, scale)
     else:
@@ -377,7 +382,7 @@ def plot(paths, kind, output, order, units, samples, max_order):
         elif kind == "spectrum":
             figure = drawing.spectrum(results, units)
         elif kind == "star":
-            figure = drawing.star(results, order or 2)
+            figure = drawing.star(results, order or min(2, max_order))
         else:
             figure = drawing.firing(results)
         drawing.save(figure, output)
@@ -391,8 +396,8 @@ def plot(paths, kind, output, order, units, samples, max_order):
               help="Also write report.html: one self-contained page, pictures inlined as SVG.")
 @click.option("--reference", default=None, metavar="NAME",
               help="Engine the percentages refer to (name or unique prefix); default the first.")
-@click.option("--star-order", default=2, show_default=True, type=click.IntRange(1),
-              help="Order drawn in the star diagram.")
+@click.option("--star-order", default=None, type=click.IntRange(1),
+              help="Order drawn in the star diagram  [default: 2, or 1 with --max-order 1].")
 @_SAMPLES
 @_MAX_ORDER
 def report(paths, output, with_html, reference, star_order, samples, max_order):
@@ -402,10 +407,11 @@ def report(paths, output, with_html, reference, star_order, samples, max_order):
     from .report.folder import REPORT_FILES, write_report
 
     target = Path(output)
-    if target.exists() and not target.is_dir():
-        raise click.ClickException(f"{output}: is not a folder; give a folder for the report")
+    with _reported():
+        check_folder(target)
     _guard([target] + [target / name for name in REPORT_FILES], files)
     _settings(samples, max_order)
+    star_order = min(2, max_order) if star_order is None else star_order
     if star_order > max_order:
         raise click.ClickException(f"--star-order {star_order} is above --max-order {max_order}")
     results = _analyse_all(_load_all(files), samples, max_order)
@@ -436,23 +442,6 @@ def _read_baseline(path):
     return document
 
 
-def _baseline_configs(document, baseline):
-    """The configuration files the baseline names: as written (relative to the current folder),
-    else relative to the baseline's own folder."""
-    files = []
-    for engine in document["engines"]:
-        named = Path(engine["config"])
-        for candidate in (named, Path(baseline).parent / named):
-            if candidate.is_file():
-                files.append(candidate)
-                break
-        else:
-            raise RegressError(f"{baseline}: names the configuration {engine['config']!r} of "
-                               f"{engine['name']!r}, which no longer exists; restore it, or give "
-                               "FILE|DIR to check (and --update to record the change)")
-    return files
-
-
 @main.command()
 @click.argument("baseline", metavar="BASELINE.json")
 @click.argument("paths", nargs=-1, metavar="[FILE|DIR...]")
@@ -477,22 +466,18 @@ def regress(baseline, paths, rtol, update, fmt, output):
     """
     with _reported():
         document = _read_baseline(baseline)
-        files = find_configs(paths) if paths else _baseline_configs(document, baseline)
+        files = find_configs(paths) if paths else baseline_configs(document, baseline)
         refuse_inputs([output], files + [Path(baseline)])
-    samples, max_order = document["samples"], document["max_order"]
-    _settings(samples, max_order)
-    results = _analyse_all(_load_all(files), samples, max_order)
-    names = [r.engine.name for r in results]
+        check_rtol(rtol)
+    _settings(document["samples"], document["max_order"])
+    results = _analyse_all(_load_all(files), document["samples"], document["max_order"])
     with _reported():
-        comparison = comparison_of(
-            results, document.get("reference") if document.get("reference") in names else None)
+        comparison = compared_like(document, results)
         regression = regression_of(document, comparison, rtol, str(baseline))
     if fmt == "json":
         text = to_json(regression.to_dict())
     elif fmt == "junit":
-        configs = {e["name"]: e["config"] for e in document["engines"]}
-        configs.update({r.engine.name: r.engine.config_path for r in results})
-        text = junit_xml(regression, configs)
+        text = junit_xml(regression)
     else:
         text = regression_tables(regression, fmt)
     _write(output, text)

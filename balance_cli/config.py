@@ -4,7 +4,9 @@ Every error names the file, the key (``banks[3].angle``) and what to do about it
 are errors: a typo must not be silently ignored. This module reads values (types, units,
 ranges, signs); the rules that relate values to each other (a rod longer than the crank, link
 rods on master rods of their own throw, one cylinder per bore, a firing order that lists every
-cylinder) are the model's, whose messages are translated here into the file's key names.
+cylinder) are the model's, whose messages are translated here into the file's key names;
+only the uniqueness of cylinder numbers is checked here too, because the key of a listed
+cylinder is found by its number.
 """
 
 import math
@@ -174,8 +176,6 @@ def build(data: dict, path: str = "<config>") -> Engine:
     name = top.string("name")
     source = top.string("source", required=False, default="")
     cycle = top.integer("cycle")
-    if cycle not in (2, 4):
-        raise top.error("cycle", f"must be 2 or 4 (strokes per cycle), got {cycle}")
     speed = top.quantity("speed", "angular speed")
     crank_radius = top.quantity("crank_radius", "length")
     rod_length = top.quantity("rod_length", "length")

@@ -17,10 +17,10 @@ from .errors import CounterweightError, UnitError
 from .model import Engine
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, Shaking
 from .tolerances import SAME_POSITION_M
-from .units import check_finite_range, rad_s_to_rpm, wrap_degrees
+from .units import check_finite_range, phasor_deg, rad_s_to_rpm
 
-__all__ = ["Plane", "Counterweight", "Shaft", "Antivibrateur", "Balance", "counterweights",
-           "counterweight_document", "plane_at_throw", "plane_at"]
+__all__ = ["Plane", "Counterweight", "Shaft", "Antivibrateur", "Balance", "Balances",
+           "counterweights", "check_options", "plane_at_throw", "plane_at"]
 
 #: the balance factor is a fraction of the reciprocating masses
 _BALANCE_FACTOR_RANGE = (0.0, 1.0)
@@ -38,7 +38,8 @@ class Plane:
 class Counterweight:
     """A mass on the crank (on the crankcase of a rotary) in one plane.
 
-    ``angle_deg`` is measured like a throw phase: from throw 1, positive with rotation.
+    ``angle_deg`` is measured like a throw phase: from throw 1, positive with rotation (from
+    the reference axis at θ = 0 when throw 1's phase is 0, as in every shipped configuration).
     """
 
     plane: Plane
@@ -64,10 +65,6 @@ class Shaft:
     mass_eccentricity_kgm: float
     phase_deg: float
     z_m: float
-
-    @property
-    def direction(self) -> str:
-        return "with the crank" if self.speed_ratio > 0 else "against the crank"
 
     def to_dict(self) -> dict:
         return {"order": self.order, "speed_ratio": self.speed_ratio,
@@ -174,7 +171,7 @@ def plane_at_throw(engine, number) -> Plane:
 def plane_at(engine, z_m) -> Plane:
     """A plane at an axial position, m; on a throw if one sits there."""
     try:
-        check_finite_range(float(z_m), "length")
+        check_finite_range(float(z_m), "length", smallest=False)
     except UnitError as exc:
         raise CounterweightError(f"has an axial position that is invalid: {exc}", "planes") from None
     for i, throw in enumerate(engine.throws, 1):
@@ -200,11 +197,6 @@ def default_planes(engine):
     return (first,) if math.isclose(first.z_m, last.z_m, abs_tol=SAME_POSITION_M) else (first, last)
 
 
-def _angle_deg(phasor):
-    """Direction of a phasor in [0, 360) degrees."""
-    return wrap_degrees(math.degrees(cmath.phase(phasor))) if phasor else 0.0
-
-
 def _checked_planes(engine, planes):
     if planes is None:
         return default_planes(engine)
@@ -220,12 +212,12 @@ def _checked_planes(engine, planes):
 def _positive_length(value, parameter):
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise CounterweightError(f"must be a length in metres, got {value!r}", parameter)
+    if value <= 0:
+        raise CounterweightError(f"must be greater than zero, got {value!r} m", parameter)
     try:
         check_finite_range(float(value), "length")
     except UnitError as exc:
         raise CounterweightError(f"is invalid: {exc}", parameter) from None
-    if value <= 0:
-        raise CounterweightError(f"must be greater than zero, got {value!r}", parameter)
     return float(value)
 
 
@@ -241,14 +233,14 @@ def _share(force, moment, planes, z_mean):
     return (first, force - first)
 
 
-def _rotating_target(engine, factor):
+def _rotating_target(engine, factor, pin_kg=0.0):
     """Forward first-order force and moment (N, N·m) of the classic per-throw counterweights:
-    rotating, crank and knuckle masses plus ``factor`` times the reciprocating ones, opposite
-    each throw at crank radius."""
+    rotating, crank and knuckle masses (and ``pin_kg`` more on every pin: an antivibrateur's)
+    plus ``factor`` times the reciprocating ones, opposite each throw at crank radius."""
     force = moment = 0j
     for index, throw in enumerate(engine.throws):
         on_throw = [c for c in engine.cylinders if c.throw == index]
-        mass = (engine.rotating_kg + engine.crank_kg + sum(c.knuckle_kg for c in on_throw)
+        mass = (engine.rotating_kg + engine.crank_kg + pin_kg + sum(c.knuckle_kg for c in on_throw)
                 + factor * sum(c.reciprocating_kg for c in on_throw))
         phasor = -mass * engine.crank_radius_m * engine.speed_rad_s**2 * cmath.exp(1j * throw.phase_rad)
         force += phasor
@@ -261,7 +253,7 @@ def _antivibrateur(engine, shaking, eccentricity):
     second = shaking.order(2).force_forward
     omega = engine.speed_rad_s
     me = abs(second) / (4 * omega**2)
-    rotor = Antivibrateur(me, eccentricity, _angle_deg(-second))
+    rotor = Antivibrateur(me, eccentricity, phasor_deg(-second))
     # its mass also rides on the crank pin: a forward first order like a rotating mass
     pin = rotor.mass_kg * engine.crank_radius_m * omega**2 * cmath.exp(1j * engine.throws[0].phase_rad)
     return rotor, -second, pin
@@ -287,7 +279,7 @@ def _shafts_for(order, shaking, planes, engine):
             if abs(phasor) < floor:
                 continue
             out.append(Shaft(order, sign * order, abs(phasor) / (order * engine.speed_rad_s) ** 2,
-                             _angle_deg(phasor), plane.z_m))
+                             phasor_deg(phasor), plane.z_m))
     return out
 
 
@@ -311,7 +303,7 @@ def _checked_orders(shaft_orders, max_order):
     for k in shaft_orders:
         if isinstance(k, bool) or not isinstance(k, numbers.Integral) or not 1 <= k <= max_order:
             raise CounterweightError(f"names order {k!r}, outside the orders analysed (1 to "
-                                     f"{max_order}: max_order)", "shaft_orders")
+                                     f"{max_order})", "shaft_orders")
         orders.append(int(k))
     return sorted(set(orders))
 
@@ -359,27 +351,20 @@ def counterweights(engine: "Engine | EngineResult",
     else:
         shaking = analyse(engine, samples, max_order).shaking
     max_order = shaking.max_order
+    check_options(radius_m, balance_factor, shaft_orders, antivibrateur_radius_m, max_order)
     planes = _checked_planes(engine, planes)
-    radius = engine.crank_radius_m if radius_m is None else _positive_length(radius_m, "radius_m")
-    if balance_factor is not None:
-        low, high = _BALANCE_FACTOR_RANGE
-        if isinstance(balance_factor, bool) or not isinstance(balance_factor, numbers.Real) \
-                or not low <= balance_factor <= high:
-            raise CounterweightError(f"must be a fraction of the reciprocating masses from "
-                                     f"{low:g} to {high:g}, got {balance_factor!r}", "balance_factor")
-        balance_factor = float(balance_factor)
+    radius = engine.crank_radius_m if radius_m is None else float(radius_m)
+    balance_factor = None if balance_factor is None else float(balance_factor)
     orders = _checked_orders(shaft_orders, max_order)
-    if antivibrateur_radius_m is not None:
-        _positive_length(antivibrateur_radius_m, "antivibrateur_radius_m")
-        if engine.is_rotary or len(engine.throws) != 1 or max_order < 2:
-            raise CounterweightError(
-                "needs a single-throw engine with a turning crank and max_order of at least 2: "
-                f"the rotor turns on the crank pin (this engine: {len(engine.throws)} throws, "
-                f"frame {engine.frame}, max_order {max_order})", "antivibrateur_radius_m")
-    if test_masses and engine.is_rotary:
-        raise CounterweightError("do not apply to a rotary engine: its crank stands still, so "
-                                 "there is no crankshaft to run on a balancing machine",
-                                 "test_masses")
+    if antivibrateur_radius_m is not None and (engine.is_rotary or len(engine.throws) != 1):
+        raise CounterweightError(
+            "needs a single-throw engine with a turning crank: the rotor turns on the crank pin "
+            f"(this engine: {len(engine.throws)} throws, frame {engine.frame})",
+            "antivibrateur_radius_m")
+    if engine.is_rotary and (test_masses or balance_factor is not None):
+        parameter = "test_masses" if test_masses else "balance_factor"
+        raise CounterweightError("does not apply to a rotary engine: its crank stands still, so "
+                                 "nothing rotates with it to balance", parameter)
     omega = engine.speed_rad_s
     z_mean = engine.mean_z_m
     current = shaking
@@ -395,13 +380,15 @@ def counterweights(engine: "Engine | EngineResult",
     if balance_factor is None:
         target_force, target_moment = -first.force_forward, -first.moment_forward
     else:
-        target_force, target_moment = _rotating_target(engine, balance_factor)
+        target_force, target_moment = _rotating_target(
+            engine, balance_factor, rotor.mass_kg if rotor is not None else 0.0)
+    throw_one = cmath.exp(-1j * engine.throws[0].phase_rad)
     weights = []
     for plane, phasor in zip(planes, _share(target_force, target_moment, planes, z_mean)):
         if abs(phasor) < engine.noise_floor_n:
             phasor = 0j  # rounding noise of a balanced first order: no counterweight
         weights.append(Counterweight(plane, abs(phasor) / (radius * omega**2), radius,
-                                     _angle_deg(phasor)))
+                                     phasor_deg(phasor * throw_one)))
         current = current.plus(1, forward=phasor, forward_moment=(plane.z_m - z_mean) * phasor)
     residual = current
 
@@ -423,8 +410,41 @@ def counterweights(engine: "Engine | EngineResult",
                    tuple(shafts), current if orders else None, masses, samples)
 
 
-def counterweight_document(balances: "Sequence[Balance]") -> dict:
-    """What ``counterweight --format json`` writes: one :meth:`Balance.to_dict` per engine."""
-    balances = list(balances)
-    return {"balance_version": DOCUMENT_VERSION, "samples": balances[0].samples,
-            "max_order": balances[0].max_order, "engines": [b.to_dict() for b in balances]}
+def check_options(radius_m=None, balance_factor=None, shaft_orders=(),
+                  antivibrateur_radius_m=None, max_order=DEFAULT_MAX_ORDER):
+    """Raise CounterweightError for options that no engine could use (the ones that depend on
+    the engine are checked by :func:`counterweights`); a front end calls it before analysing."""
+    if radius_m is not None:
+        _positive_length(radius_m, "radius_m")
+    if antivibrateur_radius_m is not None:
+        _positive_length(antivibrateur_radius_m, "antivibrateur_radius_m")
+    if balance_factor is not None:
+        low, high = _BALANCE_FACTOR_RANGE
+        if isinstance(balance_factor, bool) or not isinstance(balance_factor, numbers.Real) \
+                or not low <= balance_factor <= high:
+            raise CounterweightError(f"must be a fraction of the reciprocating masses from "
+                                     f"{low:g} to {high:g}, got {balance_factor!r}", "balance_factor")
+    _checked_orders(shaft_orders, max_order)
+    if antivibrateur_radius_m is not None and max_order < 2:
+        raise CounterweightError("needs max_order of at least 2: the rotor cancels the second "
+                                 "order", "antivibrateur_radius_m")
+
+
+@dataclass(frozen=True)
+class Balances:
+    """The counterweights of several engines, balanced with the same settings."""
+
+    balances: tuple
+
+    def __post_init__(self):
+        if not self.balances:
+            raise CounterweightError("needs at least one balanced engine", "balances")
+        if len({(b.samples, b.max_order) for b in self.balances}) > 1:
+            raise CounterweightError("must all be analysed with the same samples and max_order",
+                                     "balances")
+
+    def to_dict(self) -> dict:
+        """What ``counterweight --format json`` writes: one :meth:`Balance.to_dict` per engine."""
+        first = self.balances[0]
+        return {"balance_version": DOCUMENT_VERSION, "samples": first.samples,
+                "max_order": first.max_order, "engines": [b.to_dict() for b in self.balances]}

@@ -115,18 +115,18 @@ def _intervals(angles, cycle_deg):
     return [b - a for a, b in zip(angles, angles[1:])] + [cycle_deg - angles[-1] + angles[0]]
 
 
-def _scores(base, shifts, ideal):
+def _scores(base, shifts, ideal, cycle_deg):
     """Worst and summed-square deviation of the gaps, and firing sequence, for each row of shifts."""
     angles = base[None, :] + shifts
     sequence = np.argsort(angles, axis=1, kind="stable")
     ordered = np.take_along_axis(angles, sequence, axis=1)
-    gaps = np.diff(np.hstack([ordered, ordered[:, :1] + 720.0]), axis=1)
+    gaps = np.diff(np.hstack([ordered, ordered[:, :1] + cycle_deg]), axis=1)
     worst = np.round(np.abs(gaps - ideal).max(axis=1), 3)
     spread = np.round(((gaps - ideal) ** 2).sum(axis=1), 3)
     return worst, spread, sequence
 
 
-def _most_uniform_four_stroke(numbers, tdc):
+def _most_uniform_four_stroke(numbers, tdc, cycle_deg):
     """Choose for each cylinder which of its two TDCs fires, making the gaps most uniform.
 
     Up to ``_EXHAUSTIVE_LIMIT`` cylinders every choice is tried; beyond, a local search starts
@@ -136,7 +136,7 @@ def _most_uniform_four_stroke(numbers, tdc):
     first = numbers[0]
     base = np.array([_after(tdc[n], tdc[first]) for n in numbers])
     n = len(numbers)
-    ideal = 720.0 / n
+    ideal = cycle_deg / n
     if n <= _EXHAUSTIVE_LIMIT:
         shifts = np.array(list(itertools.product((0.0, 360.0), repeat=n - 1)))
         shifts = np.hstack([np.zeros((len(shifts), 1)), shifts])
@@ -146,14 +146,14 @@ def _most_uniform_four_stroke(numbers, tdc):
         current[ranks[1::2]] = 360.0
         flips = np.eye(n)[1:] * 360.0
         for _ in range(4 * n):
-            candidates = np.vstack([current, (current + flips) % 720.0])
-            worst, spread, _ = _scores(base, candidates, ideal)
+            candidates = np.vstack([current, (current + flips) % cycle_deg])
+            worst, spread, _ = _scores(base, candidates, ideal, cycle_deg)
             best = np.lexsort((spread, worst))[0]
             if best == 0:
                 break
             current = candidates[best]
         shifts = current[None, :]
-    worst, spread, sequence = _scores(base, shifts, ideal)
+    worst, spread, sequence = _scores(base, shifts, ideal, cycle_deg)
     best = np.lexsort((spread, worst))[0]
     tied = np.flatnonzero((worst == worst[best]) & (spread == spread[best]))
     choice = min(tied, key=lambda i: tuple(numbers[j] for j in sequence[i]))
@@ -183,7 +183,7 @@ def firing_sequence(engine: "Engine") -> Firing:
         order = tuple(sorted(numbers, key=lambda n: (_after(tdc[n], tdc[first]), n)))
         angles = [_after(tdc[n], tdc[first]) for n in order]
     else:
-        order, angles = _most_uniform_four_stroke(numbers, tdc)
+        order, angles = _most_uniform_four_stroke(numbers, tdc, cycle_deg)
     intervals = _intervals(angles, cycle_deg)
     ideal = cycle_deg / len(order)
     uniform = max(abs(i - ideal) for i in intervals) <= UNIFORM_FIRING_DEG

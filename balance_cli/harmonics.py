@@ -58,12 +58,13 @@ def check_sampling(position_coefficients, max_order, label=""):
     scale = (magnitude * k**2).max(axis=-1).sum()
     if scale == 0.0:
         return True
-    high = magnitude[:, k >= max(n // 4, max_order + 1)].max(axis=-1, initial=0.0).sum()
+    band = max(n // 4, max_order + 1)
+    high = magnitude[:, k >= band].max(axis=-1, initial=0.0).sum()
     excess = max_order**2 * high / scale
     if excess > ALIASING_TOLERANCE:
         warning = SamplingWarning(
             f"{label}{n} samples a revolution are too few for orders up to {max_order}: the "
-            f"orders above {n // 4} still carry {excess:.1e} of the largest inertia force; "
+            f"orders from {band} still carry {excess:.1e} of the largest inertia force; "
             "use more samples")
         warning.samples, warning.excess = n, excess
         warnings.warn(warning, stacklevel=3)

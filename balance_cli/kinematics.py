@@ -169,6 +169,7 @@ def mass_positions(engine, angles):
                 rows.append((pin, mass, throw.z_m, owner, index))
     positions = np.array([row[0] for row in rows])
     if engine.is_rotary:
-        # the crankcase frame turns forward by the engine angle
+        # the linkage was closed in the crankcase's frame, which itself turns forward by the
+        # engine angle: turn every position into the fixed frame the forces are wanted in
         positions = positions * np.exp(1j * angles)
     return MassSet(positions, *(np.array([row[i] for row in rows]) for i in range(1, 5)))

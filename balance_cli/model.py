@@ -140,7 +140,13 @@ class Engine:
     _by_number: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
-        object.__setattr__(self, "_by_number", {c.number: c for c in self.cylinders})
+        # sequences given as lists become tuples: the engine stays immutable and hashable
+        for name in ("bank_angles_rad", "throws", "cylinders", "firing_order"):
+            value = getattr(self, name)
+            if isinstance(value, list):
+                object.__setattr__(self, name, tuple(value))
+        object.__setattr__(self, "_by_number", {c.number: c for c in self.cylinders
+                                                if isinstance(c, Cylinder)})
         _check(self)
 
     def cylinder(self, number):
@@ -214,7 +220,7 @@ def _quantity(value, dimension, parameter, sign="positive", cylinder=None):
 
 def _angle(value, parameter, cylinder=None):
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
-            or abs(value) > 2 * math.pi + 1e-12:
+            or abs(value) > 2 * math.pi:
         where = f"cylinder {cylinder}: {parameter} " if cylinder is not None else ""
         raise ModelError(f"{where}must be a finite angle between -2π and 2π rad, got {value!r}",
                          None if where else parameter, cylinder)
@@ -224,7 +230,7 @@ def _check(engine):
     """Every rule an engine must satisfy, whether built in code or read from a file."""
     if not isinstance(engine.name, str) or not engine.name.strip() or not engine.name.isprintable():
         raise ModelError(f"must be a non-empty line of printable text, got {engine.name!r}", "name")
-    if engine.cycle not in (2, 4) or isinstance(engine.cycle, bool):
+    if isinstance(engine.cycle, bool) or not isinstance(engine.cycle, int) or engine.cycle not in (2, 4):
         raise ModelError(f"must be 2 or 4 (strokes per cycle), got {engine.cycle!r}", "cycle")
     if engine.frame not in FRAMES:
         raise ModelError(f'must be "fixed" or "rotary", got {engine.frame!r}', "frame")
@@ -243,13 +249,13 @@ def _check(engine):
         raise ModelError("needs at least one cylinder-axis direction", "bank_angles_rad")
     for angle in engine.bank_angles_rad:
         _angle(angle, "bank_angles_rad")
-    if not engine.throws:
-        raise ModelError("needs at least one crank throw", "throws")
+    if not engine.throws or not all(isinstance(t, Throw) for t in engine.throws):
+        raise ModelError("needs one or more Throw objects", "throws")
     for throw in engine.throws:
         _angle(throw.phase_rad, "throws")
         _quantity(throw.z_m, "length", "throws", sign="any")
-    if not engine.cylinders:
-        raise ModelError("needs at least one cylinder", "cylinders")
+    if not engine.cylinders or not all(isinstance(c, Cylinder) for c in engine.cylinders):
+        raise ModelError("needs one or more Cylinder objects", "cylinders")
     numbers = [c.number for c in engine.cylinders]
     if len(set(numbers)) != len(numbers):
         twice = next(n for n in numbers if numbers.count(n) > 1)
@@ -267,7 +273,8 @@ def _check(engine):
         bores[bore] = c.number
     if engine.firing_order is not None:
         order = list(engine.firing_order)
-        if sorted(order) != sorted(numbers) or not all(isinstance(n, int) for n in order):
+        if not all(isinstance(n, int) and not isinstance(n, bool) for n in order) \
+                or sorted(order) != sorted(numbers):
             raise ModelError(f"{order} is not a permutation of the cylinder numbers "
                              f"{sorted(numbers)}; list every cylinder exactly once", "firing_order")
 
@@ -276,6 +283,10 @@ def _check_cylinder(engine, c):
     n = c.number
     if isinstance(n, bool) or not isinstance(n, int) or n < 1:
         raise ModelError(f"cylinder numbers are whole numbers from 1, got {n!r}", "cylinders")
+    for index in (c.bank, c.throw):
+        if isinstance(index, bool) or not isinstance(index, int):
+            raise ModelError(f"cylinder {n}: bank and throw are 0-based whole-number indices, got "
+                             f"{index!r}", cylinder=n)
     if not 0 <= c.bank < len(engine.bank_angles_rad):
         raise ModelError(f"cylinder {n}: bank index {c.bank} is not one of the engine's "
                          f"{len(engine.bank_angles_rad)} banks", cylinder=n)

@@ -17,8 +17,8 @@ from pathlib import Path
 
 from .errors import OutputError
 
-__all__ = ["write_text", "write_bytes", "write_folder", "ensure_folder", "refuse_inputs",
-           "to_json"]
+__all__ = ["write_text", "write_bytes", "write_folder", "ensure_folder", "check_folder",
+           "refuse_inputs", "to_json"]
 
 
 def _reason(exc):
@@ -107,14 +107,19 @@ def write_text(target, text):
     write_bytes(target, lambda handle: handle.write(text.encode("utf-8")))
 
 
+def check_folder(target):
+    """Raise OutputError when ``target`` exists and is not a folder."""
+    if Path(target).exists() and not Path(target).is_dir():
+        raise OutputError(f"{str(target)!r} is not a folder; give a folder for the report")
+
+
 def write_folder(target, fill):
     """Fill a new temporary folder beside ``target`` with ``fill(folder)`` (which returns the
     names of the files it wrote), then move those files into ``target``: a folder that does not
     exist yet appears whole; in one that does, nothing is replaced until every file is ready
     and no destination is a folder. Returns the paths written in ``target``."""
     target = Path(target)
-    if target.exists() and not target.is_dir():
-        raise OutputError(f"{str(target)!r} is not a folder; give a folder for the report")
+    check_folder(target)
     real = Path(os.path.realpath(target))
     parent = ensure_folder(real.parent)
     try:

@@ -21,7 +21,8 @@ import numpy as np
 
 from .errors import PlotError
 from .output import write_bytes
-from .units import n_to_kgf
+from .report.display import Scale
+from .tolerances import SPECTRUM_FLOOR
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -39,8 +40,6 @@ FORMATS = ("png", "svg", "svgz", "pdf", "eps", "ps", "jpg", "jpeg", "tif", "tiff
 #: inches per subplot cell of the star and firing grids, and dots per inch of bitmaps
 CELL_IN = 4.0
 DPI = 100
-#: parts below this fraction of the largest m_rec·r·ω²·n are not drawn on the spectrum's log axis
-SPECTRUM_FLOOR = 1e-6
 SPECTRUM_UNITS = ("per-cylinder", "N", "kgf")
 
 
@@ -50,10 +49,16 @@ def _new_figure(size):
     return plt.figure(figsize=size, dpi=DPI)
 
 
-def _results(results) -> "list[EngineResult]":
+def _results(results, order=None) -> "list[EngineResult]":
+    """The results as a list; an ``order`` every one of them was analysed to."""
     chosen = list(results)
     if not chosen:
         raise PlotError("needs at least one analysed engine", "results")
+    if order is not None:
+        lowest = min(r.max_order for r in chosen)
+        if isinstance(order, bool) or not isinstance(order, int) or not 1 <= order <= lowest:
+            raise PlotError(f"{order!r} is not among the orders analysed (1 to {lowest}: raise "
+                            "max_order or choose a lower order)", "order")
     return chosen
 
 
@@ -84,7 +89,7 @@ def locus_points(result, order=None):
 def locus(results: "Iterable[EngineResult]", order: int | None = None, ax: "Axes | None" = None) -> "Figure":
     """Locus of the resultant shaking force per cylinder over one revolution, every engine on
     one set of equal-scaled axes; ``order`` draws one order only."""
-    chosen = _results(results)
+    chosen = _results(results, order)
     if ax is None:
         ax = _new_figure((8, 8)).add_subplot()
     fig = cast("Figure", ax.figure)
@@ -115,28 +120,28 @@ def spectrum_data(results, units="per-cylinder"):
     if units not in SPECTRUM_UNITS:
         raise PlotError(f"must be one of {', '.join(SPECTRUM_UNITS)}, got {units!r}", "units")
     chosen = _results(results)
-    convert = n_to_kgf if units == "kgf" else (lambda x: x)
-    largest = max(r.per_cylinder_unit_n for r in chosen)
+    scale = Scale.of(absolute=units != "per-cylinder", units="kgf" if units == "kgf" else "N")
     engines = []
     for r in chosen:
-        per = r.per_cylinder_unit_n if units == "per-cylinder" else 1.0
+        unit = r.per_cylinder_unit_n
         engines.append({
             "name": r.engine.name,
-            "force": np.array([[convert(abs(o.force_forward) / per), convert(abs(o.force_backward) / per)]
-                               for o in r.shaking.orders]),
-            "moment": np.array([[convert(abs(o.moment_forward)), convert(abs(o.moment_backward))]
-                                for o in r.shaking.orders]),
+            "force": np.array([[scale.force(abs(o.force_forward), unit),
+                                scale.force(abs(o.force_backward), unit)] for o in r.shaking.orders]),
+            "moment": np.array([[scale.moment(abs(o.moment_forward)),
+                                 scale.moment(abs(o.moment_backward))] for o in r.shaking.orders]),
         })
-    force_floor = SPECTRUM_FLOOR * (1.0 if units == "per-cylinder" else convert(largest))
-    moment_floor = SPECTRUM_FLOOR * convert(largest)
-    force_unit = {"per-cylinder": "× m_rec·r·ω² per cylinder", "N": "N", "kgf": "kgf"}[units]
+    # the floors: SPECTRUM_FLOOR of the largest engine's m_rec·r·ω²·n (times one metre)
+    largest = max(r.per_cylinder_unit_n for r in chosen)
     return {
         "orders": np.arange(1, max(r.max_order for r in chosen) + 1),
         "engines": engines,
-        "force_floor": force_floor, "moment_floor": moment_floor,
-        "force_label": f"force ({force_unit})",
-        "moment_label": f"free moment ({'kgf·m' if units == 'kgf' else 'N·m'})",
-        "has_moments": any((e["moment"] > moment_floor).any() for e in engines),
+        "force_floor": SPECTRUM_FLOOR * scale.force(largest, largest),
+        "moment_floor": SPECTRUM_FLOOR * scale.moment(largest),
+        "force_label": f"force ({scale.force_unit_text})",
+        "moment_label": f"free moment ({scale.moment_label})",
+        "has_moments": any((e["moment"] > SPECTRUM_FLOOR * scale.moment(largest)).any()
+                           for e in engines),
     }
 
 
@@ -208,6 +213,7 @@ def star_chains(result, order):
     """For :func:`star`: each part ("forward", "backward") of order ``order`` as a list of
     (label, tail, head) arrows per cylinder, chained tip to tail, in units of m_rec·r·ω²·n
     (complex: real along the reference axis); the last head is the engine's resultant."""
+    _results([result], order)
     shares = result.shaking.cylinder_phasors(order)
     unit = result.per_cylinder_unit_n
     floor = result.engine.noise_floor_n / unit
@@ -228,7 +234,7 @@ def star(results: "Iterable[EngineResult]", order: int = 2, fig: "Figure | None"
     """Each cylinder's forward (blue) and backward (red) phasor of ``order`` at θ = 0, chained
     tip to tail and labelled by cylinder; the dashed line is the engine's resultant. One small
     picture per engine, with a scale bar in units of m_rec·r·ω²·n."""
-    chosen = _results(results)
+    chosen = _results(results, order)
     columns, rows = grid_size(len(chosen))
     if fig is None:
         fig = _new_figure((CELL_IN * columns, CELL_IN * rows))

@@ -2,12 +2,13 @@
 
 A baseline is what ``balance compare --format json`` wrote (:meth:`Comparison.to_dict`); it
 records the samples and the highest order, so the engines are analysed again exactly alike.
-Engines are matched by name. Tolerances are those the project's own golden tables use:
+Engines are matched by name. Tolerances are those the project's own golden tables use
+(:mod:`balance_cli.tolerances`):
 
-- forces, moments and resultants: 1e-9 of the engine's m_rec·r·ω²·n (N, or N·m);
-- phases (and an ellipse's axis, modulo 180°): 1e-6°, compared only where the phasor exceeds
-  1e-6 of m_rec·r·ω²·n (below that its direction is rounding noise);
-- firing angles: 1e-4° (the top-dead-centre search is good to about 2e-6°).
+- forces, moments and resultants: NOISE_FLOOR (1e-9) of the engine's m_rec·r·ω²·n (N, or N·m);
+- phases (and an ellipse's axis, modulo 180°): PHASE_CHANGE_DEG (1e-6°), compared only where
+  the phasor exceeds PHASE_FLOOR (1e-6) of m_rec·r·ω²·n (below that its direction is noise);
+- firing angles: FIRING_CHANGE_DEG (1e-4°; the top-dead-centre search is good to 2e-6°).
 
 ``rtol`` loosens them for a design under development: a force, moment or resultant may then
 move by ``rtol`` times its baseline value, and an angle by ``rtol`` radians (a phasor changed by
@@ -16,22 +17,18 @@ a fraction ``rtol`` of itself turns by at most that much), whichever is larger.
 
 import math
 from dataclasses import dataclass, field
+from pathlib import Path
 
-from .analysis import DOCUMENT_VERSION, Comparison
+from .analysis import DOCUMENT_VERSION, Comparison, analyse, compare
 from .errors import BalanceError
+from .tolerances import FIRING_CHANGE_DEG, NOISE_FLOOR, PHASE_CHANGE_DEG, PHASE_FLOOR
+from .units import angle_change
 
-__all__ = ["RegressError", "Moved", "Regression", "regression", "check_baseline", "RELATIVE",
-           "PHASE_FLOOR", "PHASE_DEG", "FIRING_DEG"]
+__all__ = ["RegressError", "Moved", "Regression", "regression", "check_baseline", "check_rtol",
+           "baseline_configs", "compared_like", "reanalyse"]
 
-#: forces and moments may move by this fraction of the engine's m_rec·r·ω²·n
-RELATIVE = 1e-9
-#: phases are compared only where the phasor exceeds this fraction of m_rec·r·ω²·n
-PHASE_FLOOR = 1e-6
-PHASE_DEG = 1e-6
-#: firing angles come from a TDC search good to about 2e-6°
-FIRING_DEG = 1e-4
-
-_ENGINE_KEYS = {"name", "config", "cylinders", "unit_force_N", "firing", "orders"}
+#: what a quantity is: a value compared by size, a phase (period 360°) or an axis (period 180°)
+_PERIODS = {"value": None, "phase": 360.0, "axis": 180.0}
 
 
 class RegressError(BalanceError, ValueError):
@@ -43,7 +40,8 @@ class Moved:
     """One quantity that moved beyond its tolerance.
 
     ``order`` is None for quantities of the whole engine (resultants, firing); ``baseline`` and
-    ``now`` are numbers (SI, degrees for ``*_deg``) or, for the firing order and flags, values.
+    ``now`` are numbers (SI; degrees for angles, whose ``period`` is 360 or 180) or, for the
+    firing order and flags, plain values.
     """
 
     engine: str
@@ -52,20 +50,20 @@ class Moved:
     baseline: object
     now: object
     tolerance: float | None
+    period: float | None = None
 
     @property
     def change(self) -> float | None:
-        if _number(self.baseline) and _number(self.now):
-            if self.quantity.endswith("_deg"):
-                period = 180.0 if self.quantity.endswith("axis_deg") else 360.0
-                return _angle_change(self.baseline, self.now, period)
-            return self.now - self.baseline
-        return None
+        if not (_number(self.baseline) and _number(self.now)):
+            return None
+        if self.period:
+            return angle_change(self.baseline, self.now, self.period)
+        return self.now - self.baseline
 
     @property
     def relative_change(self) -> float | None:
         change = self.change
-        if change is None or not self.baseline or self.quantity.endswith("_deg"):
+        if change is None or self.period or not self.baseline:
             return None
         return change / abs(self.baseline)
 
@@ -77,14 +75,18 @@ class Moved:
 
 @dataclass(frozen=True)
 class Regression:
-    """The regression table: what moved, and the engines added and removed."""
+    """The regression table: what moved, and the engines added and removed.
+
+    ``configs`` maps every engine's name to its configuration file (baseline's or now).
+    """
 
     baseline_path: str
     rtol: float
     rows: tuple
     added: tuple
     removed: tuple
-    checked: tuple = field(default_factory=tuple)
+    checked: tuple = ()
+    configs: dict = field(default_factory=dict, compare=False)
 
     @property
     def moved(self) -> bool:
@@ -102,39 +104,100 @@ class Regression:
 
 
 def _number(value):
-    return isinstance(value, (int, float)) and not isinstance(value, bool)
+    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
 
 
-def _angle_change(a, b, period):
-    return (b - a + period / 2) % period - period / 2
+def _fail(where, problem):
+    raise RegressError(f"{where}: {problem}; write the baseline again with balance compare "
+                       "FILE|DIR --format json -o BASELINE.json")
 
 
 def check_baseline(document, path="<baseline>"):
-    """Raise RegressError unless ``document`` is a comparison balance wrote."""
-    where = f"{path}: "
+    """Raise RegressError unless ``document`` is a comparison balance wrote: every record a
+    regression table reads is there, with numbers where numbers belong."""
     for key in ("engines", "balance_version"):
         if not isinstance(document, dict) or key not in document:
-            raise RegressError(where + f"not a `balance compare --format json` document (no {key!r}); "
-                               "write one with balance compare FILE|DIR --format json -o BASELINE.json")
-    version = document.get("balance_version")
+            _fail(path, f"not a `balance compare --format json` document (no {key!r})")
+    version = document["balance_version"]
     if version != DOCUMENT_VERSION:
-        raise RegressError(where + f"written by balance_version {version!r}, but this balance reads "
-                                   f"version {DOCUMENT_VERSION}; write the baseline again with this version")
+        raise RegressError(f"{path}: written by balance_version {version!r}, but this balance "
+                           f"reads version {DOCUMENT_VERSION}; write the baseline again with this "
+                           "version")
     for key in ("samples", "max_order"):
-        if not isinstance(document.get(key), int) or isinstance(document.get(key), bool):
-            raise RegressError(where + f"has no whole number {key!r}; write the baseline again")
+        if isinstance(document.get(key), bool) or not isinstance(document.get(key), int):
+            _fail(path, f"has no whole number {key!r}")
     engines = document["engines"]
     if not isinstance(engines, list) or not engines:
-        raise RegressError(where + "lists no engines; write the baseline again")
+        _fail(path, "lists no engines")
+    names = []
     for i, engine in enumerate(engines, 1):
-        missing = sorted(_ENGINE_KEYS - set(engine)) if isinstance(engine, dict) else ["everything"]
+        where = f"{path}: engines[{i}]"
+        if not isinstance(engine, dict):
+            _fail(where, "is not an object")
+        missing = sorted({"name", "config", "cylinders", "unit_force_N", "firing", "orders"}
+                         - set(engine))
         if missing:
-            raise RegressError(where + f"engine {i} lacks {', '.join(missing)}; write the baseline again")
-    names = [e["name"] for e in engines]
+            _fail(where, f"lacks {', '.join(missing)}")
+        if not isinstance(engine["name"], str) or not isinstance(engine["config"], str):
+            _fail(where, "has a name or config that is not text")
+        if not _number(engine["unit_force_N"]) or not _number(engine["cylinders"]) \
+                or engine["unit_force_N"] <= 0 or engine["cylinders"] <= 0:
+            _fail(where, "has no positive unit_force_N and cylinders")
+        firing = engine["firing"]
+        if not isinstance(firing, dict) or not isinstance(firing.get("order"), list) \
+                or not all(_number(a) for a in firing.get("angles_deg", [])):
+            _fail(where, "has no firing order and angles")
+        orders = engine["orders"]
+        if not isinstance(orders, list):
+            _fail(where, "has no list of orders")
+        for o in orders:
+            parts = [o.get(part) for part in ("force", "moment")] if isinstance(o, dict) else []
+            if not isinstance(o, dict) or not _number(o.get("order")) \
+                    or not all(isinstance(p, dict) and all(_number(v) for v in p.values())
+                               for p in parts) or len(parts) != 2:
+                _fail(where, "has an order that is not {order, force: {...}, moment: {...}} of "
+                             "finite numbers")
+        names.append(engine["name"])
     twice = sorted({n for n in names if names.count(n) > 1})
     if twice:
-        raise RegressError(where + f"names {twice[0]!r} twice; engines are matched by name, so give "
-                                   "each configuration its own name")
+        raise RegressError(f"{path}: names {twice[0]!r} twice; engines are matched by name, so "
+                           "give each configuration its own name")
+
+
+def baseline_configs(document, path):
+    """The configuration files the baseline names: as written (relative to the current folder),
+    else relative to the baseline's own folder."""
+    files = []
+    for engine in document["engines"]:
+        named = Path(engine["config"])
+        for candidate in (named, Path(path).parent / named):
+            if candidate.is_file():
+                files.append(candidate)
+                break
+        else:
+            raise RegressError(f"{path}: names the configuration {engine['config']!r} of "
+                               f"{engine['name']!r}, which no longer exists; restore it, or give "
+                               "the files to check (and update the baseline to record the change)")
+    return files
+
+
+def compared_like(document, results) -> Comparison:
+    """Analysed ``results`` compared as the baseline compared its engines: with its reference
+    engine when they still hold it, else with the first."""
+    reference = document.get("reference")
+    return compare(results, reference if reference in [r.engine.name for r in results] else None)
+
+
+def reanalyse(document, engines) -> Comparison:
+    """``engines`` analysed with the baseline's samples and orders and compared like it."""
+    return compared_like(document, [analyse(e, document["samples"], document["max_order"])
+                                    for e in engines])
+
+
+def check_rtol(rtol):
+    """Raise RegressError unless ``rtol`` is a number from 0 up to (not including) 1."""
+    if isinstance(rtol, bool) or not isinstance(rtol, (int, float)) or not 0 <= rtol < 1:
+        raise RegressError(f"must be a number from 0 up to (not including) 1, got {rtol!r}", "rtol")
 
 
 def regression(baseline, current, rtol=0.0, baseline_path="<baseline>") -> Regression:
@@ -148,39 +211,51 @@ def regression(baseline, current, rtol=0.0, baseline_path="<baseline>") -> Regre
         the same engines analysed now, with the baseline's samples and max_order
     rtol : float
         loosen every tolerance (see the module's documentation); 0 for the strict defaults
+
+    Raises
+    ------
+    RegressError
+        a baseline that is not a comparison, an ``rtol`` out of range, or ``current`` analysed
+        with other samples or orders than the baseline
     """
     check_baseline(baseline, baseline_path)
-    if isinstance(rtol, bool) or not isinstance(rtol, (int, float)) or not 0 <= rtol < 1:
-        raise RegressError(f"must be a number from 0 up to (not including) 1, got {rtol!r}", "rtol")
+    check_rtol(rtol)
     now = current.to_dict() if isinstance(current, Comparison) else current
+    for key in ("samples", "max_order"):
+        if now.get(key) != baseline[key]:
+            raise RegressError(f"the engines were analysed with {key} = {now.get(key)!r}, the "
+                               f"baseline with {baseline[key]!r}; analyse them alike "
+                               "(regress.reanalyse does)")
     old = {e["name"]: e for e in baseline["engines"]}
     new = {e["name"]: e for e in now["engines"]}
     rows = []
     for name in [n for n in new if n in old]:
         rows += _engine_rows(name, old[name], new[name], rtol)
+    configs = {n: e["config"] for n, e in old.items()} | {n: e["config"] for n, e in new.items()}
     return Regression(baseline_path, float(rtol), tuple(rows),
                       tuple(n for n in new if n not in old), tuple(n for n in old if n not in new),
-                      tuple(n for n in new if n in old))
+                      tuple(n for n in new if n in old), configs)
 
 
 def _engine_rows(name, a, b, rtol):
+    # the JSON's per-cylinder unit, m_rec·r·ω²·n, as the README documents it
     scale = b["unit_force_N"] * b["cylinders"]
     rows = []
 
-    def number(quantity, x, y, tolerance, order=None):
+    def number(quantity, x, y, tolerance, kind="value", order=None):
+        period = _PERIODS[kind]
         if not (_number(x) and _number(y)):
             if x != y:
-                rows.append(Moved(name, order, quantity, x, y, None))
+                rows.append(Moved(name, order, quantity, x, y, None, period))
             return
-        if quantity.endswith("_deg"):
-            period = 180.0 if quantity.endswith("axis_deg") else 360.0
-            change = abs(_angle_change(x, y, period))
+        if period:
+            change = abs(angle_change(x, y, period))
             tolerance = max(tolerance, math.degrees(rtol))
         else:
             change = abs(y - x)
             tolerance = max(tolerance, rtol * abs(x))
         if change > tolerance:
-            rows.append(Moved(name, order, quantity, x, y, tolerance))
+            rows.append(Moved(name, order, quantity, x, y, tolerance, period))
 
     def same(quantity, x, y):
         if x != y:
@@ -188,15 +263,16 @@ def _engine_rows(name, a, b, rtol):
 
     for key in ("cylinders", "cycle", "frame"):
         same(key, a.get(key), b.get(key))
-    number("speed_rpm", a.get("speed_rpm"), b.get("speed_rpm"), 1e-9 * abs(a.get("speed_rpm") or 0))
-    number("unit_force_N", a["unit_force_N"], b["unit_force_N"], RELATIVE * scale)
+    number("speed_rpm", a.get("speed_rpm"), b.get("speed_rpm"),
+           NOISE_FLOOR * abs(a.get("speed_rpm") or 0.0))
+    number("unit_force_N", a["unit_force_N"], b["unit_force_N"], NOISE_FLOOR * scale)
     for key in ("largest_resultant_N", "counterweighted_resultant_N"):
-        number(key, a.get(key), b.get(key), RELATIVE * scale)
+        number(key, a.get(key), b.get(key), NOISE_FLOOR * scale)
     fa, fb = a["firing"], b["firing"]
     same("firing order", fa.get("order"), fb.get("order"))
     if fa.get("order") == fb.get("order"):
-        for number_, x, y in zip(fb["order"], fa.get("angles_deg", []), fb.get("angles_deg", [])):
-            number(f"firing angle of cylinder {number_} (deg)", x, y, FIRING_DEG)
+        for cylinder, x, y in zip(fb["order"], fa.get("angles_deg", []), fb.get("angles_deg", [])):
+            number(f"firing angle of cylinder {cylinder}", x, y, FIRING_CHANGE_DEG, "phase")
     same("firing uniform", fa.get("uniform"), fb.get("uniform"))
     same("sampling_ok", a.get("sampling_ok"), b.get("sampling_ok"))
     orders_a = {o["order"]: o for o in a["orders"]}
@@ -209,14 +285,16 @@ def _engine_rows(name, a, b, rtol):
         for part, unit in (("force", "N"), ("moment", "Nm")):
             x, y = orders_a[k][part], orders_b[k][part]
             for key in (f"forward_{unit}", f"backward_{unit}", f"max_{unit}", f"min_{unit}"):
-                number(f"{part}.{key}", x.get(key), y.get(key), RELATIVE * scale, k)
-            for phase, magnitude in (("forward_deg", f"forward_{unit}"),
-                                     ("backward_deg", f"backward_{unit}"), ("axis_deg", f"min_{unit}")):
-                size = max(x.get(magnitude, 0.0), y.get(magnitude, 0.0))
-                if phase == "axis_deg":
-                    # an axis exists where the ellipse is not a circle: max − min above the floor
-                    size = min(x.get(f"max_{unit}", 0.0) - x.get(magnitude, 0.0),
-                               y.get(f"max_{unit}", 0.0) - y.get(magnitude, 0.0))
+                number(f"{part}.{key}", x.get(key), y.get(key), NOISE_FLOOR * scale, order=k)
+            for key in ("forward", "backward"):
+                size = max(x.get(f"{key}_{unit}", 0.0), y.get(f"{key}_{unit}", 0.0))
                 if size >= PHASE_FLOOR * scale:
-                    number(f"{part}.{phase}", x.get(phase), y.get(phase), PHASE_DEG, k)
+                    number(f"{part}.{key}_deg", x.get(f"{key}_deg"), y.get(f"{key}_deg"),
+                           PHASE_CHANGE_DEG, "phase", k)
+            # an axis exists where the ellipse is not a circle: max − min above the floor
+            size = min(x.get(f"max_{unit}", 0.0) - x.get(f"min_{unit}", 0.0),
+                       y.get(f"max_{unit}", 0.0) - y.get(f"min_{unit}", 0.0))
+            if size >= PHASE_FLOOR * scale:
+                number(f"{part}.axis_deg", x.get("axis_deg"), y.get("axis_deg"), PHASE_CHANGE_DEG,
+                       "axis", k)
     return rows

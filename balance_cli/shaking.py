@@ -10,7 +10,7 @@ from .errors import AnalysisError
 from .harmonics import check_sampling, forward_backward, fourier, orders_of, synthesize
 from .kinematics import MassSet, engine_angles, mass_positions
 from .tolerances import minimum_samples
-from .units import wrap_degrees
+from .units import phasor_deg, wrap_degrees
 
 if TYPE_CHECKING:
     from .model import Engine
@@ -50,19 +50,14 @@ def ellipse(forward, backward):
     return a + b, abs(a - b), axis
 
 
-def _phase_deg(phasor):
-    """Angle of a phasor from the reference axis, positive with rotation, in [0, 360)."""
-    return wrap_degrees(math.degrees(math.atan2(phasor.imag, phasor.real))) if phasor else 0.0
-
-
 def _part_values(forward, backward, floor, unit):
     """One quantity's entry of an order: magnitudes, phases and ellipse, noise as exact zeros."""
     clean = lambda z: z if abs(z) >= floor else 0j  # noqa: E731
     forward, backward = clean(forward), clean(backward)
     largest, smallest, axis = ellipse(forward, backward)
     return {
-        f"forward_{unit}": abs(forward), "forward_deg": _phase_deg(forward),
-        f"backward_{unit}": abs(backward), "backward_deg": _phase_deg(backward),
+        f"forward_{unit}": abs(forward), "forward_deg": phasor_deg(forward),
+        f"backward_{unit}": abs(backward), "backward_deg": phasor_deg(backward),
         f"max_{unit}": largest, f"min_{unit}": smallest if smallest >= floor else 0.0,
         "axis_deg": math.degrees(axis),
     }
@@ -88,11 +83,6 @@ class OrderComponents:
                 "force": _part_values(self.force_forward, self.force_backward, noise_floor_n, "N"),
                 "moment": _part_values(self.moment_forward, self.moment_backward, noise_floor_n,
                                        "Nm")}
-
-    def is_zero(self, noise_floor_n) -> bool:
-        """Neither force nor moment above the noise floor."""
-        return max(abs(self.force_forward), abs(self.force_backward), abs(self.moment_forward),
-                   abs(self.moment_backward)) < noise_floor_n
 
 
 @dataclass(frozen=True)
@@ -141,24 +131,29 @@ class Shaking:
         """Largest magnitude of the resultant force over a revolution, N."""
         return float(np.abs(self.force(16, skip_forward_first)).max())
 
-    def locus(self, order=None, skip_forward_first=False, points=720):
-        """The resultant force over one revolution at ``points`` angles, N (complex: real along
-        the reference axis); one order only if ``order`` is given."""
-        theta = 2 * np.pi * np.arange(points) / points
+    def locus(self, order=None, skip_forward_first=False, points=None):
+        """The resultant force over one revolution at ``points`` angles (default four times
+        the samples; all orders need a multiple of them), N (complex: real along the reference
+        axis); one order only if ``order`` is given."""
+        n = self.force_coefficients.shape[-1]
+        points = 4 * n if points is None else points
+        if isinstance(points, bool) or not isinstance(points, int) or points < 1 \
+                or (order is None and points % n):
+            raise AnalysisError(f"must be a positive multiple of the {n} samples, got {points!r}",
+                                "points")
         if order is not None:
             o = self.order(order)
+            theta = 2 * np.pi * np.arange(points) / points
             forward = 0j if (skip_forward_first and order == 1) else o.force_forward
             return forward * np.exp(1j * order * theta) + o.force_backward * np.exp(-1j * order * theta)
-        n = self.force_coefficients.shape[-1]
-        if points % n:
-            raise ValueError(f"points must be a multiple of the {n} samples")
         return self.force(points // n, skip_forward_first)
 
     def cylinder_phasors(self, order: int) -> list[tuple[str, complex, complex]]:
         """Each cylinder's share of order ``order``: [(label, forward N, backward N)], the
         crank-pin masses together as "pins"; they add up to the engine's phasors (the star)."""
         if self.mass_coefficients is None or self.masses is None:
-            raise ValueError("this Shaking has no per-mass shares (a balancer was added)")
+            raise AnalysisError("has no per-mass shares once a balancer is added; ask the "
+                                "engine's own analysis", "cylinder_phasors")
         self.order(order)
         shares = []
         owners = self.masses.cylinder

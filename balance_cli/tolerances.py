@@ -4,7 +4,8 @@ Imports nothing: the ground floor of the package.
 """
 
 __all__ = ["NOISE_FLOOR", "ALIASING_TOLERANCE", "ANGLE_TOLERANCE_DEG", "TDC_PRECISION_DEG",
-           "UNIFORM_FIRING_DEG", "SAME_POSITION_M", "minimum_samples"]
+           "UNIFORM_FIRING_DEG", "SAME_POSITION_M", "PHASE_FLOOR", "PHASE_CHANGE_DEG",
+           "FIRING_CHANGE_DEG", "SPECTRUM_FLOOR", "minimum_samples"]
 
 #: A force below this fraction of m_rec·r·ω²·n (N), or a moment below it times one metre
 #: (N·m), is rounding noise and is reported as an exact zero. The FFT of exact positions is
@@ -29,6 +30,21 @@ UNIFORM_FIRING_DEG = 0.01
 
 #: Axial positions closer than this are the same plane.
 SAME_POSITION_M = 1e-9
+
+#: Regression tables compare a phase only where its phasor exceeds this fraction of
+#: m_rec·r·ω²·n: the FFT's rounding (about 1e-15 of the largest force) turns a phasor of that
+#: size by about 1e-9 rad (6e-8°), well inside PHASE_CHANGE_DEG; smaller ones are not compared.
+PHASE_FLOOR = 1e-6
+
+#: A phase (or an ellipse's axis) above PHASE_FLOOR may move by this between machines.
+PHASE_CHANGE_DEG = 1e-6
+
+#: A firing angle may move by this between machines: the TDC search is good to about 2e-6°.
+FIRING_CHANGE_DEG = 1e-4
+
+#: Pictures on a log axis leave out parts below this fraction of the largest m_rec·r·ω²·n,
+#: a thousand times the noise floor, so that no rounding noise is drawn.
+SPECTRUM_FLOOR = 1e-6
 
 
 def minimum_samples(max_order):

@@ -14,8 +14,8 @@ from .tolerances import ANGLE_TOLERANCE_DEG
 
 __all__ = [
     "DIMENSIONS", "LIMITS", "STANDARD_GRAVITY", "parse_quantity", "check_finite_range",
-    "rad_s_to_rpm", "rpm_to_rad_s", "m_to_mm", "kg_to_g", "n_to_kgf", "wrap_degrees",
-    "round_degrees",
+    "rad_s_to_rpm", "m_to_mm", "kg_to_g", "n_to_kgf", "wrap_degrees", "round_degrees",
+    "phasor_deg", "angle_change",
 ]
 
 #: m/s², the conventional value used to turn kilogram-force into newtons
@@ -104,11 +104,6 @@ def rad_s_to_rpm(speed_rad_s):
     return speed_rad_s / _RPM
 
 
-def rpm_to_rad_s(speed_rpm):
-    """Angular speed, rev/min -> rad/s."""
-    return speed_rpm * _RPM
-
-
 def m_to_mm(length_m):
     return length_m * 1e3
 
@@ -137,3 +132,14 @@ def round_degrees(angle_deg, digits, period=360.0):
     """``angle_deg`` rounded for display and kept in [0, ``period``): 359.996 shown with two
     digits is 0.00, not 360.00."""
     return wrap_degrees(round(angle_deg, digits), period, tolerance=0.5 * 10.0**-digits)
+
+
+def phasor_deg(phasor):
+    """Direction of a complex phasor from the reference axis, positive with rotation, in
+    [0, 360); 0 for a zero phasor."""
+    return wrap_degrees(math.degrees(math.atan2(phasor.imag, phasor.real))) if phasor else 0.0
+
+
+def angle_change(before_deg, after_deg, period=360.0):
+    """The signed turn from one angle to another, the short way round: in [−period/2, period/2)."""
+    return (after_deg - before_deg + period / 2) % period - period / 2

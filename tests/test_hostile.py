@@ -167,7 +167,8 @@ OPTION_CASES = [
 
 ROTARY_CASES = [
     ("antivibrateur-rotary", ["counterweight", "--antivibrateur"], "with a turning crank"),
-    ("test-masses-rotary", ["counterweight", "--test-masses"], "--test-masses do not apply to a rotary"),
+    ("test-masses-rotary", ["counterweight", "--test-masses"], "--test-masses does not apply to a rotary"),
+    ("balance-factor-rotary", ["counterweight", "--balance-factor", "0.5"], "--balance-factor does not apply to a rotary"),
 ]
 
 

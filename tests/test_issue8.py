@@ -291,7 +291,7 @@ def test_item16_library_configs_cite_papers_not_project_files():
 def test_item16_the_counterweight_table_says_why_a_rotary_gets_no_test_masses():
     result = invoke("counterweight", CONFIGS / "clerget-rotary.toml", "--test-masses")
     assert result.exit_code == 1
-    assert "do not apply to a rotary engine: its crank stands still" in result.stderr
+    assert "--test-masses does not apply to a rotary engine: its crank stands still" in result.stderr
 
 
 def test_item6_non_finite_values_are_refused_in_code():

@@ -119,7 +119,7 @@ def test_the_baseline_settings_are_used(project):
      "written by balance_version 2"),
     ('[1, 2]', "not a `balance compare --format json` document"),
     ('{"balance_version": 1, "samples": 256, "max_order": 8, "engines": [{"name": "x"}]}',
-     "engine 1 lacks config, cylinders, firing, orders, unit_force_N"),
+     "engines[1]: lacks config, cylinders, firing, orders, unit_force_N"),
 ])
 def test_a_baseline_that_is_not_a_comparison(tmp_path, content, words):
     baseline = tmp_path / "b.json"

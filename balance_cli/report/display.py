@@ -36,6 +36,16 @@ class Scale:
     def moment_label(self) -> str:
         return "kgf·m" if self.units == "kgf" else "N·m"
 
+    @property
+    def column_force(self) -> str:
+        """The force unit in a CSV column name: per_cyl, N or kgf."""
+        return self.units if self.absolute else "per_cyl"
+
+    @property
+    def column_moment(self) -> str:
+        """The moment unit in a CSV column name: Nm or kgfm."""
+        return self.moment_label.replace("·", "")
+
     def force(self, value_n, per_cylinder_unit_n):
         if not self.absolute:
             return value_n / per_cylinder_unit_n

@@ -20,12 +20,12 @@ def _failure_text(rows):
     return "\n".join(lines)
 
 
-def junit_xml(regression, configs):
-    """The XML text; ``configs`` maps engine names to their configuration files."""
+def junit_xml(regression):
+    """The XML text of a :class:`~balance_cli.regress.Regression`."""
     cases = []
     for name in list(regression.checked) + list(regression.added) + list(regression.removed):
         case = ET.Element("testcase", classname="balance.regress", name=name,
-                          file=configs.get(name, ""))
+                          file=regression.configs.get(name, ""))
         rows = regression.rows_of(name)
         if rows:
             failure = ET.SubElement(case, "failure", type="regression",

@@ -32,28 +32,25 @@ def _digits(scale):
     return 4 if not scale.absolute else 1 if scale.units == "N" else 2
 
 
-def order_values(order, unit_n, scale, floor):
-    """Force forward/backward/max/min, axis and moment forward/backward/max of one order in
-    display units, or None when the order is zero (below the noise floor)."""
-    values = order.to_dict(floor)
-    f, m = values["force"], values["moment"]
-    if f["max_N"] == 0.0 and m["max_Nm"] == 0.0:
-        return None
+def order_values(record, unit_n, scale):
+    """Force forward/backward/max/min, axis and moment forward/backward/max of one order's
+    record (``OrderComponents.to_dict``) in display units."""
+    f, m = record["force"], record["moment"]
     return ([scale.force(f[k], unit_n) for k in ("forward_N", "backward_N", "max_N", "min_N")]
             + [f["axis_deg"]]
             + [scale.moment(m[k]) for k in ("forward_Nm", "backward_Nm", "max_Nm")])
 
 
-def order_rows(name, shaking, engine, scale):
-    """Text rows (engine, order, force fwd/bwd/max/min/axis, moment fwd/bwd/max) of the orders
-    above the noise floor."""
+def order_rows(name, records, unit_n, scale):
+    """Text rows (engine, order, force fwd/bwd/max/min/axis, moment fwd/bwd/max) of the order
+    records that are not zero (the records hold noise as exact zeros)."""
     digits = _digits(scale)
     rows = []
-    for order in shaking.orders:
-        v = order_values(order, engine.per_cylinder_unit_n, scale, engine.noise_floor_n)
-        if v is None:
+    for record in records:
+        if record["force"]["max_N"] == 0.0 and record["moment"]["max_Nm"] == 0.0:
             continue
-        rows.append([name, str(order.order)] + [f"{x:.{digits}f}" for x in v[:4]]
+        v = order_values(record, unit_n, scale)
+        rows.append([name, str(record["order"])] + [f"{x:.{digits}f}" for x in v[:4]]
                     + [f"{round_degrees(v[4], 0, 180.0):.0f}"] + [f"{x:.2f}" for x in v[5:]])
     return rows
 
@@ -65,33 +62,31 @@ def order_headers(scale):
 
 
 def _intervals(firing):
-    mean = sum(firing.intervals_deg) / len(firing.intervals_deg)
-    if firing.uniform:
+    mean = sum(firing["intervals_deg"]) / len(firing["intervals_deg"])
+    if firing["uniform"]:
         return f"every {mean:g}"
-    return f"{min(firing.intervals_deg):.1f} to {max(firing.intervals_deg):.1f}"
+    return f"{min(firing['intervals_deg']):.1f} to {max(firing['intervals_deg']):.1f}"
 
 
-def _summary_rows(comparison, scale):
-    rows = []
-    for r in comparison.results:
-        largest = (f"{r.counterweighted_per_cylinder:.4f}" if not scale.absolute
-                   else f"{scale.force(r.counterweighted_force_n, r.per_cylinder_unit_n):.1f}")
-        percent = r.percent_of(comparison.reference)
-        rows.append([
-            r.engine.name, str(r.engine.n_cylinders), str(r.engine.cycle), r.engine.frame,
-            "-".join(map(str, r.firing.order)), _intervals(r.firing), largest,
-            "n/a" if percent is None else f"{percent:.1f}",
-        ])
-    return rows
+def _summary_row(record, unit_n, scale):
+    largest = (f"{record['counterweighted_resultant_per_cylinder']:.4f}" if not scale.absolute
+               else f"{scale.force(record['counterweighted_resultant_N'], unit_n):.1f}")
+    percent = record["percent_of_reference"]
+    return [record["name"], str(record["cylinders"]), str(record["cycle"]), record["frame"],
+            "-".join(map(str, record["firing"]["order"])), _intervals(record["firing"]), largest,
+            "n/a" if percent is None else f"{percent:.1f}"]
 
 
 def compare_parts(comparison, scale):
-    """The comparison as (title, headers, rows, note) tables, for any renderer."""
+    """The comparison as (title, headers, rows, note) tables, for any renderer; rendered from
+    the records of ``Comparison.to_dict``."""
     unit = ("per cylinder, in units of m_rec·r·ω²·n" if not scale.absolute
             else f"in {scale.units}")
-    reference = comparison.reference.engine.name
-    rows = [row for r in comparison.results
-            for row in order_rows(r.engine.name, r.shaking, r.engine, scale)]
+    records = comparison.to_dict()["engines"]
+    units = [r.per_cylinder_unit_n for r in comparison.results]
+    rows = [row for record, unit_n in zip(records, units)
+            for row in order_rows(record["name"], record["orders"], unit_n, scale)]
+    summary = [_summary_row(record, unit_n, scale) for record, unit_n in zip(records, units)]
     return [
         (f"Free forces and moments by order (forces {unit}; moments in {scale.moment_label})",
          order_headers(scale), rows,
@@ -100,10 +95,10 @@ def compare_parts(comparison, scale):
          f"({comparison.samples} samples a revolution)."),
         ("Firing and largest resultant (after an ideal crankshaft counterweight)",
          ["Engine", "Cyl", "Cycle", "Frame", "Firing order", "Intervals (°)",
-          f"Largest ({scale.force_label})", f"% of {reference}"],
-         _summary_rows(comparison, scale),
+          f"Largest ({scale.force_label})", f"% of {comparison.reference.engine.name}"],
+         summary,
          "n/a: the reference engine has no resultant to compare with." if any(
-             r.percent_of(comparison.reference) is None for r in comparison.results) else ""),
+             record["percent_of_reference"] is None for record in records) else ""),
     ]
 
 
@@ -197,44 +192,47 @@ def _plane_text(weight):
 
 
 def balance_tables(balances, scale, fmt):
-    """``balance counterweight`` as text or Markdown, engine by engine."""
+    """``balance counterweight`` as text or Markdown, engine by engine, rendered from the
+    records of ``Balance.to_dict``."""
     heading = "#### " if fmt == "markdown" else ""
     safe = _safe(fmt)
     unit = "per cylinder, × m_rec·r·ω²·n" if not scale.absolute else scale.units
     out = []
     for b in balances:
-        engine = b.engine
         record = b.to_dict()
-        how = ("cancelling the forward first order" if b.balance_factor is None else
-               f"balance factor {b.balance_factor:g}: rotating masses plus {b.balance_factor:g} of "
-               "the reciprocating ones per throw")
-        carrier = "crankcase" if engine.is_rotary else "crank"
-        out += [f"{heading}{safe(engine.name)}: counterweights on the {carrier}, {how}", "",
+        n_unit = b.engine.per_cylinder_unit_n
+        factor = record["balance_factor"]
+        how = ("cancelling the forward first order" if factor is None else
+               f"balance factor {factor:g}: rotating masses plus {factor:g} of the reciprocating "
+               "ones per throw")
+        carrier = "crankcase" if record["frame"] == "rotary" else "crank"
+        out += [f"{heading}{safe(record['name'])}: counterweights on the {carrier}, {how}", "",
                 _record_table(record["counterweights"], WEIGHT_COLUMNS, fmt), ""]
-        if b.antivibrateur is not None:
-            a = record["antivibrateur"]
+        a = record["antivibrateur"]
+        if a is not None:
             out += [f"Antivibrateur on the crank pin, turning at twice crank speed with the crank: "
                     f"M·e = {m_to_mm(a['mass_eccentricity_kgm']):.2f} kg·mm (M = {a['mass_kg']:.4f} "
                     f"kg at e = {m_to_mm(a['eccentricity_m']):g} mm), at "
                     f"{round_degrees(a['phase_deg'], 2):.2f}° when θ = 0; the counterweights above "
                     "include its mass.", ""]
-        first = b.residual.order(1).to_dict(engine.noise_floor_n)
+        first = record["residual"]["orders"][0]
         f, m = first["force"], first["moment"]
-        n_unit = engine.per_cylinder_unit_n
         out += [f"First order left: forward {scale.force(f['forward_N'], n_unit):.4g}, "
                 f"backward {scale.force(f['backward_N'], n_unit):.4g} ({unit}; no counterweight "
                 f"touches the backward part); moment {scale.moment(m['forward_Nm']):.4g} forward, "
                 f"{scale.moment(m['backward_Nm']):.4g} backward ({scale.moment_label}).", ""]
         out += ["Left after the counterweights:", "",
-                render(order_headers(scale), order_rows(engine.name, b.residual, engine, scale), fmt),
+                render(order_headers(scale),
+                       order_rows(record["name"], record["residual"]["orders"], n_unit, scale), fmt),
                 ""]
-        if b.after_shafts is not None:
+        if "after_shafts" in record:
             out += ["Balancer shafts:", "",
                     _record_table(record["shafts"], SHAFT_COLUMNS, fmt), "",
                     "Left after the shafts:", "",
-                    render(order_headers(scale), order_rows(engine.name, b.after_shafts, engine,
-                                                            scale), fmt), ""]
-        if b.test_masses_kg is not None:
+                    render(order_headers(scale),
+                           order_rows(record["name"], record["after_shafts"]["orders"], n_unit, scale),
+                           fmt), ""]
+        if "test_masses_kg" in record:
             rows = [[str(i + 1), f"{m:.4f}"] for i, m in enumerate(record["test_masses_kg"])]
             out += ["Balancing-machine test masses (hang on each crank pin; the crankshaft's own "
                     "unbalance excluded):", "",
@@ -246,15 +244,15 @@ def balance_summary(balances):
     """One row per engine of ``balance counterweight`` with default planes: (headers, rows)."""
     rows = []
     for b in balances:
-        engine = b.engine
-        n_unit = engine.per_cylinder_unit_n
-        first = b.residual.order(1).to_dict(engine.noise_floor_n)["force"]
+        record = b.to_dict()
+        n_unit = b.engine.per_cylinder_unit_n
+        first = record["residual"]["orders"][0]["force"]
         weights = "; ".join(
             f"{c['mass_kg']:.4g} kg at {round_degrees(c['angle_deg'], 1):.1f}° ({_plane_text(c)})"
-            for c in b.to_dict()["counterweights"])
-        rows.append([engine.name, weights, f"{first['forward_N'] / n_unit:.4f}",
+            for c in record["counterweights"])
+        rows.append([record["name"], weights, f"{first['forward_N'] / n_unit:.4f}",
                      f"{first['backward_N'] / n_unit:.4f}",
-                     f"{b.residual.largest_force() / n_unit:.4f}"])
+                     f"{record['residual']['largest_resultant_N'] / n_unit:.4f}"])
     headers = ["Engine", "Counterweights at crank radius", "1st order left fwd (per cyl)",
                "1st order bwd (per cyl)", "Largest resultant left (per cyl)"]
     return headers, rows
