@@ -18,6 +18,7 @@ a fraction ``rtol`` of itself turns by at most that much), whichever is larger.
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from .analysis import DOCUMENT_VERSION, Comparison, analyse, compare
 from .errors import BalanceError
@@ -47,8 +48,8 @@ class Moved:
     engine: str
     order: int | None
     quantity: str
-    baseline: object
-    now: object
+    baseline: Any
+    now: Any
     tolerance: float | None
     period: float | None = None
 
