@@ -211,6 +211,13 @@ def compare(results: "Iterable[EngineResult]", reference: str | None = None) -> 
     results = tuple(results)
     if not results:
         raise AnalysisError("needs at least one analysed engine", "results")
+    names = [r.engine.name for r in results]
+    twice = next((n for n in names if names.count(n) > 1), None)
+    if twice is not None:
+        files = ", ".join(r.engine.config_path for r in results if r.engine.name == twice)
+        raise AnalysisError(f"name {twice!r} more than once ({files}): engines are told apart by "
+                            "name (in percentages, regression tables, legends); give each "
+                            "configuration its own name, or compare each file once", "results")
     if len({(r.samples, r.max_order) for r in results}) > 1:
         raise AnalysisError("must all be analysed with the same samples and max_order", "results")
     return Comparison(results, find_reference(results, reference))

@@ -175,7 +175,8 @@ def validate(paths):
 @main.command("list")
 @click.argument("folder", required=False, default="configs", metavar="[DIR]")
 def list_(folder):
-    """List the engines in DIR (default: configs): name, cylinders, cycle, frame, source.
+    """List the engines in DIR (default: configs, in the current folder): name, cylinders,
+    cycle, frame, source.
 
     Invalid files are reported on standard error (exit status 1) after the listing.
     """
@@ -250,18 +251,26 @@ def _planes(text):
     for token in (t.strip() for t in text.split(",")):
         if token.isascii() and token.isdigit():
             planes.append(int(token))
-        else:
-            planes.append(_length_option(token, "--planes"))
+            continue
+        try:
+            planes.append(parse_quantity(token, "length"))
+        except BalanceError as exc:
+            if str(exc).startswith("cannot read"):
+                raise click.ClickException(
+                    f"--planes: cannot read {token!r}: give throw numbers (1, 2, ...) or axial "
+                    "positions with a unit such as '120 mm'") from None
+            raise click.ClickException(f"--planes: {exc}") from None
     return planes
 
 
 def _orders_option(text):
-    if not text:
+    if text is None:
         return ()
     try:
         return tuple(int(t) for t in text.split(","))
     except ValueError:
-        raise click.BadParameter("give orders as whole numbers, such as 1,2", param_hint="--shafts")
+        raise click.BadParameter(f"{text!r}: give orders as whole numbers, such as 1,2",
+                                 param_hint="--shafts") from None
 
 
 def _length_option(text, flag):
@@ -289,7 +298,7 @@ def _length_option(text, flag):
               help="Add Fraeys de Veubeke's rotor on the crank pin (twice crank speed), sized to "
                    "cancel the forward second order (single-throw engines with a turning crank).")
 @click.option("--antivibrateur-radius", default="40 mm", show_default=True, metavar="LENGTH",
-              help="Eccentricity of the antivibrateur's mass.")
+              help="Eccentricity of the antivibrateur's mass (with --antivibrateur).")
 @click.option("--test-masses", is_flag=True,
               help="Also give the balancing-machine mass to hang on each crank pin (not for a rotary).")
 @_SAMPLES
@@ -343,6 +352,22 @@ def _use_agg():
     matplotlib.use("Agg")
 
 
+@contextlib.contextmanager
+def _drawing():
+    """matplotlib warns once per character its font lacks (a name in Chinese, an emoji):
+    one line says so instead."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.filterwarnings("always", message=r"Glyph \d+ .*missing from font")
+        yield
+    missing = [w for w in caught if "missing from font" in str(w.message)]
+    if missing:
+        click.echo(f"warning: the pictures' font lacks {len(missing)} characters of the engine "
+                   "names; they are drawn as boxes", err=True)
+    for w in caught:
+        if w not in missing:
+            warnings.showwarning(w.message, w.category, w.filename, w.lineno)
+
+
 @main.command()
 @_INPUTS
 @click.option("--kind", type=click.Choice(["locus", "spectrum", "star", "firing"]), required=True,
@@ -350,8 +375,8 @@ def _use_agg():
                    "spectrum: forward and backward parts by order; star: each cylinder's phasor "
                    "of one order, chained; firing: firing angles on a dial.")
 @click.option("--output", "-o", required=True, metavar="PATH",
-              help="Picture file; its extension gives the format: .png, .svg, .pdf, .eps, .ps, "
-                   ".jpg, .tif, .webp, .svgz. Folders are created.")
+              help="Picture file; its extension gives the format: .png, .svg, .svgz, .pdf, .eps, "
+                   ".ps, .jpg, .jpeg, .tif, .tiff, .webp. Folders are created.")
 @click.option("--order", type=click.IntRange(1), default=None,
               help="locus: one order only (default all); star: the order drawn (default 2).")
 @click.option("--units", type=click.Choice(["per-cylinder", "N", "kgf"]), default="per-cylinder",
@@ -376,7 +401,7 @@ def plot(paths, kind, output, order, units, samples, max_order):
     with _reported():
         drawing.format_of(output)
     results = _analyse_all(_load_all(files), samples, max_order)
-    with _reported():
+    with _reported(), _drawing():
         if kind == "locus":
             figure = drawing.locus(results, order)
         elif kind == "spectrum":
@@ -386,6 +411,7 @@ def plot(paths, kind, output, order, units, samples, max_order):
         else:
             figure = drawing.firing(results)
         drawing.save(figure, output)
+    click.echo(f"wrote {output}", err=True)
 
 
 @main.command()
@@ -401,14 +427,18 @@ def plot(paths, kind, output, order, units, samples, max_order):
 @_SAMPLES
 @_MAX_ORDER
 def report(paths, output, with_html, reference, star_order, samples, max_order):
-    """Write a comparison report: tables, counterweights and pictures (Markdown, optionally HTML)."""
+    """Write a comparison report: tables, counterweights and pictures (Markdown, optionally HTML).
+
+    The files are written into DIR all at once at the end; files of the same names already in
+    DIR are replaced, others are left alone.
+    """
     files = _inputs(paths)
     _use_agg()
     from .report.folder import REPORT_FILES, write_report
 
-    target = Path(output)
     with _reported():
-        check_folder(target)
+        check_folder(output)   # the text given: Path("") would be the current folder
+    target = Path(output)
     _guard([target] + [target / name for name in REPORT_FILES], files)
     _settings(samples, max_order)
     star_order = min(2, max_order) if star_order is None else star_order
@@ -418,10 +448,10 @@ def report(paths, output, with_html, reference, star_order, samples, max_order):
     with _reported():
         comparison = comparison_of(results, reference)
     balances = _run_each(results, "Balancing", counterweights)
-    with _reported():
+    with _reported(), _drawing():
         written = write_report(target, comparison, balances, star_order, with_html)
     for path in written:
-        click.echo(f"wrote {path}")
+        click.echo(f"wrote {path}", err=True)
 
 
 def _read_baseline(path):
@@ -435,9 +465,11 @@ def _read_baseline(path):
         raise RegressError(f"{path}: cannot read the file ({getattr(exc, 'strerror', None) or exc})") from None
     try:
         document = json.loads(text)
-    except json.JSONDecodeError as exc:
-        raise RegressError(f"{path}: not JSON ({exc}); give what balance compare --format json "
-                           "wrote") from None
+    except (json.JSONDecodeError, RecursionError, ValueError) as exc:
+        # ValueError: an integer of thousands of digits; RecursionError: nesting without end
+        reason = exc if isinstance(exc, json.JSONDecodeError) else "not a document balance wrote"
+        raise RegressError(f"{path}: not JSON that balance can read ({reason}); give what "
+                           "balance compare --format json wrote") from None
     check_baseline(document, path)
     return document
 
@@ -460,9 +492,11 @@ def regress(baseline, paths, rtol, update, fmt, output):
 
     BASELINE.json is what `balance compare --format json` wrote; the engines are analysed again
     with its samples and orders. FILE|DIR... are the configurations to check (default: the
-    ones the baseline names). Forces and moments may move by 1e-9 of each engine's
-    m_rec·r·ω²·n, phases by 1e-6° (where the phasor is above 1e-6 of it), firing angles by
-    1e-4°. Exit status: 0 nothing moved, 1 something moved (or an error), 2 a usage error.
+    ones the baseline names); engines are matched by name, and a baseline engine that is not
+    among them counts as removed, one not in the baseline as added. Forces and moments may
+    move by 1e-9 of each engine's m_rec·r·ω²·n, phases by 1e-6° (where the phasor is above
+    1e-6 of it), firing angles by 1e-4°. Exit status: 0 nothing moved, 1 something moved (or
+    an error), 2 a usage error.
     """
     with _reported():
         document = _read_baseline(baseline)

@@ -88,7 +88,7 @@ class _Reader:
             raise self.error(key, f"must be greater than zero, got {raw!r}")
         if sign == "non-negative" and value < 0.0:
             raise self.error(key, f"must not be negative, got {raw!r}")
-        return value
+        return value + 0.0  # -0 reads as 0
 
     def degrees(self, key, required=True):
         raw = self._get(key, required)
@@ -99,7 +99,7 @@ class _Reader:
         if abs(raw) > _ANGLE_LIMIT_DEG:
             raise self.error(key, f"must be between -{_ANGLE_LIMIT_DEG:g} and "
                                   f"{_ANGLE_LIMIT_DEG:g} degrees, got {raw!r}")
-        return float(raw)
+        return float(raw) + 0.0  # -0 reads as 0
 
     def integer(self, key, required=True, default=None, low=None, high=None):
         raw = self._get(key, required)
@@ -143,15 +143,20 @@ def load(path: "str | os.PathLike[str]") -> Engine:
     """
     path = Path(path)
     try:
+        # a FIFO or a device would block or never end: only regular files are configurations
+        if path.exists() and not path.is_file() and not path.is_dir():
+            raise ConfigError(path, "", "is not a regular file; give a .toml file")
         data = path.read_bytes()
     except FileNotFoundError:
         raise ConfigError(path, "", "no such file; check the path") from None
     except IsADirectoryError:
         raise ConfigError(path, "", "is a folder; give a .toml file (or the folder where a "
                                     "command takes folders)") from None
-    except OSError as exc:
-        raise ConfigError(path, "", f"cannot read the file ({exc.strerror or exc}); check its "
+    except PermissionError as exc:
+        raise ConfigError(path, "", f"cannot read the file ({exc.strerror}); check its "
                                     "permissions") from None
+    except OSError as exc:
+        raise ConfigError(path, "", f"cannot read the file ({exc.strerror or exc})") from None
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
@@ -356,7 +361,8 @@ def find_configs(paths: "Iterable[str | os.PathLike[str]]") -> list[Path]:
             unreadable(PermissionError(13, "Permission denied", str(p)))
         for folder, subfolders, names in os.walk(p, onerror=unreadable):
             subfolders.sort()
-            files += [Path(folder) / n for n in names if n.endswith(".toml")]
+            files += [Path(folder) / n for n in names
+                      if n.endswith(".toml") and (Path(folder) / n).is_file()]
         if not files:
             raise ConfigError(p, "", "no .toml configuration found in this folder")
         found += sorted(files)

@@ -354,7 +354,7 @@ def counterweights(engine: "Engine | EngineResult",
     check_options(radius_m, balance_factor, shaft_orders, antivibrateur_radius_m, max_order)
     planes = _checked_planes(engine, planes)
     radius = engine.crank_radius_m if radius_m is None else float(radius_m)
-    balance_factor = None if balance_factor is None else float(balance_factor)
+    balance_factor = None if balance_factor is None else float(balance_factor) + 0.0  # not -0
     orders = _checked_orders(shaft_orders, max_order)
     if antivibrateur_radius_m is not None and (engine.is_rotary or len(engine.throws) != 1):
         raise CounterweightError(

@@ -72,10 +72,11 @@ def tdc_angles(engine: "Engine") -> dict[int, float]:
     best = np.array([grid[np.argmax(travel[n])] for n in numbers])
     step = grid[1]
     for _ in range(3):
-        # row i is a fine grid round cylinder i's best angle; keep only cylinder i's travel there
-        local = best[:, None] + np.linspace(-step, step, 101)[None, :]
-        travel = piston_travel(engine, local)
-        best = np.array([local[i, np.argmax(travel[n][i])] for i, n in enumerate(numbers)])
+        # a fine grid round each cylinder's best angle, that cylinder alone: memory stays
+        # linear in the number of cylinders
+        for i, n in enumerate(numbers):
+            local = best[i] + np.linspace(-step, step, 101)
+            best[i] = local[np.argmax(piston_travel(engine, local, [n])[n])]
         step /= 50
     crank = np.degrees(best)
     angles = -crank if engine.is_rotary else crank

@@ -59,10 +59,10 @@ def engine_angles(samples):
 def _slider(point, axis_angle, length, offset, cylinder, crank_angles):
     """Piston pin on a cylinder axis, joined by a rod of ``length`` to ``point``.
 
-    Returns the pin position and the travel along the axis (both exact), and the
-    squared half-chord ``length² − (offset − y)²``, which must stay positive for the
-    rod to reach the axis: where it does not, the linkage cannot be assembled and
-    ModelError names the cylinder and the crank angle.
+    Returns the pin position and the travel along the axis (both exact). The squared
+    half-chord ``length² − (offset − y)²`` must stay positive for the rod to reach the axis:
+    where it does not, the linkage cannot be assembled and ModelError names the cylinder and
+    the crank angle.
     """
     turn = np.exp(-1j * axis_angle)
     local = point * turn
@@ -70,7 +70,7 @@ def _slider(point, axis_angle, length, offset, cylinder, crank_angles):
     if reach.size and reach.min() <= 0.0:
         _cannot_reach(cylinder, np.asarray(crank_angles).flat[int(np.argmin(reach))])
     travel = local.real + np.sqrt(reach)
-    return (travel + 1j * offset) / turn, travel, reach
+    return (travel + 1j * offset) / turn, travel
 
 
 def _cannot_reach(cylinder, crank_angle):
@@ -88,30 +88,37 @@ class Linkage(NamedTuple):
     """Points of the linkage in the crankcase frame, m (complex), keyed by cylinder number.
 
     ``travel`` is the piston pin's distance from the crank axis along its cylinder axis;
-    ``reach`` the squared half-chord l² − (e − y)² that must stay positive for the rod to
-    reach its axis; ``knuckle`` exists for link rods only; ``crank_pins`` is per throw.
+    ``knuckle`` exists for link rods only; ``crank_pins`` is per throw (None for a throw no
+    cylinder asked for rides on).
     """
 
     piston: dict
     travel: dict
-    reach: dict
     knuckle: dict
     crank_pins: list
 
 
-def linkage(engine, crank_angles):
-    """The exact linkage at crank angles ``crank_angles`` seen from the crankcase (any shape)."""
+def linkage(engine, crank_angles, numbers=None):
+    """The exact linkage at crank angles ``crank_angles`` seen from the crankcase (any shape),
+    of every cylinder or of those ``numbers`` (with the master rods they ride on)."""
     r = engine.crank_radius_m
-    pins = [r * np.exp(1j * (crank_angles + t.phase_rad)) for t in engine.throws]
-    piston, travel, reach, knuckle = {}, {}, {}, {}
+    crank_angles = np.asarray(crank_angles, dtype=float)
+    wanted = engine.cylinders if numbers is None else [engine.cylinder(n) for n in numbers]
+    masters = {c.master for c in wanted if c.is_link}
+    # only the pins the wanted cylinders ride on (None for the others): the TDC search asks
+    # for one cylinder at a time
+    throws = {c.throw for c in wanted}
+    pins = [r * np.exp(1j * (crank_angles + t.phase_rad)) if i in throws or numbers is None
+            else None for i, t in enumerate(engine.throws)]
+    piston, travel, knuckle = {}, {}, {}
     for cyl in engine.cylinders:
-        if cyl.is_link:
+        if cyl.is_link or not (cyl in wanted or cyl.number in masters):
             continue
         axis = engine.bank_angles_rad[cyl.bank]
-        piston[cyl.number], travel[cyl.number], reach[cyl.number] = _slider(
+        piston[cyl.number], travel[cyl.number] = _slider(
             pins[cyl.throw], axis, engine.rod_length_m, engine.pin_offset_m, cyl, crank_angles
         )
-    for cyl in engine.cylinders:
+    for cyl in wanted:
         if not cyl.is_link:
             continue
         master = engine.cylinder(cyl.master)
@@ -122,10 +129,10 @@ def linkage(engine, crank_angles):
             1j * cyl.knuckle_angle_rad
         )
         axis = engine.bank_angles_rad[cyl.bank]
-        piston[cyl.number], travel[cyl.number], reach[cyl.number] = _slider(
+        piston[cyl.number], travel[cyl.number] = _slider(
             knuckle[cyl.number], axis, cyl.link_length_m, engine.pin_offset_m, cyl, crank_angles
         )
-    return Linkage(piston, travel, reach, knuckle, pins)
+    return Linkage(piston, travel, knuckle, pins)
 
 
 def _crank_angles(engine, angles):
@@ -144,20 +151,21 @@ def check_assembly(engine):
     linkage(engine, engine_angles(_CHECK_SAMPLES))
 
 
-def piston_travel(engine, crank_angles):
-    """Distance of every piston pin from the crank axis along its cylinder axis, m.
+def piston_travel(engine, crank_angles, numbers=None):
+    """Distance of every piston pin (or of those ``numbers``) from the crank axis along its
+    cylinder axis, m.
 
     ``crank_angles`` are crank angles seen from the crankcase (any shape); returns a dict
     keyed by cylinder number.
     """
     check_assembly(engine)
-    return linkage(engine, crank_angles).travel
+    return linkage(engine, crank_angles, numbers).travel
 
 
 def mass_positions(engine, angles):
     """Every point mass of ``engine`` at engine angles ``angles`` (1-D, rad), in the fixed frame."""
     check_assembly(engine)
-    piston, _, _, knuckle, pins = linkage(engine, _crank_angles(engine, angles))
+    piston, _, knuckle, pins = linkage(engine, _crank_angles(engine, angles))
     rows = []  # (position, mass, z, owner, throw)
     for cyl in engine.cylinders:
         rows.append((piston[cyl.number], cyl.reciprocating_kg, cyl.z_m, cyl.number, cyl.throw))

@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass, field
 
 from .errors import ModelError, UnitError
-from .tolerances import NOISE_FLOOR, SAME_POSITION_M
+from .tolerances import NOISE_FLOOR, SAME_DIRECTION_RAD, SAME_POSITION_M
 from .units import check_finite_range
 
 __all__ = ["Throw", "Cylinder", "Engine", "FRAMES"]
@@ -19,6 +19,8 @@ __all__ = ["Throw", "Cylinder", "Engine", "FRAMES"]
 #: "fixed": the crank turns in a fixed crankcase; "rotary": the crankcase and its cylinders
 #: turn about a fixed crank
 FRAMES = ("fixed", "rotary")
+#: a name is shown in table cells and picture titles
+MAX_NAME_LENGTH = 120
 
 
 @dataclass(frozen=True)
@@ -228,8 +230,11 @@ def _angle(value, parameter, cylinder=None):
 
 def _check(engine):
     """Every rule an engine must satisfy, whether built in code or read from a file."""
-    if not isinstance(engine.name, str) or not engine.name.strip() or not engine.name.isprintable():
-        raise ModelError(f"must be a non-empty line of printable text, got {engine.name!r}", "name")
+    if not isinstance(engine.name, str) or not engine.name.strip() or not engine.name.isprintable() \
+            or len(engine.name) > MAX_NAME_LENGTH:
+        raise ModelError(f"must be a non-empty line of printable text of at most {MAX_NAME_LENGTH} "
+                         f"characters, got {engine.name[:80]!r}" if isinstance(engine.name, str)
+                         else f"must be text, got {engine.name!r}", "name")
     if isinstance(engine.cycle, bool) or not isinstance(engine.cycle, int) or engine.cycle not in (2, 4):
         raise ModelError(f"must be 2 or 4 (strokes per cycle), got {engine.cycle!r}", "cycle")
     if engine.frame not in FRAMES:
@@ -247,8 +252,17 @@ def _check(engine):
             "reach the cylinder axis; make it longer or the crank shorter", "rod_length_m")
     if not engine.bank_angles_rad:
         raise ModelError("needs at least one cylinder-axis direction", "bank_angles_rad")
-    for angle in engine.bank_angles_rad:
+    directions = []
+    for i, angle in enumerate(engine.bank_angles_rad):
         _angle(angle, "bank_angles_rad")
+        # two banks pointing the same way put two cylinders in every bore of a throw
+        direction = math.remainder(angle, 2 * math.pi)
+        for j, other in enumerate(directions):
+            if abs(math.remainder(direction - other, 2 * math.pi)) < SAME_DIRECTION_RAD:
+                raise ModelError(f"{j + 1} and {i + 1} point the same way ({math.degrees(other):g}° "
+                                 f"and {math.degrees(angle):g}°); give each bank its own direction",
+                                 "bank_angles_rad")
+        directions.append(direction)
     if not engine.throws or not all(isinstance(t, Throw) for t in engine.throws):
         raise ModelError("needs one or more Throw objects", "throws")
     for throw in engine.throws:
@@ -310,5 +324,9 @@ def _check_cylinder(engine, c):
                          "on the master rod of its own throw", cylinder=n)
     _quantity(c.link_length_m, "length", "link_length_m", cylinder=n)
     _quantity(c.knuckle_radius_m, "length", "knuckle_radius_m", cylinder=n)
+    if c.knuckle_radius_m >= engine.rod_length_m:
+        raise ModelError(f"cylinder {n}: knuckle_radius_m ({c.knuckle_radius_m:g} m) must be shorter "
+                         f"than the master rod (rod_length_m, {engine.rod_length_m:g} m): the knuckle "
+                         "pin sits on it", cylinder=n)
     _angle(c.knuckle_angle_rad, "knuckle_angle_rad", cylinder=n)
     _quantity(c.knuckle_kg, "mass", "knuckle_kg", sign="non-negative", cylinder=n)

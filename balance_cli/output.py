@@ -65,21 +65,53 @@ def _special(path):
     return not stat.S_ISREG(mode) and not stat.S_ISDIR(mode)
 
 
+def _destination(target):
+    """The regular file to replace for ``target``: the target itself, or what its symbolic
+    links lead to. A link loop, a link into a folder that does not exist, a folder, a file
+    without write permission or a name ending in a separator is an OutputError."""
+    shown = str(target)
+    if not shown:
+        raise OutputError("the output path is empty; give a file name")
+    if shown.endswith(os.sep) or Path(target).is_dir():
+        raise OutputError(f"{shown!r} is a folder; give a file name")
+    path = Path(target)
+    if path.is_symlink():
+        try:
+            real = Path(os.path.realpath(path, strict=True))
+        except FileNotFoundError:
+            real = Path(os.path.realpath(path))
+            if not real.parent.is_dir():
+                raise OutputError(f"{shown!r} is a link to {str(real)!r}, whose folder does not "
+                                  "exist; create it or write elsewhere") from None
+        except OSError as exc:
+            raise OutputError(f"cannot write {shown!r}: {_reason(exc)}") from None
+    else:
+        real = Path(os.path.realpath(path))
+    if real.exists() and not os.access(real, os.W_OK):
+        # renaming over it would replace a file its owner made read-only
+        raise OutputError(f"cannot write {shown!r}: Permission denied")
+    return real
+
+
 def write_bytes(target, write):
     """Call ``write(handle)`` on a binary file handle and put what it wrote at ``target``:
     atomically for a regular file, directly for a device or FIFO."""
-    path = Path(target)
     shown = str(target)
-    if path.is_dir():
-        raise OutputError(f"{shown!r} is a folder; give a file name")
-    if _special(path):
+    try:
+        path = Path(target)
+        special = _special(path)
+        real = None if special else _destination(target)
+    except OutputError:
+        raise
+    except OSError as exc:   # a name too long, say
+        raise OutputError(f"cannot write {shown!r}: {_reason(exc)}") from None
+    if special:
         try:
             with open(path, "wb") as handle:
                 write(handle)
         except OSError as exc:
             raise OutputError(f"cannot write {shown!r}: {_reason(exc)}") from None
         return
-    real = Path(os.path.realpath(path))
     folder = ensure_folder(real.parent)
     try:
         # a short name: a legal file name of 250 characters must still leave room for it
@@ -99,18 +131,46 @@ def write_bytes(target, write):
 
 
 def write_text(target, text):
-    """Write ``text`` (UTF-8) to ``target``, all at once; ``"-"`` or None is standard output."""
+    """Write ``text`` (UTF-8) to ``target``, all at once; ``"-"`` or None is standard output
+    (in UTF-8 too, whatever the locale says)."""
     if target in (None, "-"):
-        sys.stdout.write(text)
-        sys.stdout.flush()
+        _write_stdout(text.encode("utf-8"))
         return
     write_bytes(target, lambda handle: handle.write(text.encode("utf-8")))
 
 
 def check_folder(target):
-    """Raise OutputError when ``target`` exists and is not a folder."""
-    if Path(target).exists() and not Path(target).is_dir():
-        raise OutputError(f"{str(target)!r} is not a folder; give a folder for the report")
+    """Raise OutputError unless ``target`` is a folder or can become one."""
+    shown = str(target)
+    if shown in ("", "-"):
+        raise OutputError(f"{shown!r} is not a folder name; give a folder for the report")
+    try:
+        if os.path.lexists(target) and not Path(target).is_dir():
+            if Path(target).is_symlink() and not Path(target).exists():
+                os.stat(target)   # says why the link leads nowhere (a loop, say)
+            raise OutputError(f"{shown!r} is not a folder; give a folder for the report")
+    except OSError as exc:
+        raise OutputError(f"cannot write into {shown!r}: {_reason(exc)}") from None
+
+
+def _write_stdout(data):
+    if sys.stdout is None:
+        raise OutputError("standard output is closed; give an output file")
+    try:
+        sys.stdout.flush()
+        stream = getattr(sys.stdout, "buffer", None)
+        if stream is None:
+            sys.stdout.write(data.decode("utf-8"))
+        else:
+            stream.write(data)
+        sys.stdout.flush()
+    except OSError as exc:
+        # what could not be written must not be written again when Python exits
+        try:
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        except (OSError, ValueError):
+            pass
+        raise OutputError(f"cannot write standard output: {_reason(exc)}") from None
 
 
 def write_folder(target, fill):

@@ -31,14 +31,16 @@ if TYPE_CHECKING:
     from .analysis import EngineResult
 
 __all__ = ["KINDS", "FORMATS", "locus", "spectrum", "star", "firing", "save", "format_of",
-           "grid_size", "locus_points", "spectrum_data", "star_chains", "colours"]
+           "grid_size", "locus_points", "spectrum_data", "star_chains", "colours", "short"]
 
 KINDS = ("locus", "spectrum", "star", "firing")
 #: file formats :func:`save` writes (those of matplotlib's that need neither LaTeX nor a viewer
 #: for raw pixels)
 FORMATS = ("png", "svg", "svgz", "pdf", "eps", "ps", "jpg", "jpeg", "tif", "tiff", "webp")
-#: inches per subplot cell of the star and firing grids, and dots per inch of bitmaps
+#: inches per subplot cell of the star and firing grids, the narrowest figure (its title must
+#: fit), and dots per inch of bitmaps
 CELL_IN = 4.0
+MIN_WIDTH_IN = 8.0
 DPI = 100
 SPECTRUM_UNITS = ("per-cylinder", "N", "kgf")
 
@@ -68,6 +70,17 @@ def grid_size(count):
     return columns, math.ceil(count / columns)
 
 
+def _grid_figure(count):
+    """A new figure for a grid of ``count`` pictures, wide enough for its two-line title."""
+    columns, rows = grid_size(count)
+    return _new_figure((max(CELL_IN * columns, MIN_WIDTH_IN), CELL_IN * rows))
+
+
+def short(name, length=60):
+    """A name cut to ``length`` characters for titles and legends."""
+    return name if len(name) <= length else name[: length - 1] + "…"
+
+
 def colours(count):
     """``count`` distinguishable colours: matplotlib's tab10 or tab20, else a sampled map."""
     if count <= 10:
@@ -95,7 +108,7 @@ def locus(results: "Iterable[EngineResult]", order: int | None = None, ax: "Axes
     fig = cast("Figure", ax.figure)
     for r, colour in zip(chosen, colours(len(chosen))):
         x, y = locus_points(r, order)
-        ax.plot(np.append(x, x[0]), np.append(y, y[0]), label=r.engine.name, linewidth=1.6,
+        ax.plot(np.append(x, x[0]), np.append(y, y[0]), label=short(r.engine.name), linewidth=1.6,
                 color=colour)
     ax.axhline(0, color="0.6", linewidth=0.6)
     ax.axvline(0, color="0.6", linewidth=0.6)
@@ -125,7 +138,7 @@ def spectrum_data(results, units="per-cylinder"):
     for r in chosen:
         unit = r.per_cylinder_unit_n
         engines.append({
-            "name": r.engine.name,
+            "name": short(r.engine.name),
             "force": np.array([[scale.force(abs(o.force_forward), unit),
                                 scale.force(abs(o.force_backward), unit)] for o in r.shaking.orders]),
             "moment": np.array([[scale.moment(abs(o.moment_forward)),
@@ -237,7 +250,7 @@ def star(results: "Iterable[EngineResult]", order: int = 2, fig: "Figure | None"
     chosen = _results(results, order)
     columns, rows = grid_size(len(chosen))
     if fig is None:
-        fig = _new_figure((CELL_IN * columns, CELL_IN * rows))
+        fig = _grid_figure(len(chosen))
     axes = fig.subplots(rows, columns, squeeze=False)
     for ax in axes.flat[len(chosen):]:
         ax.axis("off")
@@ -260,7 +273,7 @@ def star(results: "Iterable[EngineResult]", order: int = 2, fig: "Figure | None"
                     fontsize=7, transform=ax.transAxes, va="top")
         ax.plot([0], [0], marker="o", color="k", markersize=3)
         ax.set_aspect("equal", adjustable="datalim")
-        ax.set_title(r.engine.name, fontsize=9, y=1.0)
+        ax.set_title(short(r.engine.name), fontsize=9, y=1.0)
         # no axes (their ticks cost more than the rest of the picture): a scale bar instead
         ax.axis("off")
         _scale_bar(ax, chains)
@@ -298,7 +311,7 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
     chosen = _results(results)
     columns, rows = grid_size(len(chosen))
     if fig is None:
-        fig = _new_figure((CELL_IN * columns, CELL_IN * rows))
+        fig = _grid_figure(len(chosen))
     axes = fig.subplots(rows, columns, squeeze=False)
     for ax in axes.flat:
         ax.axis("off")
@@ -323,7 +336,7 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
         ax.set_ylim(-1.45, 1.45)
         ax.set_aspect("equal")
         uniform = "uniform" if fire.uniform else f"±{fire.max_deviation_deg:.2f}° from uniform"
-        ax.set_title(f"{r.engine.name}\n{r.engine.cycle}-stroke, {uniform}", fontsize=9, y=1.0)
+        ax.set_title(f"{short(r.engine.name)}\n{r.engine.cycle}-stroke, {uniform}", fontsize=9, y=1.0)
     fig.suptitle("Firing angles over one working cycle (crank degrees from the first firing)",
                  fontsize=10)
     fig.subplots_adjust(left=0.02, right=0.98, bottom=0.02, top=1 - 0.8 / (CELL_IN * rows),

@@ -21,7 +21,8 @@ from pathlib import Path
 from typing import Any
 
 from .analysis import DOCUMENT_VERSION, Comparison, analyse, compare
-from .errors import BalanceError
+from .errors import AnalysisError, BalanceError
+from .shaking import check_settings
 from .tolerances import FIRING_CHANGE_DEG, NOISE_FLOOR, PHASE_CHANGE_DEG, PHASE_FLOOR
 from .units import angle_change
 
@@ -120,13 +121,17 @@ def check_baseline(document, path="<baseline>"):
         if not isinstance(document, dict) or key not in document:
             _fail(path, f"not a `balance compare --format json` document (no {key!r})")
     version = document["balance_version"]
-    if version != DOCUMENT_VERSION:
+    if type(version) is not int or version != DOCUMENT_VERSION:
         raise RegressError(f"{path}: written by balance_version {version!r}, but this balance "
                            f"reads version {DOCUMENT_VERSION}; write the baseline again with this "
                            "version")
     for key in ("samples", "max_order"):
         if isinstance(document.get(key), bool) or not isinstance(document.get(key), int):
             _fail(path, f"has no whole number {key!r}")
+    try:
+        check_settings(document["samples"], document["max_order"])
+    except AnalysisError as exc:
+        _fail(path, f"records {exc}")
     engines = document["engines"]
     if not isinstance(engines, list) or not engines:
         _fail(path, "lists no engines")
@@ -158,6 +163,9 @@ def check_baseline(document, path="<baseline>"):
                                for p in parts) or len(parts) != 2:
                 _fail(where, "has an order that is not {order, force: {...}, moment: {...}} of "
                              "finite numbers")
+        listed = [o["order"] for o in orders]
+        if len(set(listed)) != len(listed):
+            _fail(where, "lists an order twice")
         names.append(engine["name"])
     twice = sorted({n for n in names if names.count(n) > 1})
     if twice:
@@ -167,11 +175,13 @@ def check_baseline(document, path="<baseline>"):
 
 def baseline_configs(document, path):
     """The configuration files the baseline names: as written (relative to the current folder),
-    else relative to the baseline's own folder."""
+    else relative to the baseline's own folder or one of its parents (a baseline written from
+    a repository's root and kept in a folder of it, checked from anywhere)."""
     files = []
+    folder = Path(path).resolve().parent
     for engine in document["engines"]:
         named = Path(engine["config"])
-        for candidate in (named, Path(path).parent / named):
+        for candidate in [named] + [base / named for base in (folder, *folder.parents)]:
             if candidate.is_file():
                 files.append(candidate)
                 break

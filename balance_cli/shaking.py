@@ -32,6 +32,10 @@ def check_settings(samples, max_order):
             raise AnalysisError(f"must be a whole number, got {value!r}", name)
     if max_order < 1:
         raise AnalysisError(f"must be at least 1, got {max_order}", "max_order")
+    highest = (MAX_SAMPLES - 1) // 4
+    if minimum_samples(max_order) > MAX_SAMPLES:
+        raise AnalysisError(f"must be at most {highest}: {MAX_SAMPLES} samples, the most, resolve "
+                            f"orders up to {highest}; got {max_order}", "max_order")
     low = minimum_samples(max_order)
     if not low <= samples <= MAX_SAMPLES:
         raise AnalysisError(f"must be from {low} to {MAX_SAMPLES} for orders up to {max_order} "

@@ -4,7 +4,7 @@ Imports nothing: the ground floor of the package.
 """
 
 __all__ = ["NOISE_FLOOR", "ALIASING_TOLERANCE", "ANGLE_TOLERANCE_DEG", "TDC_PRECISION_DEG",
-           "UNIFORM_FIRING_DEG", "SAME_POSITION_M", "PHASE_FLOOR", "PHASE_CHANGE_DEG",
+           "UNIFORM_FIRING_DEG", "SAME_POSITION_M", "SAME_DIRECTION_RAD", "PHASE_FLOOR", "PHASE_CHANGE_DEG",
            "FIRING_CHANGE_DEG", "SPECTRUM_FLOOR", "minimum_samples"]
 
 #: A force below this fraction of m_rec·r·ω²·n (N), or a moment below it times one metre
@@ -30,6 +30,9 @@ UNIFORM_FIRING_DEG = 0.01
 
 #: Axial positions closer than this are the same plane.
 SAME_POSITION_M = 1e-9
+
+#: Cylinder axes closer than this (1e-6°) point the same way.
+SAME_DIRECTION_RAD = 1e-8
 
 #: Regression tables compare a phase only where its phasor exceeds this fraction of
 #: m_rec·r·ω²·n: the FFT's rounding (about 1e-15 of the largest force) turns a phasor of that

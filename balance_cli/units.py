@@ -39,7 +39,8 @@ LIMITS = {
     "angular speed": (1e-3 * _RPM, 1e6 * _RPM, "rpm", _RPM),
 }
 
-_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([A-Za-z/]+)\s*$")
+# ASCII digits only; any unit word, so that an unknown one is reported as a unit
+_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\s\d.+-]\S*)\s*$", re.ASCII)
 _EXAMPLES = {"length": "82.5 mm", "mass": "1770.4 g", "angular speed": "1650 rpm"}
 
 

@@ -426,3 +426,142 @@ def test_file_without_read_permission(shared_folder):
     before = snapshot(shared_folder)
     outcome = as_ordinary_user(["compare", config, "-o", shared_folder / "o.json"])
     check_user_refused(outcome, "cannot read the file (Permission denied)", before, shared_folder)
+
+
+# ---- a second hostile tester's findings --------------------------------------------------------
+
+
+def twin(tmp_path, text=GOOD, name="e.toml"):
+    config = tmp_path / name
+    config.write_text(text, encoding="utf-8")
+    return config
+
+
+@pytest.mark.parametrize("make, words", [
+    (lambda d: (os.symlink(d / "loopB", d / "loopA"), os.symlink(d / "loopA", d / "loopB"),
+                d / "loopA")[2], "Too many levels of symbolic links"),
+    (lambda d: (os.symlink("/nonexistent-balance/dir/f.txt", d / "dangling"), d / "dangling")[1],
+     "whose folder does not exist"),
+    (lambda d: "", "the output path is empty"),
+    (lambda d: str(d / "pic.json") + os.sep, "is a folder; give a file name"),
+    (lambda d: d / ("a" * 300 + ".json"), "File name too long"),
+])
+def test_odd_output_paths(tmp_path, make, words):
+    config = twin(tmp_path)
+    output = make(tmp_path)
+    before = snapshot(tmp_path)
+    check_refused(invoke("compare", config, "-o", output), 1, words, before, tmp_path)
+    assert not Path("/nonexistent-balance").exists()
+
+
+@pytest.mark.parametrize("output, words", [("-", "'-' is not a folder name"),
+                                           ("", "'' is not a folder name")])
+def test_report_needs_a_folder_name(tmp_path, output, words):
+    config = twin(tmp_path)
+    before = snapshot(tmp_path)
+    check_refused(invoke("report", config, "-o", output), 1, words, before, tmp_path)
+
+
+def test_a_read_only_output_file_is_not_replaced(shared_folder):
+    config = shared_folder / "e.toml"
+    config.write_text(GOOD, encoding="utf-8")
+    config.chmod(0o644)
+    locked = shared_folder / "out.txt"
+    locked.write_text("keep me")
+    locked.chmod(0o444)
+    before = snapshot(shared_folder)
+    outcome = as_ordinary_user(["compare", config, "-o", locked])
+    check_user_refused(outcome, "cannot write", before, shared_folder)
+    assert "Permission denied" in outcome["stderr"]
+
+
+def test_a_fifo_named_like_a_configuration_is_refused_not_waited_for(tmp_path):
+    folder = tmp_path / "engines"
+    folder.mkdir()
+    twin(folder)
+    os.mkfifo(folder / "z.toml")
+    result = invoke("compare", folder, "--format", "json")    # the FIFO in a folder: skipped
+    assert result.exit_code == 0 and len(json.loads(result.stdout)["engines"]) == 1
+    result = invoke("compare", folder / "z.toml")
+    assert result.exit_code == 1 and "is not a regular file" in result.stderr
+
+
+@pytest.mark.parametrize("change, words", [
+    (lambda t: t.replace("[[banks]]\nangle = 0\n", "[[banks]]\nangle = 0\n[[banks]]\nangle = 360\n"),
+     "banks: 1 and 2 point the same way"),
+    (lambda t: t.replace('"test twin"', '"' + "x" * 200 + '"'), "name: must be a non-empty line"),
+])
+def test_impossible_geometry_and_overlong_names(tmp_path, change, words):
+    config = twin(tmp_path, change(GOOD))
+    before = snapshot(tmp_path)
+    result = invoke("compare", config, "-o", tmp_path / "o.txt")
+    check_refused(result, 1, words, before, tmp_path)
+
+
+def test_a_knuckle_beyond_the_master_rod_is_refused(tmp_path):
+    text = LISTED + 'master = 1\nlink_length = "110 mm"\nknuckle_radius = "200 mm"\n'
+    config = twin(tmp_path, text)
+    before = snapshot(tmp_path)
+    check_refused(invoke("compare", config, "-o", tmp_path / "o.txt"), 1,
+                  "knuckle_radius (0.2 m) must be shorter than the master rod", before, tmp_path)
+
+
+def test_two_engines_of_one_name_are_refused_by_compare(tmp_path):
+    config = twin(tmp_path)
+    before = snapshot(tmp_path)
+    check_refused(invoke("compare", config, config, "-o", tmp_path / "o.json"), 1,
+                  "name 'test twin' more than once", before, tmp_path)
+
+
+@pytest.mark.parametrize("args, code, words", [
+    (["--max-order", "100000"], 1, "--max-order must be at most 16383"),
+    (["--max-order", "16384", "--samples", "65536"], 1, "--max-order must be at most 16383"),
+])
+def test_a_max_order_no_sampling_can_resolve(tmp_path, args, code, words):
+    config = twin(tmp_path)
+    before = snapshot(tmp_path)
+    check_refused(invoke("compare", config, *args), code, words, before, tmp_path)
+
+
+@pytest.mark.parametrize("args, code, words", [
+    (["--shafts", ""], 2, "give orders as whole numbers"),
+    (["--planes", "-1"], 1, "--planes: cannot read '-1': give throw numbers"),
+    (["--planes", "40 µm"], 1, "unknown unit 'µm'"),
+])
+def test_more_bad_counterweight_options(tmp_path, args, code, words):
+    config = twin(tmp_path)
+    before = snapshot(tmp_path)
+    check_refused(invoke("counterweight", config, *args), code, words, before, tmp_path)
+
+
+@pytest.mark.parametrize("content, words", [
+    ("[" * 100_000 + "]" * 100_000, "not JSON that balance can read"),
+    ('{"balance_version": 1, "samples": ' + "9" * 5000 + "}", "not JSON that balance can read"),
+    ('{"balance_version": true, "engines": [1]}', "written by balance_version True"),
+    ('{"balance_version": 1, "samples": -5, "max_order": 8, "engines": [1]}',
+     "records samples must be from 33"),
+])
+def test_baselines_that_are_not_comparisons(tmp_path, content, words):
+    baseline = tmp_path / "b.json"
+    baseline.write_text(content, encoding="utf-8")
+    before = snapshot(tmp_path)
+    check_refused(invoke("regress", baseline), 1, words, before, tmp_path)
+
+
+def test_standard_output_errors_are_one_line(tmp_path):
+    import subprocess
+    import sys
+
+    config = twin(tmp_path)
+    code = "from balance_cli.cli import main; main()"
+    full = subprocess.run([sys.executable, "-c", code, "compare", str(config)],
+                          stdout=open("/dev/full", "w"), stderr=subprocess.PIPE, text=True)
+    assert full.returncode == 1
+    assert full.stderr == "Error: cannot write standard output: No space left on device\n"
+    closed = subprocess.run([sys.executable, "-c", code, "compare", str(config)],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: os.close(1))
+    assert closed.returncode == 1 and closed.stderr.count("\n") == 1, closed.stderr
+    ascii_only = subprocess.run([sys.executable, "-c", code, "compare", str(config)],
+                                capture_output=True, env={**os.environ, "PYTHONIOENCODING": "ascii"})
+    assert ascii_only.returncode == 0 and "m_rec·r·ω²·n" in ascii_only.stdout.decode("utf-8")

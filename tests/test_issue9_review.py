@@ -123,3 +123,65 @@ def test_rtol_loosens_a_firing_angle_by_radians_not_by_its_size():
     assert [r.quantity for r in rows] == ["firing angle of cylinder 2"]
     assert rows[0].change == pytest.approx(0.5) and rows[0].relative_change is None
     assert not balance.regression(document, moved, rtol=0.01).moved   # 0.57°
+
+
+def test_tdc_search_memory_is_linear_in_cylinders():
+    """piston_travel of chosen cylinders computes only those (and their masters): the TDC
+    refinement of a 400-cylinder grid needs arrays of 101 angles, not 400 × 400 × 101."""
+    engine = make_engine([3.6 * i for i in range(20)], [(18 * t, 0.05 * t) for t in range(20)],
+                         cycle=2)
+    travel = balance.kinematics.piston_travel(engine, [0.0, 0.1], [7])
+    assert list(travel) == [7]
+    tdc = balance.firing.tdc_angles(engine)
+    assert len(tdc) == 400
+    cylinder = engine.cylinder(27)   # bank 2 (3.6°), throw 7 (108°): TDC at 3.6 − 108 mod 360
+    assert_allclose(tdc[27], (3.6 - 108.0) % 360, atol=1e-5)
+    assert cylinder.bank == 1
+
+
+def test_a_report_says_when_samples_are_too_few(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    result = invoke("report", CONFIGS / "inline-4-marine.toml", "-o", "rep", "--samples", "16",
+                    "--max-order", "3")
+    assert result.exit_code == 0, result.output
+    text = (tmp_path / "rep" / "report.md").read_text(encoding="utf-8")
+    assert "1 engine, 16 samples" in text
+    assert "Warning: 16 samples a revolution are too few for In-line 4 marine" in text
+    assert "warning:" in result.stderr and "wrote rep/report.md" in result.stderr
+    assert result.stdout == ""
+
+
+def test_negative_zero_reads_as_zero(tmp_path):
+    result = invoke("counterweight", CONFIGS / "inline-4-car.toml", "--balance-factor", "-0",
+                    "--format", "json")
+    assert '"balance_factor": 0.0' in result.stdout
+    config = tmp_path / "e.toml"
+    config.write_text((CONFIGS / "inline-4-car.toml").read_text().replace(
+        "[[banks]]\nangle = 0", "[[banks]]\nangle = -0.0"), encoding="utf-8")
+    assert "(-0°)" not in invoke("show", config).stdout
+
+
+def test_shafts_for_a_zero_order_say_none_are_needed():
+    result = invoke("counterweight", CONFIGS / "tanaka-part3" / "3-inline-6.toml", "--shafts", "3")
+    assert result.exit_code == 0
+    assert "Balancer shafts: none needed; the orders asked for are already zero." in result.stdout
+
+
+def test_regress_finds_configurations_from_the_baselines_folders(tmp_path, monkeypatch):
+    """The README's CI example: a baseline written at the repository's root, kept in design/,
+    naming design/x.toml, checked from inside design/."""
+    design = tmp_path / "design"
+    design.mkdir()
+    (design / "car.toml").write_text((CONFIGS / "inline-4-car.toml").read_text(), encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    assert invoke("compare", "design", "--format", "json", "-o", "design/baseline.json").exit_code == 0
+    monkeypatch.chdir(design)
+    result = invoke("regress", "baseline.json")
+    assert result.exit_code == 0, result.output
+
+
+def test_a_single_engine_grid_picture_is_wide_enough_for_its_title():
+    result = balance.analyse(balance.load(CONFIGS / "inline-4-car.toml"))
+    for draw in (balance.plot.star, balance.plot.firing):
+        width, _ = draw([result]).get_size_inches()
+        assert width == balance.plot.MIN_WIDTH_IN

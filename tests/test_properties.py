@@ -40,17 +40,17 @@ def engines(draw):
     if n_banks > 1 and draw(st.booleans()):
         links = (draw(st.integers(0, n_banks - 1)), l - r * draw(st.floats(0.5, 0.9)),
                  r * draw(st.floats(0.5, 0.9)), draw(st.floats(0.0, 0.5)))
-    engine = make_engine(
-        sorted(draw(st.lists(st.floats(-180, 180), min_size=n_banks, max_size=n_banks))),
-        [(draw(st.floats(0, 360)), draw(st.floats(-0.3, 0.3))) for _ in range(n_throws)],
-        r=r, l=l, m=draw(st.floats(0.5, 3.0)), rpm=draw(st.floats(500, 5000)),
-        frame=draw(st.sampled_from(["fixed", "rotary"])), rotating=draw(st.floats(0.0, 2.0)),
-        pin_offset=r * draw(st.floats(-0.1, 0.1)), links=links,
-    )
     try:
+        engine = make_engine(
+            sorted(draw(st.lists(st.floats(-180, 180), min_size=n_banks, max_size=n_banks))),
+            [(draw(st.floats(0, 360)), draw(st.floats(-0.3, 0.3))) for _ in range(n_throws)],
+            r=r, l=l, m=draw(st.floats(0.5, 3.0)), rpm=draw(st.floats(500, 5000)),
+            frame=draw(st.sampled_from(["fixed", "rotary"])), rotating=draw(st.floats(0.0, 2.0)),
+            pin_offset=r * draw(st.floats(-0.1, 0.1)), links=links,
+        )
         check_assembly(engine)
     except ModelError:
-        assume(False)
+        assume(False)   # banks drawn the same way, or a linkage that cannot be assembled
     return engine
 
 

@@ -225,7 +225,9 @@ def balance_tables(balances, scale, fmt):
                 render(order_headers(scale),
                        order_rows(record["name"], record["residual"]["orders"], n_unit, scale), fmt),
                 ""]
-        if "after_shafts" in record:
+        if "after_shafts" in record and not record["shafts"]:
+            out += ["Balancer shafts: none needed; the orders asked for are already zero.", ""]
+        elif "after_shafts" in record:
             out += ["Balancer shafts:", "",
                     _record_table(record["shafts"], SHAFT_COLUMNS, fmt), "",
                     "Left after the shafts:", "",

@@ -234,8 +234,11 @@ def _link_first_harmonic(record):
     phi = math.radians(record["phi_deg"])
     master = engine.cylinder(1)
     link = next(c for c in engine.cylinders if c.is_link)
+    # the knuckle pin's path depends on the master rod alone, not on the link's own axis: the
+    # probe's link cylinder gets an axis a quarter turn away, since two banks may not coincide
+    # (Table I starts at φ = 0)
     probe = dataclasses.replace(
-        engine, bank_angles_rad=(0.0, phi), throws=engine.throws[:1], firing_order=None,
+        engine, bank_angles_rad=(0.0, phi + math.pi / 2), throws=engine.throws[:1], firing_order=None,
         cylinders=(dataclasses.replace(master, bank=0),
                    dataclasses.replace(link, number=2, bank=1, master=1, knuckle_angle_rad=phi,
                                        **({"knuckle_radius_m": record["knuckle_radius_mm"] / 1000}
