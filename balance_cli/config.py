@@ -9,6 +9,7 @@ only the uniqueness of cylinder numbers is checked here too, because the key of 
 cylinder is found by its number.
 """
 
+import dataclasses
 import math
 import os
 import re
@@ -18,16 +19,20 @@ from pathlib import Path
 
 from .errors import ConfigError, ModelError, UnitError
 from .kinematics import check_assembly
-from .model import FRAMES, Cylinder, Engine, Throw
+from .model import FRAMES, Cylinder, Engine, GasCycle, Parts, Throw
 from .units import parse_quantity
 
 __all__ = ["load", "loads", "build", "find_configs", "load_many"]
 
 _TOP_KEYS = {
     "name", "source", "cycle", "speed", "crank_radius", "rod_length", "pin_offset", "frame",
-    "firing_order", "masses", "banks", "throws", "links", "cylinders",
+    "firing_order", "masses", "parts", "gas", "banks", "throws", "links", "cylinders",
 }
 _MASS_KEYS = {"reciprocating", "rotating", "knuckle", "crank"}
+_PART_KEYS = {"piston", "rod_mass", "rod_cg", "rod_inertia", "link_mass", "link_cg", "link_inertia",
+              "crank", "crankshaft_inertia", "flywheel_inertia"}
+_GAS_KEYS = {"bore", "compression_ratio", "imep", "intake_pressure", "crankcase_pressure",
+             "polytropic_exponent", "combustion_start", "combustion_duration", "wiebe_a", "wiebe_m"}
 _BANK_KEYS = {"angle"}
 _THROW_KEYS = {"phase", "z"}
 _LINK_KEYS = {"master_bank", "length", "knuckle_radius"}
@@ -100,6 +105,17 @@ class _Reader:
             raise self.error(key, f"must be between -{_ANGLE_LIMIT_DEG:g} and "
                                   f"{_ANGLE_LIMIT_DEG:g} degrees, got {raw!r}")
         return float(raw) + 0.0  # -0 reads as 0
+
+    def real(self, key, required=True, default=None, low=None, high=None, what="a number"):
+        """A plain number (no unit) from ``low`` to ``high``."""
+        raw = self._get(key, required)
+        if raw is None:
+            return default
+        if isinstance(raw, bool) or not isinstance(raw, (int, float)) or not math.isfinite(raw):
+            raise self.error(key, f"expected {what} such as {low if low else 1}, got {raw!r}")
+        if low is not None and raw < low or high is not None and raw > high:
+            raise self.error(key, f"must be from {low:g} to {high:g}, got {raw!r}")
+        return float(raw) + 0.0
 
     def integer(self, key, required=True, default=None, low=None, high=None):
         raw = self._get(key, required)
@@ -187,11 +203,23 @@ def build(data: dict, path: str = "<config>") -> Engine:
     pin_offset = top.quantity("pin_offset", "length", required=False, default=0.0, sign="any")
     frame = top.string("frame", required=False, default="fixed", choices=FRAMES)
 
-    masses = _Reader(path, top._get("masses", True), "masses.", _MASS_KEYS)
-    reciprocating = masses.quantity("reciprocating", "mass")
-    rotating, knuckle, crank = (
-        masses.quantity(key, "mass", required=False, default=0.0, sign="non-negative")
-        for key in ("rotating", "knuckle", "crank"))
+    parts = None
+    if top.has("masses") and top.has("parts"):
+        raise top.error("parts", "give [masses] (lumped point masses) or [parts] (part data), "
+                                 "not both")
+    if top.has("parts"):
+        parts = _read_parts(_Reader(path, data["parts"], "parts.", _PART_KEYS), rod_length)
+        reciprocating, rotating, knuckle, crank = parts.piston_kg, 0.0, 0.0, parts.crank_kg
+    else:
+        if not top.has("masses"):
+            raise top.error("masses", "missing; give [masses] (lumped point masses) or [parts] "
+                                      "(part data)")
+        masses = _Reader(path, data["masses"], "masses.", _MASS_KEYS)
+        reciprocating = masses.quantity("reciprocating", "mass")
+        rotating, knuckle, crank = (
+            masses.quantity(key, "mass", required=False, default=0.0, sign="non-negative")
+            for key in ("rotating", "knuckle", "crank"))
+    gas = _read_gas(_Reader(path, data["gas"], "gas.", _GAS_KEYS)) if top.has("gas") else None
 
     banks = [math.radians(_Reader(path, table, f"banks[{i}].", _BANK_KEYS).degrees("angle"))
              for i, table in enumerate(top.tables("banks"), 1)]
@@ -217,6 +245,9 @@ def build(data: dict, path: str = "<config>") -> Engine:
     else:
         cylinders, keys = _grid_cylinders(banks, throws, reciprocating, knuckle, links), {}
 
+    if parts is not None:
+        cylinders, rotating = _lumped(path, parts, cylinders, rod_length, len(throws))
+
     firing_order = None
     if top.has("firing_order"):
         raw = data["firing_order"]
@@ -232,12 +263,92 @@ def build(data: dict, path: str = "<config>") -> Engine:
             rod_length_m=rod_length, bank_angles_rad=tuple(banks), throws=tuple(throws),
             cylinders=tuple(cylinders), rotating_kg=rotating, crank_kg=crank,
             pin_offset_m=pin_offset, frame=frame, firing_order=firing_order, source=source,
-            config_path=str(path),
+            config_path=str(path), parts=parts, gas=gas,
+            shaft_inertia_kgm2=(0.0 if parts is None else
+                                parts.crankshaft_inertia_kgm2 + parts.flywheel_inertia_kgm2),
         )
         check_assembly(engine)
     except ModelError as exc:
         raise _translated(path, exc, keys) from None
     return engine
+
+
+def _read_parts(reader, rod_length):
+    """The [parts] table; centres of gravity between the rod's ends."""
+    inertia = "moment of inertia"
+    parts = Parts(
+        piston_kg=reader.quantity("piston", "mass"),
+        rod_kg=reader.quantity("rod_mass", "mass"),
+        rod_cg_m=reader.quantity("rod_cg", "length", sign="non-negative"),
+        rod_inertia_kgm2=reader.quantity("rod_inertia", inertia, sign="non-negative"),
+        link_kg=reader.quantity("link_mass", "mass", required=False, default=0.0),
+        link_cg_m=reader.quantity("link_cg", "length", required=False, default=0.0,
+                                  sign="non-negative"),
+        link_inertia_kgm2=reader.quantity("link_inertia", inertia, required=False, default=0.0,
+                                          sign="non-negative"),
+        crank_kg=reader.quantity("crank", "mass", required=False, default=0.0, sign="non-negative"),
+        crankshaft_inertia_kgm2=reader.quantity("crankshaft_inertia", inertia, required=False,
+                                                default=0.0, sign="non-negative"),
+        flywheel_inertia_kgm2=reader.quantity("flywheel_inertia", inertia, required=False,
+                                              default=0.0, sign="non-negative"),
+    )
+    if parts.rod_cg_m > rod_length:
+        raise reader.error("rod_cg", "lies beyond the small end: the centre of gravity is measured "
+                                     "from the big end, between 0 and rod_length")
+    return parts
+
+
+def _lumped(path, parts, cylinders, rod_length, n_throws):
+    """Lumped masses and rod corrections from part data, Fraeys de Veubeke § 8 (first
+    reduction): the piston and the small-end share K·M of a plain or master rod reciprocate,
+    its big-end share (1 − K)·M rotates with the pin; a link rod's shares k·m and (1 − k)·m go
+    to its piston and its knuckle pin; what the two point masses leave out of each rod's
+    rotational inertia stays with the rod as a correction C = J − M·H·(L − H)."""
+    links = [c for c in cylinders if c.is_link]
+    if links and parts.link_kg <= 0.0:
+        raise ConfigError(path, "parts.link_mass", "missing for the link rods; give their mass, "
+                                                   "link_cg and link_inertia")
+    lumped = []
+    for c in cylinders:
+        if c.is_link:
+            if parts.link_cg_m > c.link_length_m:
+                raise ConfigError(path, "parts.link_cg", f"lies beyond the link rod of cylinder "
+                                  f"{c.number} ({c.link_length_m:g} m): it is measured from the knuckle pin")
+            share = parts.link_cg_m / c.link_length_m
+            lumped.append(dataclasses.replace(
+                c, reciprocating_kg=parts.piston_kg + share * parts.link_kg,
+                knuckle_kg=(1 - share) * parts.link_kg,
+                rod_inertia_kgm2=parts.link_correction_kgm2(c.link_length_m)))
+        else:
+            lumped.append(dataclasses.replace(
+                c, reciprocating_kg=parts.piston_kg + parts.small_end_share(rod_length) * parts.rod_kg,
+                rod_inertia_kgm2=parts.rod_correction_kgm2(rod_length)))
+    rods = [sum(1 for c in cylinders if not c.is_link and c.throw == t) for t in range(n_throws)]
+    if len(set(rods)) > 1:
+        raise ConfigError(path, "parts", f"the throws carry different numbers of plain or master "
+                                         f"rods ({rods}); give [masses] for such an engine")
+    big_ends = rods[0] * (1 - parts.small_end_share(rod_length)) * parts.rod_kg
+    return lumped, big_ends
+
+
+def _read_gas(reader):
+    """The [gas] table: the bore and, for a parametric cycle, its compression ratio."""
+    return GasCycle(
+        bore_m=reader.quantity("bore", "length"),
+        compression_ratio=reader.real("compression_ratio", low=1.01, high=100.0),
+        imep_pa=reader.quantity("imep", "pressure", required=False, default=None),
+        intake_pa=reader.quantity("intake_pressure", "pressure", required=False, default=1.0e5),
+        crankcase_pa=reader.quantity("crankcase_pressure", "pressure", required=False,
+                                     default=101325.0, sign="non-negative"),
+        polytropic_exponent=reader.real("polytropic_exponent", required=False, default=1.32,
+                                        low=1.0, high=1.67),
+        combustion_start_deg=reader.real("combustion_start", required=False, default=-10.0,
+                                         low=-90.0, high=90.0, what="a number of degrees"),
+        combustion_duration_deg=reader.real("combustion_duration", required=False, default=50.0,
+                                            low=1.0, high=180.0, what="a number of degrees"),
+        wiebe_a=reader.real("wiebe_a", required=False, default=5.0, low=0.1, high=20.0),
+        wiebe_m=reader.real("wiebe_m", required=False, default=2.0, low=0.0, high=10.0),
+    )
 
 
 def _translated(path, exc, cylinder_keys):

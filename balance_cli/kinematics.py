@@ -18,8 +18,8 @@ import numpy as np
 from .errors import ModelError
 from .units import round_degrees
 
-__all__ = ["MassSet", "Linkage", "linkage", "mass_positions", "piston_travel", "check_assembly",
-           "engine_angles"]
+__all__ = ["MassSet", "RodSet", "Linkage", "linkage", "mass_positions", "rod_directions",
+           "crank_angles_of", "travel_at", "piston_travel", "check_assembly", "engine_angles"]
 
 #: crank angles at which a linkage is checked for assembly (0.1° apart)
 _CHECK_SAMPLES = 3600
@@ -49,6 +49,26 @@ class MassSet:
     z_m: np.ndarray
     cylinder: np.ndarray
     throw: np.ndarray
+
+
+@dataclass(frozen=True)
+class RodSet:
+    """Every rod's direction over the engine angles, with the rotational inertia its two point
+    masses leave out.
+
+    Attributes
+    ----------
+    directions : ndarray, complex, shape (n_rods, n_angles)
+        unit vector from the rod's big end to its small end, in the fixed frame
+    corrections_kgm2 : ndarray, shape (n_rods,)
+        each rod's correcting moment of inertia (``Cylinder.rod_inertia_kgm2``), kg·m²
+    cylinder : ndarray of int, shape (n_rods,)
+        the cylinder whose rod it is
+    """
+
+    directions: np.ndarray
+    corrections_kgm2: np.ndarray
+    cylinder: np.ndarray
 
 
 def engine_angles(samples):
@@ -98,9 +118,13 @@ class Linkage(NamedTuple):
     crank_pins: list
 
 
-def linkage(engine, crank_angles, numbers=None):
+def linkage(engine, crank_angles, numbers=None, pin_shift=None):
     """The exact linkage at crank angles ``crank_angles`` seen from the crankcase (any shape),
-    of every cylinder or of those ``numbers`` (with the master rods they ride on)."""
+    of every cylinder or of those ``numbers`` (with the master rods they ride on).
+
+    ``pin_shift`` ({throw index: complex offset in the crankcase frame, m}) moves crank pins
+    off their circle: a virtual displacement, for the forces on the pins.
+    """
     r = engine.crank_radius_m
     crank_angles = np.asarray(crank_angles, dtype=float)
     wanted = engine.cylinders if numbers is None else [engine.cylinder(n) for n in numbers]
@@ -110,6 +134,8 @@ def linkage(engine, crank_angles, numbers=None):
     throws = {c.throw for c in wanted}
     pins = [r * np.exp(1j * (crank_angles + t.phase_rad)) if i in throws or numbers is None
             else None for i, t in enumerate(engine.throws)]
+    for index, shift in (pin_shift or {}).items():
+        pins[index] = pins[index] + shift
     piston, travel, knuckle = {}, {}, {}
     for cyl in engine.cylinders:
         if cyl.is_link or not (cyl in wanted or cyl.number in masters):
@@ -135,7 +161,7 @@ def linkage(engine, crank_angles, numbers=None):
     return Linkage(piston, travel, knuckle, pins)
 
 
-def _crank_angles(engine, angles):
+def crank_angles_of(engine, angles):
     """Crank angle seen from the crankcase for engine angles ``angles``.
 
     In a rotary the crankcase turns forward about a fixed crank, so the crank turns
@@ -151,21 +177,39 @@ def check_assembly(engine):
     linkage(engine, engine_angles(_CHECK_SAMPLES))
 
 
-def piston_travel(engine, crank_angles, numbers=None):
+def piston_travel(engine, crank_angles, numbers=None, pin_shift=None):
     """Distance of every piston pin (or of those ``numbers``) from the crank axis along its
     cylinder axis, m.
 
     ``crank_angles`` are crank angles seen from the crankcase (any shape); returns a dict
-    keyed by cylinder number.
+    keyed by cylinder number. ``pin_shift`` moves crank pins (crankcase frame, see
+    :func:`linkage`).
     """
     check_assembly(engine)
-    return linkage(engine, crank_angles, numbers).travel
+    return linkage(engine, crank_angles, numbers, pin_shift).travel
 
 
-def mass_positions(engine, angles):
-    """Every point mass of ``engine`` at engine angles ``angles`` (1-D, rad), in the fixed frame."""
+def travel_at(engine, angles, numbers=None, pin_shift=None):
+    """Piston travel at engine angles ``angles`` (any shape), with crank pins moved by
+    ``pin_shift`` (fixed-frame offsets by throw index), by cylinder number, m."""
     check_assembly(engine)
-    piston, _, knuckle, pins = linkage(engine, _crank_angles(engine, angles))
+    return linkage(engine, crank_angles_of(engine, angles), numbers,
+                   _case_shift(engine, angles, pin_shift)).travel
+
+
+def _case_shift(engine, angles, pin_shift):
+    """Pin offsets given in the fixed frame, seen from the (turning) crankcase of a rotary."""
+    if not pin_shift or not engine.is_rotary:
+        return pin_shift
+    return {i: shift * np.exp(-1j * angles) for i, shift in pin_shift.items()}
+
+
+def mass_positions(engine, angles, pin_shift=None):
+    """Every point mass of ``engine`` at engine angles ``angles`` (1-D, rad), in the fixed frame
+    (with crank pins moved by ``pin_shift``, fixed-frame offsets by throw index, if given)."""
+    check_assembly(engine)
+    piston, _, knuckle, pins = linkage(engine, crank_angles_of(engine, angles),
+                                       pin_shift=_case_shift(engine, angles, pin_shift))
     rows = []  # (position, mass, z, owner, throw)
     for cyl in engine.cylinders:
         rows.append((piston[cyl.number], cyl.reciprocating_kg, cyl.z_m, cyl.number, cyl.throw))
@@ -181,3 +225,21 @@ def mass_positions(engine, angles):
         # engine angle: turn every position into the fixed frame the forces are wanted in
         positions = positions * np.exp(1j * angles)
     return MassSet(positions, *(np.array([row[i] for row in rows]) for i in range(1, 5)))
+
+
+def rod_directions(engine, angles, pin_shift=None):
+    """Every rod's unit direction at engine angles ``angles`` (1-D, rad), in the fixed frame
+    (``pin_shift`` as for :func:`mass_positions`)."""
+    check_assembly(engine)
+    piston, _, knuckle, pins = linkage(engine, crank_angles_of(engine, angles),
+                                       pin_shift=_case_shift(engine, angles, pin_shift))
+    rows = []
+    for cyl in engine.cylinders:
+        big_end = knuckle[cyl.number] if cyl.is_link else pins[cyl.throw]
+        rod = piston[cyl.number] - big_end
+        rows.append(rod / np.abs(rod))
+    directions = np.array(rows)
+    if engine.is_rotary:
+        directions = directions * np.exp(1j * angles)
+    return RodSet(directions, np.array([c.rod_inertia_kgm2 for c in engine.cylinders]),
+                  np.array([c.number for c in engine.cylinders]))

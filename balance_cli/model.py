@@ -14,7 +14,7 @@ from .errors import ModelError, UnitError
 from .tolerances import NOISE_FLOOR, SAME_DIRECTION_RAD, SAME_POSITION_M
 from .units import check_finite_range
 
-__all__ = ["Throw", "Cylinder", "Engine", "FRAMES"]
+__all__ = ["Throw", "Cylinder", "Engine", "Parts", "GasCycle", "FRAMES"]
 
 #: "fixed": the crank turns in a fixed crankcase; "rotary": the crankcase and its cylinders
 #: turn about a fixed crank
@@ -69,6 +69,10 @@ class Cylinder:
         knuckle-pin angle from the master rod's centre line, rad (link rods only)
     knuckle_kg : float
         mass moving with the knuckle pin, kg (link rods only)
+    rod_inertia_kgm2 : float
+        the correcting moment of inertia of this cylinder's rod (its link rod, for a link
+        cylinder): what the rod's two point masses leave out of its rotational inertia, kg·m²
+        (0 when only lumped masses are known; see :class:`Parts`)
     """
 
     number: int
@@ -81,10 +85,98 @@ class Cylinder:
     knuckle_radius_m: float = 0.0
     knuckle_angle_rad: float = 0.0
     knuckle_kg: float = 0.0
+    rod_inertia_kgm2: float = 0.0
 
     @property
     def is_link(self) -> bool:
         return self.master is not None
+
+
+@dataclass(frozen=True)
+class Parts:
+    """Part-level data, from which the lumped point masses and the rods' rotational inertia
+    are derived by the two-point rod model (Fraeys de Veubeke 1949, ch. I §§ 6 and 8).
+
+    Parameters
+    ----------
+    piston_kg : float
+        piston with rings and pin, per cylinder, kg
+    rod_kg, rod_cg_m, rod_inertia_kgm2 : float
+        plain or master rod: mass, kg; centre of gravity from the big end, m; moment of
+        inertia about its centre of gravity, kg·m²
+    link_kg, link_cg_m, link_inertia_kgm2 : float
+        the same for a link rod, the centre of gravity from its knuckle pin (0 without links)
+    crank_kg : float
+        crank-equivalent rotating mass per throw (the crankshaft's own unbalance at the pin), kg
+    crankshaft_inertia_kgm2, flywheel_inertia_kgm2 : float
+        moments of inertia about the crank axis (for a rotary: of the turning crankcase), kg·m²
+    """
+
+    piston_kg: float
+    rod_kg: float
+    rod_cg_m: float
+    rod_inertia_kgm2: float
+    link_kg: float = 0.0
+    link_cg_m: float = 0.0
+    link_inertia_kgm2: float = 0.0
+    crank_kg: float = 0.0
+    crankshaft_inertia_kgm2: float = 0.0
+    flywheel_inertia_kgm2: float = 0.0
+
+    def small_end_share(self, rod_length_m):
+        """K = H/L: the fraction of the rod's mass at its small end (the rest at the big end)."""
+        return self.rod_cg_m / rod_length_m
+
+    def rod_correction_kgm2(self, rod_length_m):
+        """C = J − M·H·(L − H): the moment of inertia the rod's two point masses leave out
+        (Fraeys's (12); always negative for a real rod, small beside J)."""
+        return self.rod_inertia_kgm2 - self.rod_kg * self.rod_cg_m * (rod_length_m - self.rod_cg_m)
+
+    def link_correction_kgm2(self, link_length_m):
+        """c = j − m·h·(l − h) of a link rod of length ``link_length_m``."""
+        return (self.link_inertia_kgm2
+                - self.link_kg * self.link_cg_m * (link_length_m - self.link_cg_m))
+
+
+@dataclass(frozen=True)
+class GasCycle:
+    """A single-zone gas cycle: polytropic compression and expansion with a Wiebe heat release
+    scaled to the indicated mean effective pressure (see :mod:`balance_cli.gas`).
+
+    Parameters
+    ----------
+    bore_m : float
+        cylinder bore, m
+    compression_ratio : float
+        geometric compression ratio (> 1)
+    imep_pa : float or None
+        indicated mean effective pressure the heat release is scaled to, Pa (None: no
+        combustion, a motored cycle)
+    intake_pa, crankcase_pa : float
+        pressure at the start of compression, and on the underside of the piston, Pa
+    polytropic_exponent : float
+        of compression and expansion
+    combustion_start_deg, combustion_duration_deg : float
+        start of heat release from the firing top dead centre (negative: before it), and its
+        length, crank degrees
+    wiebe_a, wiebe_m : float
+        Wiebe's efficiency and form parameters
+    """
+
+    bore_m: float
+    compression_ratio: float
+    imep_pa: float | None = None
+    intake_pa: float = 1.0e5
+    crankcase_pa: float = 101325.0
+    polytropic_exponent: float = 1.32
+    combustion_start_deg: float = -10.0
+    combustion_duration_deg: float = 50.0
+    wiebe_a: float = 5.0
+    wiebe_m: float = 2.0
+
+    @property
+    def piston_area_m2(self) -> float:
+        return math.pi * self.bore_m**2 / 4
 
 
 @dataclass(frozen=True)
@@ -117,6 +209,12 @@ class Engine:
         cylinder numbers in firing order, if the configuration gives one
     source, config_path : str
         where the data came from, and the file it was read from
+    shaft_inertia_kgm2 : float
+        crankshaft and flywheel (a rotary's crankcase) about the crank axis, kg·m²
+    parts : Parts or None
+        the part data the masses and inertias were derived from, if given
+    gas : GasCycle or None
+        the gas cycle, if given
 
     Raises
     ------
@@ -139,6 +237,9 @@ class Engine:
     firing_order: tuple | None = None
     source: str = ""
     config_path: str = ""
+    shaft_inertia_kgm2: float = 0.0
+    parts: Parts | None = None
+    gas: GasCycle | None = None
     _by_number: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
@@ -245,6 +346,8 @@ def _check(engine):
     _quantity(engine.pin_offset_m, "length", "pin_offset_m", sign="any")
     _quantity(engine.rotating_kg, "mass", "rotating_kg", sign="non-negative")
     _quantity(engine.crank_kg, "mass", "crank_kg", sign="non-negative")
+    _quantity(engine.shaft_inertia_kgm2, "moment of inertia", "shaft_inertia_kgm2",
+              sign="non-negative")
     if engine.rod_length_m <= engine.crank_radius_m + abs(engine.pin_offset_m):
         raise ModelError(
             f"of {engine.rod_length_m:g} m is not longer than the crank radius plus |pin offset| "
@@ -309,6 +412,7 @@ def _check_cylinder(engine, c):
                          f"{len(engine.throws)} throws", cylinder=n)
     _quantity(c.z_m, "length", "z_m", sign="any", cylinder=n)
     _quantity(c.reciprocating_kg, "mass", "reciprocating_kg", cylinder=n)
+    _quantity(c.rod_inertia_kgm2, "moment of inertia", "rod_inertia_kgm2", sign="any", cylinder=n)
     if not c.is_link:
         return
     master = engine._by_number.get(c.master)

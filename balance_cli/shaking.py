@@ -16,7 +16,7 @@ if TYPE_CHECKING:
     from .model import Engine
 
 __all__ = ["DEFAULT_SAMPLES", "DEFAULT_MAX_ORDER", "MAX_SAMPLES", "OrderComponents", "Shaking",
-           "shaking_forces", "ellipse", "check_settings"]
+           "shaking_forces", "ellipse", "check_settings", "part_values"]
 
 DEFAULT_SAMPLES = 256
 DEFAULT_MAX_ORDER = 8
@@ -54,8 +54,9 @@ def ellipse(forward, backward):
     return a + b, abs(a - b), axis
 
 
-def _part_values(forward, backward, floor, unit):
-    """One quantity's entry of an order: magnitudes, phases and ellipse, noise as exact zeros."""
+def part_values(forward, backward, floor, unit):
+    """One quantity's entry of an order (the ``force`` or ``moment`` of ``compare``'s JSON):
+    magnitudes, phases and ellipse of forward and backward phasors, noise as exact zeros."""
     clean = lambda z: z if abs(z) >= floor else 0j  # noqa: E731
     forward, backward = clean(forward), clean(backward)
     largest, smallest, axis = ellipse(forward, backward)
@@ -84,8 +85,8 @@ class OrderComponents:
         """The order as ``compare --format json`` writes it (SI). Parts below
         ``noise_floor_n`` (N, or N·m for moments) are rounding noise: exact zeros, phase 0."""
         return {"order": self.order,
-                "force": _part_values(self.force_forward, self.force_backward, noise_floor_n, "N"),
-                "moment": _part_values(self.moment_forward, self.moment_backward, noise_floor_n,
+                "force": part_values(self.force_forward, self.force_backward, noise_floor_n, "N"),
+                "moment": part_values(self.moment_forward, self.moment_backward, noise_floor_n,
                                        "Nm")}
 
 

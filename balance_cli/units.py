@@ -23,11 +23,22 @@ STANDARD_GRAVITY = 9.80665
 
 _RPM = 2.0 * math.pi / 60.0
 
+_BAR = 1e5
+_KGF_CM2 = STANDARD_GRAVITY * 1e4
+
 #: unit symbol -> factor to SI, per dimension
 DIMENSIONS = {
     "length": {"m": 1.0, "cm": 1e-2, "mm": 1e-3, "in": 0.0254, "ft": 0.3048},
     "mass": {"kg": 1.0, "g": 1e-3, "lb": 0.45359237},
     "angular speed": {"rpm": _RPM, "rev/min": _RPM, "rad/s": 1.0, "rps": 2.0 * math.pi},
+    # kgf·cm·s² is the "kg cm sec²" of the older papers (Fraeys de Veubeke's J, j)
+    "moment of inertia": {"kg*m^2": 1.0, "kg*cm^2": 1e-4, "g*cm^2": 1e-7, "kg*mm^2": 1e-6,
+                          "lb*in^2": 0.45359237 * 0.0254**2,
+                          "kgf*cm*s^2": STANDARD_GRAVITY * 1e-2},
+    "pressure": {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "bar": _BAR, "mbar": 1e2, "psi": 6894.757293168,
+                 "atm": 101325.0, "kgf/cm^2": _KGF_CM2, "at": _KGF_CM2},
+    "torque": {"N*m": 1.0, "Nm": 1.0, "kN*m": 1e3, "kgf*m": STANDARD_GRAVITY,
+               "lbf*ft": 1.3558179483314004},
 }
 
 #: smallest and largest magnitude (SI) of a non-zero value, per dimension, with the unit the
@@ -37,11 +48,16 @@ LIMITS = {
     "length": (1e-6, 1e3, "mm", 1e-3),
     "mass": (1e-6, 1e6, "kg", 1.0),
     "angular speed": (1e-3 * _RPM, 1e6 * _RPM, "rpm", _RPM),
+    "moment of inertia": (1e-12, 1e9, "kg*m^2", 1.0),
+    "pressure": (1e-3, 1e10, "bar", _BAR),
+    "torque": (1e-9, 1e12, "N*m", 1.0),
 }
 
 # ASCII digits only; any unit word, so that an unknown one is reported as a unit
-_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\s\d.+-]\S*)\s*$", re.ASCII)
-_EXAMPLES = {"length": "82.5 mm", "mass": "1770.4 g", "angular speed": "1650 rpm"}
+_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\s\d.+-].*?)\s*$",
+                       re.ASCII)
+_EXAMPLES = {"length": "82.5 mm", "mass": "1770.4 g", "angular speed": "1650 rpm",
+             "moment of inertia": "0.12 kg*m^2", "pressure": "45 bar", "torque": "850 N*m"}
 
 
 def _units_of(dimension):
@@ -74,17 +90,26 @@ def parse_quantity(text, dimension):
     match = _QUANTITY.match(text)
     if not match:
         raise UnitError(f'cannot read {text!r}: write a number and a unit, such as "{example}"')
-    number, unit = float(match.group(1)), match.group(2)
+    number, written = float(match.group(1)), match.group(2)
+    unit = _spelling(written)
     factors = DIMENSIONS[dimension]
     if unit not in factors:
         for other, table in DIMENSIONS.items():
             if unit in table:
                 raise UnitError(f"{text!r} is a {other}, but a {dimension} is needed "
                                 f"(units: {_units_of(dimension)})")
-        raise UnitError(f"unknown unit {unit!r} in {text!r} (units: {_units_of(dimension)})")
+        raise UnitError(f"unknown unit {written!r} in {text!r} (units: {_units_of(dimension)})")
     value = number * factors[unit]
     check_finite_range(value, dimension, shown=repr(text))
     return value
+
+
+def _spelling(unit):
+    """One spelling of a compound unit: "kg·m²", "kg m2", "kg.m2" and "kg*m^2" are one unit."""
+    for other, canonical in (("·", "*"), (".", "*"), (" ", "*"), ("²", "^2"), ("³", "^3")):
+        unit = unit.replace(other, canonical)
+    unit = re.sub(r"([A-Za-z])(\d)", r"\1^\2", unit)
+    return re.sub(r"\*+", "*", unit)
 
 
 def check_finite_range(value, dimension, shown=None, smallest=True):
@@ -144,3 +169,7 @@ def phasor_deg(phasor):
 def angle_change(before_deg, after_deg, period=360.0):
     """The signed turn from one angle to another, the short way round: in [−period/2, period/2)."""
     return (after_deg - before_deg + period / 2) % period - period / 2
+
+
+def pa_to_bar(pressure_pa):
+    return pressure_pa / _BAR

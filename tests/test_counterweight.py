@@ -60,16 +60,21 @@ def test_nakanishi_w12_counterweights_on_throws_1_and_4():
 
 def test_bramo_counterweight_is_fraeys_de_veubeke_s1():
     """§ IV.4, Table XV (ε = 0): gG = gB(1 − K) + g(n − 1)b(1 − k) + ½g[np + (n − 1)bk + BK] + ½gm
-    = 31.6071 + 0.0693 = 31.6764 kg at crank radius. His series stops at the 5th order: the
-    omitted terms, μ⁶·A ≈ 0.0004 kg, bound the difference."""
+    = 31.6071 + 0.0693 = 31.6764 kg at crank radius, from Table IX's masses. The configuration
+    derives them from Table VIII's parts, where Table IX's gB(1 − K) and gBK carry a slip of
+    0.0005 kg (reference records F-IX-*): with it and the 5th-order truncation (μ⁶·A ≈ 0.0004
+    kg), 0.0012 kg."""
     engine = load(BRAMO)
     result = balance(engine)
     (weight,) = result.counterweights
-    assert_allclose(weight.mass_kg, 31.6764, atol=0.0005)
-    # the same from the formula with the configuration's own masses (Table IX): m = 0.1386 kg
+    assert_allclose(weight.mass_kg, 31.6764, atol=0.0012)
+    # the same from the formula with the configuration's own masses; m by (13) from them
     links = [c for c in engine.cylinders if c.is_link]
+    m = (-sum(c.knuckle_kg * c.knuckle_radius_m * math.cos(engine.bank_angles_rad[c.bank])
+              for c in links) / engine.rod_length_m)
     formula = (engine.rotating_kg + sum(c.knuckle_kg for c in links)
-               + 0.5 * sum(c.reciprocating_kg for c in engine.cylinders) + 0.5 * 0.1386)
+               + 0.5 * sum(c.reciprocating_kg for c in engine.cylinders) + 0.5 * m)
+    assert_allclose(m, 0.1386, atol=5e-5)
     assert_allclose(weight.mass_kg, formula, atol=0.0005)
     assert_allclose(weight.angle_deg, 180.0, atol=1e-9)  # opposite the crank pin
     # S−1 is left untouched: Table XII's 0.215 kg (× RΩ²), exact 0.2140

@@ -54,15 +54,23 @@ def test_enough_figures_per_paper():
     assert counts["nakanishi1932"] >= 10 and counts["lecture-notes"] >= 5
 
 
-def test_bramo_config_uses_the_reduced_masses_of_table_ix():
-    """The library's BRAMO 323 carries Fraeys de Veubeke's point masses (Table IX, as printed)."""
+def test_bramo_config_derives_fraeys_de_veubekes_point_masses_from_table_viii():
+    """The library's BRAMO 323 gives Table VIII's parts; the configuration reader's two-point
+    reduction equals the reference evaluator's own § 8 formulas (written apart from the
+    library) to rounding, and Table IX as printed to its slips of 0.0005 kg (records F-IX-*)."""
     engine = load(evaluate.ROOT / "configs" / "bramo-323.toml")
+    paper = next(p for p in evaluate.papers() if p["paper"]["key"] == "fraeys1949")
+    data = paper["data"]
+    reduction = evaluate._fraeys_reduction(data)
     master = engine.cylinder(1)
     links = [c for c in engine.cylinders if c.is_link]
-    assert master.reciprocating_kg == pytest.approx(2.972 + 1.3186, abs=1e-9)   # p + B·K
-    assert engine.rotating_kg == pytest.approx(9.2214, abs=1e-9)                # B(1 − K)
-    assert all(c.reciprocating_kg == pytest.approx(3.7239, abs=1e-9) for c in links)  # p + b·k
-    assert all(c.knuckle_kg == pytest.approx(0.6681, abs=1e-9) for c in links)        # b(1 − k)
+    assert master.reciprocating_kg == pytest.approx(data["p_kg"] + reduction["BK"], abs=1e-12)
+    assert engine.rotating_kg == pytest.approx(reduction["B(1-K)"], abs=1e-12)
+    assert all(c.reciprocating_kg == pytest.approx(reduction["a"], abs=1e-12) for c in links)
+    assert all(c.knuckle_kg == pytest.approx(reduction["b(1-k)"], abs=1e-12) for c in links)
+    for ours, printed in ((master.reciprocating_kg, 2.972 + 1.3186), (engine.rotating_kg, 9.2214),
+                          (links[0].reciprocating_kg, 3.7239), (links[0].knuckle_kg, 0.6681)):
+        assert ours == pytest.approx(printed, abs=0.0006)
 
 
 def test_validation_report_is_current():

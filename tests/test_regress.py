@@ -75,15 +75,15 @@ def test_added_and_removed_engines_are_listed(project):
 
 
 def test_junit_parses_and_counts_the_failure(project):
-    change_mass(project / "configs" / "bramo-323.toml", 1.01)
+    change_mass(project / "configs" / "abc-dragonfly.toml", 1.01)
     result = invoke("regress", "baseline.json", "--format", "junit", "-o", "report.xml")
     assert result.exit_code == 1
     root = ET.parse(project / "report.xml").getroot()
     assert root.tag == "testsuites" and root.get("tests") == "17" and root.get("failures") == "1"
     (suite,) = root
     failed = [case for case in suite if case.find("failure") is not None]
-    assert [case.get("name") for case in failed] == ["BRAMO 323 9-cylinder radial"]
-    assert failed[0].get("file") == "configs/bramo-323.toml"
+    assert [case.get("name") for case in failed] == ["ABC Dragonfly 9-cylinder radial"]
+    assert failed[0].get("file") == "configs/abc-dragonfly.toml"
     assert "order 1 force.forward_N" in failed[0].find("failure").text
 
 

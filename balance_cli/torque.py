@@ -1,0 +1,405 @@
+"""Torques on the crankshaft and the engine frame, and the reduced mass of the moving parts.
+
+Everything comes from the kinetic energy of the exact motion, T = ½·μ(θ)·θ̇², where the
+reduced mass μ(θ) = Σ m·|dx/dθ|² + Σ C·(dβ/dθ)² + I_shaft sums the point masses (x their
+positions in the fixed frame), the rods' correcting moments of inertia C (β a rod's angle) and
+the shaft's own inertia. At constant speed ω, Lagrange's equation gives:
+
+- the **inertia torque** on the crankshaft (a rotary's crankcase), positive with rotation:
+  −(d/dt ∂T/∂θ̇ − ∂T/∂θ) = −½·ω²·dμ/dθ; for one reciprocating mass on a massless rod this is
+  m·r²·ω²·(λ/4·sin θ − ½·sin 2θ − 3λ/4·sin 3θ − …);
+- the **tilting couple** (Fraeys de Veubeke's V_k), the moving parts' −dH/dt about the crank
+  axis, H = θ̇·(Σ m·Im(x̄·dx/dθ) + Σ C·dβ/dθ + I_shaft) their angular momentum;
+- the **gas torque**, −Σ (p − p_crankcase)·A·ds/dθ with s each piston's travel (virtual work);
+- the **frame reaction**, the couple on the engine frame: −(gas + inertia) + tilting
+  (Fraeys's (23) without reduction gear; for inertia alone, Tanaka's ΣC_I + C_L).
+
+Derivatives with respect to θ are taken spectrally (multiplying Fourier coefficients by ik),
+exact for the band-limited motion; a four-stroke's torques repeat every 720°, so their orders
+are multiples of ½.
+"""
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .analysis import analyse
+from .errors import AnalysisError
+from .gas import cycle_pressure
+from .harmonics import orders_of
+from .kinematics import (crank_angles_of, engine_angles, mass_positions, piston_travel,
+                         rod_directions, travel_at)
+from .model import Engine
+from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings, part_values
+from .tolerances import NOISE_FLOOR
+from .units import phasor_deg, rad_s_to_rpm
+
+__all__ = ["Series", "ReducedMass", "PinForce", "TorqueResult", "torque", "periodic_derivative"]
+
+
+def periodic_derivative(values, period=2 * math.pi):
+    """d/dθ of samples of a periodic function over one ``period`` (last axis), spectrally."""
+    n = values.shape[-1]
+    k = orders_of(n) * (2 * math.pi / period)
+    if n % 2 == 0:
+        k[n // 2] = 0.0   # the Nyquist term has no sign; its derivative is dropped
+    return np.fft.ifft(np.fft.fft(values, axis=-1) * 1j * k, axis=-1)
+
+
+@dataclass(frozen=True)
+class Series:
+    """A quantity over one period: X(θ) = mean + Σ_k (cos_k·cos kθ + sin_k·sin kθ), in ``unit``
+    (a torque in N·m, a force component in N).
+
+    θ is the crank angle of throw 1 (a rotary's crankcase angle), positive with rotation; k
+    runs over multiples of ½ for a four-stroke. ``curve`` holds X at ``theta_deg``.
+    """
+
+    period_deg: float
+    mean: float
+    orders: tuple
+    theta_deg: np.ndarray
+    curve: np.ndarray
+    unit: str = "Nm"
+
+    @classmethod
+    def from_curve(cls, curve, period_deg, max_order, floor, unit="Nm"):
+        """The series of samples ``curve`` (over one period) up to ``max_order``; terms below
+        ``floor`` are rounding noise and read as exact zeros."""
+        curve = np.real(curve)
+        n = curve.shape[-1]
+        per_turn = period_deg / 360.0
+        c = np.fft.rfft(curve) / n
+        orders = []
+        for j in range(1, int(round(max_order * per_turn)) + 1):
+            cos, sin = 2 * c[j].real, -2 * c[j].imag
+            orders.append((j / per_turn, cos if abs(cos) >= floor else 0.0,
+                           sin if abs(sin) >= floor else 0.0))
+        mean = c[0].real if abs(c[0].real) >= floor else 0.0
+        theta = np.arange(n) * period_deg / n
+        return cls(float(period_deg), float(mean), tuple(orders), theta, curve, unit)
+
+    @property
+    def max(self) -> float:
+        return float(self.curve.max())
+
+    @property
+    def min(self) -> float:
+        return float(self.curve.min())
+
+    @property
+    def range(self) -> float:
+        """ΔC, the largest minus the smallest value over the period."""
+        return self.max - self.min
+
+    def order(self, k) -> tuple:
+        """(cos, sin) of order ``k`` (a multiple of ½ for a four-stroke); KeyError otherwise."""
+        for order, cos, sin in self.orders:
+            if abs(order - k) < 1e-9:
+                return cos, sin
+        raise KeyError(f"order {k!r} is not among the orders of this torque")
+
+    def to_dict(self) -> dict:
+        """``mean_<unit>``, ``max_``, ``min_``, ``range_`` and ``orders[]`` (``order``, ``cos_``,
+        ``sin_``, ``amplitude_``, ``phase_deg``: the order is amplitude·cos(kθ − phase))."""
+        u = self.unit
+        return {
+            f"mean_{u}": self.mean, f"max_{u}": self.max, f"min_{u}": self.min,
+            f"range_{u}": self.range,
+            "orders": [{"order": k, f"cos_{u}": cos, f"sin_{u}": sin,
+                        f"amplitude_{u}": math.hypot(cos, sin),
+                        "phase_deg": phasor_deg(complex(cos, sin))}
+                       for k, cos, sin in self.orders],
+        }
+
+
+@dataclass(frozen=True)
+class ReducedMass:
+    """μ(θ): the kinetic energy of the moving parts is ½·μ·ω², kg·m² (Margoulis § 2)."""
+
+    theta_deg: np.ndarray
+    curve_kgm2: np.ndarray
+
+    @property
+    def mean_kgm2(self) -> float:
+        return float(self.curve_kgm2.mean())
+
+    @property
+    def min_kgm2(self) -> float:
+        return float(self.curve_kgm2.min())
+
+    @property
+    def max_kgm2(self) -> float:
+        return float(self.curve_kgm2.max())
+
+    def to_dict(self) -> dict:
+        return {"mean_kgm2": self.mean_kgm2, "min_kgm2": self.min_kgm2, "max_kgm2": self.max_kgm2}
+
+
+@dataclass(frozen=True)
+class PinForce:
+    """The force the rods exert on one crank pin (``throw``, 1-based), or the crankshaft on its
+    main bearings together (``throw`` None), over one period, in the fixed frame.
+
+    ``force_n`` is complex, N (real part along the reference axis); ``radial`` (outwards along
+    the throw) and ``tangential`` (positive with rotation: r·tangential turns the crank) are
+    given for a pin. Orders are multiples of ½ for a four-stroke with gas.
+    """
+
+    throw: int | None
+    period_deg: float
+    theta_deg: np.ndarray
+    force_n: np.ndarray
+    radial: Series | None
+    tangential: Series | None
+
+    def order(self, k):
+        """Forward and backward phasors of order ``k``, N: F = F⁺·e^{ikθ} + F⁻·e^{−ikθ}."""
+        n = self.force_n.shape[-1]
+        j = int(round(k * self.period_deg / 360.0))
+        c = np.fft.fft(self.force_n) / n
+        return complex(c[j % n]), complex(c[-j % n])
+
+    def to_dict(self, max_order, floor_n) -> dict:
+        per_turn = self.period_deg / 360.0
+        orders = []
+        for j in range(0, int(round(max_order * per_turn)) + 1):
+            forward, backward = self.order(j / per_turn)
+            if j == 0:
+                # the steady part: one phasor, kept as the forward one
+                backward = 0j
+            orders.append({"order": j / per_turn, "force": part_values(forward, backward, floor_n, "N")})
+        entry = {"throw": self.throw, "orders": orders}
+        if self.radial is not None:
+            entry["radial"] = self.radial.to_dict()
+            entry["tangential"] = self.tangential.to_dict()
+        return entry
+
+
+@dataclass(frozen=True)
+class TorqueResult:
+    """Torques of one engine at constant speed.
+
+    Attributes
+    ----------
+    engine : Engine
+    samples : int
+        crank angles a revolution
+    reduced_mass : ReducedMass
+    inertia, tilting, frame, total : Series
+    gas : Series or None
+        None when no pressure was given (then ``total`` is the inertia torque alone)
+    """
+
+    engine: Engine
+    samples: int
+    reduced_mass: ReducedMass
+    inertia: Series
+    tilting: Series
+    frame: Series
+    gas: Series | None
+    total: Series
+    pins: tuple = ()
+    main_bearings: PinForce | None = None
+    max_order: int = DEFAULT_MAX_ORDER
+
+    @property
+    def period_deg(self) -> float:
+        return self.total.period_deg
+
+    def to_dict(self) -> dict:
+        """This engine's entry of ``torque --format json`` (SI units; see the README)."""
+        engine = self.engine
+        return {
+            "name": engine.name, "config": engine.config_path, "cycle": engine.cycle,
+            "speed_rpm": rad_s_to_rpm(engine.speed_rad_s),
+            "period_deg": self.period_deg,
+            "reduced_mass": self.reduced_mass.to_dict(),
+            "inertia": self.inertia.to_dict(), "frame": self.frame.to_dict(),
+            "tilting": self.tilting.to_dict(),
+            "gas": None if self.gas is None else self.gas.to_dict(),
+            "total": self.total.to_dict(),
+            "bearing": {
+                "crank_pins": [p.to_dict(self.max_order, engine.noise_floor_n) for p in self.pins],
+                "main_bearings": (None if self.main_bearings is None else
+                                  self.main_bearings.to_dict(self.max_order, engine.noise_floor_n)),
+            },
+        }
+
+
+def _torque_unit(engine):
+    """m_rec·r²·ω²·n, N·m: the size torques are measured against (as forces against m·r·ω²·n)."""
+    return engine.per_cylinder_unit_n * engine.crank_radius_m
+
+
+def _reduced_mass_and_momentum(engine, angles):
+    """μ(θ) and h(θ) = H/θ̇ at engine angles ``angles`` (one revolution), kg·m²."""
+    masses = mass_positions(engine, angles)
+    rates = periodic_derivative(masses.positions)
+    weights = masses.masses_kg[:, None]
+    mu = (weights * np.abs(rates) ** 2).sum(axis=0)
+    h = (weights * (np.conj(masses.positions) * rates).imag).sum(axis=0)
+    rods = rod_directions(engine, angles)
+    if np.any(rods.corrections_kgm2):
+        # a rod's angular rate from its unit vector u: dβ/dθ = Im(ū·du/dθ)
+        turning = (np.conj(rods.directions) * periodic_derivative(rods.directions)).imag
+        corrections = rods.corrections_kgm2[:, None]
+        mu = mu + (corrections * turning**2).sum(axis=0)
+        h = h + (corrections * turning).sum(axis=0)
+    return mu + engine.shaft_inertia_kgm2, h + engine.shaft_inertia_kgm2
+
+
+def _firing_angles_deg(engine, firing):
+    """Engine angle of each cylinder's firing top dead centre, by cylinder number."""
+    start = firing.tdc_deg[firing.order[0]]
+    return {n: (start + a) % engine.cycle_deg for n, a in zip(firing.order, firing.angles_deg)}
+
+
+def _travel_rates(engine, angles):
+    """ds/dθ of every piston over one revolution of engine angles, by cylinder number, m/rad."""
+    travel = piston_travel(engine, crank_angles_of(engine, angles))
+    numbers = list(travel)
+    rates = periodic_derivative(np.array([travel[n] for n in numbers])).real
+    return dict(zip(numbers, rates))
+
+
+def _net_pressures(engine, cycle_angles, fire, pressure):
+    """(p − p_crankcase) of every cylinder over the cycle grid ``cycle_angles`` (rad), Pa."""
+    gas = engine.gas
+    crankcase = gas.crankcase_pa if gas is not None else 101325.0
+    theta_deg = np.degrees(cycle_angles)
+    out = {}
+    for cylinder in engine.cylinders:
+        n = cylinder.number
+        curve = pressure
+        if curve is None:
+            def travel_of(psi_deg, n=n):
+                return travel_at(engine, np.radians(fire[n] + psi_deg), [n])[n]
+            curve = cycle_pressure(gas, travel_of, engine.cycle_deg, engine.config_path)
+        out[n] = curve.at(theta_deg - fire[n]) - crankcase
+    return out
+
+
+def _richardson(evaluate, step):
+    """d/dh of ``evaluate(h)`` at 0 by central differences, extrapolated (error O(step⁴))."""
+    coarse = (evaluate(step) - evaluate(-step)) / (2 * step)
+    fine = (evaluate(step / 2) - evaluate(-step / 2)) / step
+    return (4 * fine - coarse) / 3
+
+
+def _pin_forces(engine, angles, turns, net_pressure, area):
+    """The force of the pin on the rods riding on it, by virtual work: for a virtual shift δP
+    of the pin (the cylinders held), F·δP = Σ m·a·δx + Σ C·β̈·δβ + Σ (p − p_c)·A·δs; the force
+    of the rods on the pin is −F. One complex curve over the cycle per throw, N."""
+    omega = engine.speed_rad_s
+    n = len(angles)
+    masses = mass_positions(engine, angles)
+    k = orders_of(n)
+    accelerations = np.fft.ifft(np.fft.fft(masses.positions, axis=-1) * -(k * omega) ** 2, axis=-1)
+    weights = np.where(masses.cylinder != -1, masses.masses_kg, 0.0)[:, None]  # not the crank's
+    rods = rod_directions(engine, angles)
+    rates = (np.conj(rods.directions) * periodic_derivative(rods.directions)).imag
+    angular_accelerations = omega**2 * periodic_derivative(rates).real
+    step = 1e-4 * engine.crank_radius_m
+    forces = []
+    for index in range(len(engine.throws)):
+        parts = []
+        for direction in (1.0, 1j):
+            dx = _richardson(lambda h: mass_positions(engine, angles, {index: h * direction}).positions,
+                             step)
+            du = _richardson(lambda h: rod_directions(engine, angles,
+                                                      {index: h * direction}).directions, step)
+            inertial = (weights * (np.conj(accelerations) * dx).real).sum(axis=0)
+            inertial += (rods.corrections_kgm2[:, None] * angular_accelerations
+                         * (np.conj(rods.directions) * du).imag).sum(axis=0)
+            component = np.tile(inertial, turns)
+            if net_pressure:
+                ds = _richardson(lambda h: np.array(list(travel_at(engine, angles,
+                                                                   pin_shift={index: h * direction}).values())),
+                                 step)
+                numbers = list(travel_at(engine, angles[:1]))
+                component = component + sum(net_pressure[m] * area * np.tile(ds[i], turns)
+                                            for i, m in enumerate(numbers))
+            parts.append(component)
+        forces.append(-(parts[0] + 1j * parts[1]))
+    own = np.where(masses.cylinder == -1, masses.masses_kg, 0.0)[:, None]
+    crank_inertia = np.tile(-(own * accelerations).sum(axis=0), turns)
+    return forces, crank_inertia
+
+
+def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressure=None,
+           bore_m=None) -> TorqueResult:
+    """Inertia, tilting, gas, total and frame torques and the reduced mass of ``engine`` at
+    its speed.
+
+    Parameters
+    ----------
+    engine : Engine
+    samples, max_order : int
+        crank angles a revolution, and the highest order reported (half orders too for a
+        four-stroke)
+    pressure : PressureCurve, optional
+        the cylinder pressure over a cycle from the firing top dead centre, the same for every
+        cylinder at its own firing angle; without it, the engine's [gas] cycle when it has one,
+        else no gas torque
+    bore_m : float, optional
+        the bore for ``pressure``, m (default the engine's [gas] bore)
+
+    Raises
+    ------
+    AnalysisError
+        settings out of range, a pressure curve of another cycle, or a pressure without a bore
+    """
+    check_settings(samples, max_order)
+    result = analyse(engine, samples, max_order)       # checks assembly and firing once
+    if pressure is not None:
+        if pressure.cycle_deg != engine.cycle_deg:
+            raise AnalysisError(f"covers {pressure.cycle_deg:g}°, but {engine.name!r} is a "
+                                f"{engine.cycle}-stroke ({engine.cycle_deg:g}°)", "pressure")
+        bore_m = bore_m if bore_m is not None else (engine.gas.bore_m if engine.gas else None)
+        if bore_m is None:
+            raise AnalysisError("is given without a bore; give bore_m or a [gas] table with a bore",
+                                "pressure")
+    elif engine.gas is not None:
+        bore_m = engine.gas.bore_m
+    omega = engine.speed_rad_s
+    angles = engine_angles(samples)
+    mu, h = _reduced_mass_and_momentum(engine, angles)
+    turns = int(round(engine.cycle_deg / 360.0))
+    floor = NOISE_FLOOR * _torque_unit(engine)
+
+    def series(values, unit="Nm", tile=True):
+        values = np.tile(np.real(values), turns) if tile else np.real(values)
+        return Series.from_curve(values, engine.cycle_deg, max_order,
+                                 floor if unit == "Nm" else engine.noise_floor_n, unit)
+
+    inertia = -0.5 * omega**2 * periodic_derivative(mu).real
+    tilting = -omega**2 * periodic_derivative(h).real
+    total = np.tile(inertia, turns)
+    net_pressure, area, gas = {}, 0.0, None
+    if bore_m is not None:
+        area = math.pi * bore_m**2 / 4
+        cycle_angles = engine_angles(samples * turns) * turns
+        net_pressure = _net_pressures(engine, cycle_angles, _firing_angles_deg(engine, result.firing),
+                                      pressure)
+        rates = _travel_rates(engine, angles)
+        gas_curve = sum(-net_pressure[c.number] * area * np.tile(rates[c.number], turns)
+                        for c in engine.cylinders)
+        gas = series(gas_curve, tile=False)
+        total = total + gas_curve
+    pins, crank_inertia = _pin_forces(engine, angles, turns, net_pressure, area)
+    theta = np.arange(samples * turns) * 360.0 / samples
+    pin_results = []
+    for index, (throw, force) in enumerate(zip(engine.throws, pins)):
+        # the pin's direction: turning with θ on a crankshaft, fixed on a rotary's crank
+        along = np.exp(1j * (throw.phase_rad + (0.0 if engine.is_rotary else np.radians(theta))))
+        local = force * np.conj(along)
+        pin_results.append(PinForce(index + 1, engine.cycle_deg, theta, force,
+                                    series(local.real, "N", tile=False),
+                                    series(local.imag, "N", tile=False)))
+    main = None if engine.is_rotary else PinForce(None, engine.cycle_deg, theta,
+                                                  sum(pins) + crank_inertia, None, None)
+    return TorqueResult(engine, samples, ReducedMass(np.degrees(angles), mu.real), series(inertia),
+                        series(tilting), series(-total + np.tile(tilting, turns), tile=False), gas,
+                        series(total, tile=False), tuple(pin_results), main, max_order)
