@@ -12,6 +12,7 @@ import warnings
 from pathlib import Path
 
 import click
+import numpy as np
 from click.core import ParameterSource
 
 from . import __version__
@@ -23,11 +24,11 @@ from .firing import firing_sequence
 from .output import check_folder, refuse_inputs, to_json, write_text
 from .regress import RegressError, baseline_configs, check_baseline, check_rtol, compared_like
 from .regress import regression as regression_of
-from .report.csvfile import balance_csv, compare_csv
+from .report.csvfile import balance_csv, compare_csv, torque_csv
 from .report.display import Scale
 from .report.junit import junit_xml
 from .report.tables import (balance_tables, compare_tables, list_table, regression_tables,
-                            show_table)
+                            show_table, steadiness_text, torque_tables)
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings
 from .units import parse_quantity
 
@@ -39,7 +40,8 @@ FLAGS = {
     "planes": "--planes", "radius_m": "--radius", "balance_factor": "--balance-factor",
     "shaft_orders": "--shafts", "antivibrateur_radius_m": "--antivibrateur-radius",
     "test_masses": "--test-masses", "path": "--output", "units": "--units", "rtol": "--rtol",
-    "order": "--order",
+    "order": "--order", "pressure": "--pressure", "inertia_kgm2": "--inertia", "target": "--target",
+    "speed_rad_s": "--speed", "load": "--load", "torque_nm": "--torque", "bore_m": "--bore",
 }
 
 _INPUTS = click.argument("paths", nargs=-1, required=True, metavar="FILE|DIR...")
@@ -452,6 +454,122 @@ def report(paths, output, with_html, reference, star_order, samples, max_order):
         written = write_report(target, comparison, balances, star_order, with_html)
     for path in written:
         click.echo(f"wrote {path}", err=True)
+
+
+def _quantity_option(text, flag, dimension):
+    if text is None:
+        return None
+    try:
+        return parse_quantity(text, dimension)
+    except BalanceError as exc:
+        raise click.ClickException(f"{flag}: {exc}") from None
+
+
+_LOAD = click.option("--load", type=click.Choice(["propeller", "constant"]), default="propeller",
+                     show_default=True,
+                     help="What the engine drives: a propeller (torque ℓ·ω², ℓ = C_m/ω_m²) or a "
+                          "constant torque C_m.")
+
+
+@main.command()
+@_INPUTS
+@click.option("--pressure", metavar="FILE.csv",
+              help="Cylinder pressure over one cycle from the firing top dead centre: a header "
+                   "angle_deg,pressure_bar (or another pressure unit), one row per angle; the same "
+                   "curve for every cylinder at its own firing angle. Default: the configuration's "
+                   "[gas] cycle, if it has one.")
+@click.option("--bore", metavar="LENGTH", help="Cylinder bore for --pressure, e.g. '154 mm' "
+                                               "(default the [gas] bore).")
+@click.option("--inertia", metavar="I", help="Flywheel and propeller inertia, e.g. '2.5 kg*m^2': "
+                                             "integrate the speed over the cycle and give the "
+                                             "steadiness (needs a gas torque).")
+@click.option("--target", type=float, metavar="R",
+              help="Also give the flywheel inertia that reaches steadiness R.")
+@_LOAD
+@_SAMPLES
+@_MAX_ORDER
+@click.option("--units", type=click.Choice(["N", "kgf"]), default="N", show_default=True,
+              help="Units of torques (N·m or kgf·m) and forces in the tables; JSON stays SI.")
+@click.option("--format", "fmt", type=click.Choice(["table", "markdown", "csv", "json"]),
+              default="table", show_default=True, help="Output format.")
+@_OUTPUT
+def torque(paths, pressure, bore, inertia, target, load, samples, max_order, units, fmt, output):
+    """Torques at constant speed: inertia, gas, total, the rods' tilting couple and the frame
+    reaction, order by order; the reduced mass; the forces on the crank pins and main bearings.
+
+    With --inertia (or --target), the speed over the cycle with a flywheel and a load, and its
+    steadiness (Margoulis).
+    """
+    from .gas import read_pressure_csv
+    from .torque import TorqueSet, torque as torque_of
+
+    files = _inputs(paths)
+    inputs = files + ([Path(pressure)] if pressure else [])
+    _guard([output], inputs)
+    _settings(samples, max_order)
+    bore_m = _quantity_option(bore, "--bore", "length")
+    inertia_kgm2 = _quantity_option(inertia, "--inertia", "moment of inertia")
+    engines = _load_all(files)
+    curves = {}
+    if pressure is not None:
+        with _reported():
+            for cycle in sorted({e.cycle_deg for e in engines}):
+                curves[cycle] = read_pressure_csv(pressure, cycle)
+
+    def work(engine):
+        return torque_of(engine, samples, max_order, curves.get(engine.cycle_deg), bore_m,
+                         inertia_kgm2, load, target)
+
+    results = _run_each(engines, "Torques", work)
+    scale = Scale.of(True, units)
+    if fmt == "json":
+        text = to_json(TorqueSet(tuple(results)).to_dict())
+    elif fmt == "csv":
+        text = torque_csv(results, scale)
+    else:
+        text = torque_tables(results, scale, fmt)
+    _write(output, text)
+
+
+@main.command()
+@click.option("--torque", "torque_file", required=True, metavar="FILE.csv",
+              help="Driving torque over one cycle: a header angle_deg,torque_Nm (or another "
+                   "torque unit), one row per crank angle; the cycle is 360° or 720° as the "
+                   "angles span.")
+@click.option("--inertia", required=True, metavar="I",
+              help="Flywheel and propeller inertia with the engine's moving parts, e.g. "
+                   "'2.5 kg*m^2'.")
+@click.option("--speed", required=True, metavar="SPEED", help="Mean speed, e.g. '1650 rpm'.")
+@_LOAD
+@click.option("--target", type=float, metavar="R",
+              help="Also give the inertia that reaches steadiness R.")
+@click.option("--format", "fmt", type=click.Choice(["table", "markdown", "json"]), default="table",
+              show_default=True, help="Output format.")
+@_OUTPUT
+def steadiness(torque_file, inertia, speed, load, target, fmt, output):
+    """Speed fluctuation of an engine set driven by a measured torque curve: the periodic speed,
+    the steadiness ω_m/(ω_max − ω_min), and Margoulis's closed forms r_c, r_v, r_h."""
+    from .gas import read_cycle_csv
+    from .steadiness import flywheel_for, steadiness as steadiness_of
+
+    _guard([output], [Path(torque_file)])
+    inertia_kgm2 = _quantity_option(inertia, "--inertia", "moment of inertia")
+    speed_rad_s = _quantity_option(speed, "--speed", "angular speed")
+    with _reported():
+        angles, values, cycle = read_cycle_csv(torque_file, "torque")
+        # an even grid for the integration, the curve linear between the file's points
+        grid = np.arange(4096) * cycle / 4096
+        torque_nm = np.interp(grid, angles, values, period=cycle)
+        speed = steadiness_of(torque_nm, cycle, inertia_kgm2, speed_rad_s, load)
+        flywheel = None if target is None else flywheel_for(target, torque_nm, cycle, speed_rad_s,
+                                                            load)
+    document = {"balance_version": 1, "torque_file": str(torque_file), "cycle_deg": cycle,
+                **speed.to_dict(), "inertia_for_target_kgm2": flywheel}
+    if fmt == "json":
+        text = to_json(document)
+    else:
+        text = steadiness_text(speed, flywheel) + "\n"
+    _write(output, text)
 
 
 def _read_baseline(path):

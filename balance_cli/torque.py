@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .analysis import analyse
+from .analysis import DOCUMENT_VERSION, analyse
 from .errors import AnalysisError
 from .gas import cycle_pressure
 from .harmonics import orders_of
@@ -32,10 +32,12 @@ from .kinematics import (crank_angles_of, engine_angles, mass_positions, piston_
                          rod_directions, travel_at)
 from .model import Engine
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings, part_values
+from .steadiness import Steadiness, flywheel_for, steadiness
 from .tolerances import NOISE_FLOOR
 from .units import phasor_deg, rad_s_to_rpm
 
-__all__ = ["Series", "ReducedMass", "PinForce", "TorqueResult", "torque", "periodic_derivative"]
+__all__ = ["Series", "ReducedMass", "PinForce", "TorqueResult", "TorqueSet", "torque",
+           "periodic_derivative"]
 
 
 def periodic_derivative(values, period=2 * math.pi):
@@ -78,6 +80,8 @@ class Series:
                            sin if abs(sin) >= floor else 0.0))
         mean = c[0].real if abs(c[0].real) >= floor else 0.0
         theta = np.arange(n) * period_deg / n
+        if np.abs(curve).max() < floor:
+            curve = np.zeros_like(curve)   # rounding noise only (a centred piston's tilting)
         return cls(float(period_deg), float(mean), tuple(orders), theta, curve, unit)
 
     @property
@@ -170,8 +174,8 @@ class PinForce:
                 # the steady part: one phasor, kept as the forward one
                 backward = 0j
             orders.append({"order": j / per_turn, "force": part_values(forward, backward, floor_n, "N")})
-        entry = {"throw": self.throw, "orders": orders}
-        if self.radial is not None:
+        entry: dict = {"throw": self.throw, "orders": orders}
+        if self.radial is not None and self.tangential is not None:
             entry["radial"] = self.radial.to_dict()
             entry["tangential"] = self.tangential.to_dict()
         return entry
@@ -190,6 +194,15 @@ class TorqueResult:
     inertia, tilting, frame, total : Series
     gas : Series or None
         None when no pressure was given (then ``total`` is the inertia torque alone)
+    pins : tuple of PinForce
+        the force of the rods on each crank pin
+    main_bearings : PinForce or None
+        the crankshaft's force on its main bearings together (fixed frame only)
+    max_order : int
+    steadiness : Steadiness or None
+        the speed with a flywheel and a load, when asked for
+    flywheel_kgm2 : float or None
+        the flywheel inertia that reaches a target steadiness, when asked for
     """
 
     engine: Engine
@@ -203,6 +216,8 @@ class TorqueResult:
     pins: tuple = ()
     main_bearings: PinForce | None = None
     max_order: int = DEFAULT_MAX_ORDER
+    steadiness: Steadiness | None = None
+    flywheel_kgm2: float | None = None
 
     @property
     def period_deg(self) -> float:
@@ -225,7 +240,22 @@ class TorqueResult:
                 "main_bearings": (None if self.main_bearings is None else
                                   self.main_bearings.to_dict(self.max_order, engine.noise_floor_n)),
             },
+            "steadiness": None if self.steadiness is None else {
+                **self.steadiness.to_dict(), "flywheel_for_target_kgm2": self.flywheel_kgm2},
         }
+
+
+@dataclass(frozen=True)
+class TorqueSet:
+    """The torques of several engines, analysed alike."""
+
+    results: tuple
+
+    def to_dict(self) -> dict:
+        """What ``torque --format json`` writes: one :meth:`TorqueResult.to_dict` per engine."""
+        first = self.results[0]
+        return {"balance_version": DOCUMENT_VERSION, "samples": first.samples,
+                "max_order": first.max_order, "engines": [r.to_dict() for r in self.results]}
 
 
 def _torque_unit(engine):
@@ -329,7 +359,7 @@ def _pin_forces(engine, angles, turns, net_pressure, area):
 
 
 def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressure=None,
-           bore_m=None) -> TorqueResult:
+           bore_m=None, inertia_kgm2=None, load="propeller", target=None) -> TorqueResult:
     """Inertia, tilting, gas, total and frame torques and the reduced mass of ``engine`` at
     its speed.
 
@@ -345,11 +375,19 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
         else no gas torque
     bore_m : float, optional
         the bore for ``pressure``, m (default the engine's [gas] bore)
+    inertia_kgm2 : float, optional
+        a flywheel (and propeller) inertia: then the speed over the cycle is integrated with
+        the gas torque driving, the moving parts' μ(θ) and the ``load`` ("propeller" or
+        "constant"; see :func:`balance_cli.steadiness.steadiness`)
+    target : float, optional
+        a steadiness to reach: the flywheel inertia that does is given too (and the speed
+        with it, when no ``inertia_kgm2`` is given)
 
     Raises
     ------
     AnalysisError
-        settings out of range, a pressure curve of another cycle, or a pressure without a bore
+        settings out of range, a pressure curve of another cycle, a pressure without a bore,
+        or a steadiness asked for without a gas torque to drive the engine
     """
     check_settings(samples, max_order)
     result = analyse(engine, samples, max_order)       # checks assembly and firing once
@@ -400,6 +438,19 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
                                     series(local.imag, "N", tile=False)))
     main = None if engine.is_rotary else PinForce(None, engine.cycle_deg, theta,
                                                   sum(pins) + crank_inertia, None, None)
+    speed, flywheel = None, None
+    if inertia_kgm2 is not None or target is not None:
+        if gas is None:
+            raise AnalysisError("needs a gas torque to drive the engine: give a pressure curve "
+                                "or a [gas] table", "inertia_kgm2" if inertia_kgm2 else "target")
+        drive = dict(torque_nm=gas.curve, period_deg=engine.cycle_deg, speed_rad_s=omega,
+                     load=load, reduced_mass_kgm2=np.tile(mu.real, turns))
+        if target is not None:
+            flywheel = flywheel_for(target, **drive)
+        flywheel_or_none = 1e-12 if flywheel is None else max(flywheel, 1e-12)
+        speed = steadiness(inertia_kgm2=inertia_kgm2 if inertia_kgm2 is not None else
+                           flywheel_or_none, **drive)
     return TorqueResult(engine, samples, ReducedMass(np.degrees(angles), mu.real), series(inertia),
                         series(tilting), series(-total + np.tile(tilting, turns), tile=False), gas,
-                        series(total, tile=False), tuple(pin_results), main, max_order)
+                        series(total, tile=False), tuple(pin_results), main, max_order, speed,
+                        flywheel)

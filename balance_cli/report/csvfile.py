@@ -5,7 +5,7 @@ import io
 
 from .tables import WEIGHT_COLUMNS, order_values
 
-__all__ = ["compare_csv", "balance_csv"]
+__all__ = ["compare_csv", "balance_csv", "torque_csv"]
 
 #: key suffix of an SI record -> unit written in the CSV
 _UNITS = (("_kgm", "kg·m"), ("_kg", "kg"), ("_deg", "deg"), ("_m", "m"))
@@ -74,4 +74,28 @@ def balance_csv(balances, scale):
             rows.append((f"test mass throw {i}", "mass", mass, "kg"))
         for item, quantity, value, unit in rows:
             writer.writerow([record["name"], record["config"], item, quantity, _value(value), unit])
+    return buffer.getvalue()
+
+
+def torque_csv(results, scale):
+    """Every torque of ``balance torque`` in long form: engine, config, torque, order, cos, sin,
+    amplitude, phase (order 0 is the mean); torques in ``scale``'s moment unit."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    ml = scale.column_moment
+    writer.writerow(["engine", "config", "torque", "order", f"cos_{ml}", f"sin_{ml}",
+                     f"amplitude_{ml}", "phase_deg"])
+    for r in results:
+        for name in ("inertia", "gas", "total", "tilting", "frame"):
+            series = getattr(r, name)
+            if series is None:
+                continue
+            record = series.to_dict()
+            writer.writerow([r.engine.name, r.engine.config_path, name, 0,
+                             _value(scale.moment(series.mean)), "", "", ""])
+            for order in record["orders"]:
+                writer.writerow([r.engine.name, r.engine.config_path, name, order["order"]]
+                                + [_value(scale.moment(order[f"{key}_Nm"]))
+                                   for key in ("cos", "sin", "amplitude")]
+                                + [_value(order["phase_deg"])])
     return buffer.getvalue()

@@ -6,13 +6,15 @@ user (engine names, paths, sources) is made safe for the format here.
 
 import math
 
+import numpy as np
 from tabulate import tabulate
 
-from ..units import kg_to_g, m_to_mm, rad_s_to_rpm, round_degrees
+from ..units import kg_to_g, m_to_mm, pa_to_bar, rad_s_to_rpm, round_degrees
 from .display import markdown_text, plain_text
 
 __all__ = ["render", "compare_parts", "compare_tables", "order_rows", "order_headers",
-           "balance_tables", "balance_summary", "list_table", "show_table", "regression_tables"]
+           "balance_tables", "balance_summary", "list_table", "show_table", "regression_tables",
+           "torque_tables", "steadiness_text"]
 
 _TABLEFMT = {"table": "simple", "markdown": "pipe"}
 
@@ -124,6 +126,32 @@ def _mm(length_m):
     return f"{m_to_mm(length_m):g} mm"
 
 
+def _inertia(value):
+    return f"{value:.6g} kg·m²"
+
+
+def _parts_lines(engine):
+    """The part data and what the two-point rod model keeps of the rods' inertia."""
+    lines = []
+    parts = engine.parts
+    if parts is not None:
+        lines.append(f"  parts:         piston {kg_to_g(parts.piston_kg):g} g; rod {kg_to_g(parts.rod_kg):g} g, "
+                     f"centre of gravity {_mm(parts.rod_cg_m)} from the big end, J {_inertia(parts.rod_inertia_kgm2)}"
+                     + (f"; link rod {kg_to_g(parts.link_kg):g} g, {_mm(parts.link_cg_m)}, "
+                        f"j {_inertia(parts.link_inertia_kgm2)}" if parts.link_kg else "")
+                     + f"; crank {kg_to_g(parts.crank_kg):g} g")
+    corrections = sorted({c.rod_inertia_kgm2 for c in engine.cylinders})
+    if any(corrections) or engine.shaft_inertia_kgm2:
+        lines.append("  rod inertia:   left out by the point masses (C = J − M·H·(L − H)): "
+                     + ", ".join(_inertia(c) for c in corrections)
+                     + f"; crankshaft and flywheel {_inertia(engine.shaft_inertia_kgm2)}")
+    if engine.gas is not None:
+        gas = engine.gas
+        lines.append(f"  gas:           bore {_mm(gas.bore_m)}, compression ratio {gas.compression_ratio:g}"
+                     + ("" if gas.imep_pa is None else f", imep {pa_to_bar(gas.imep_pa):g} bar"))
+    return lines
+
+
 def show_table(engine, firing):
     """One engine, one row per cylinder, with the engine's data above."""
     knuckles = sorted({c.knuckle_kg for c in engine.cylinders if c.is_link})
@@ -139,6 +167,7 @@ def show_table(engine, firing):
         f"cylinder, rotating {kg_to_g(engine.rotating_kg):g} g and crank "
         f"{kg_to_g(engine.crank_kg):g} g per throw"
         + "".join(f", knuckle {kg_to_g(kg):g} g per link rod" for kg in knuckles),
+        *_parts_lines(engine),
         f"  firing:        {'-'.join(map(str, firing.order))} "
         f"({'given' if firing.given else 'most uniform the crank allows'})",
         f"  intervals (°): {', '.join(f'{i:.2f}' for i in firing.intervals_deg)}",
@@ -298,3 +327,77 @@ def regression_tables(regression, fmt):
     out.append("Units: N and N·m (SI), degrees for *_deg; change is now − baseline. Update the "
                "baseline on purpose with --update.")
     return "\n".join(out) + "\n"
+
+
+def _torque_rows(result, scale):
+    rows = []
+    for name, series in (("inertia", result.inertia), ("gas", result.gas), ("total", result.total),
+                         ("tilting", result.tilting), ("frame", result.frame)):
+        if series is None:
+            continue
+        rows.append([name] + [f"{scale.moment(v):.2f}" for v in (series.mean, series.max,
+                                                                  series.min, series.range)])
+    return rows
+
+
+def _order_table(series, scale, fmt, largest):
+    """The orders of a torque above a thousandth of its largest one."""
+    rows = [[f"{k:g}", f"{scale.moment(c):.3f}", f"{scale.moment(s):.3f}",
+             f"{scale.moment(math.hypot(c, s)):.3f}", f"{round_degrees(d['phase_deg'], 1):.1f}"]
+            for (k, c, s), d in zip(series.orders, series.to_dict()["orders"])
+            if math.hypot(c, s) >= 1e-3 * largest and largest > 0]
+    ml = scale.moment_label
+    return render(["Order", f"cos ({ml})", f"sin ({ml})", f"Amplitude ({ml})", "Phase (°)"], rows, fmt)
+
+
+def torque_tables(results, scale, fmt):
+    """``balance torque`` as text or Markdown, engine by engine."""
+    heading = "#### " if fmt == "markdown" else ""
+    safe = _safe(fmt)
+    ml, fl = scale.moment_label, scale.force_label
+    out = []
+    for r in results:
+        engine = r.engine
+        mu = r.reduced_mass
+        out += [f"{heading}{safe(engine.name)}: torques at {rad_s_to_rpm(engine.speed_rad_s):g} rpm "
+                f"({engine.cycle}-stroke, period {r.period_deg:g}°)", "",
+                f"Reduced mass μ (kinetic energy ½·μ·ω²): mean {mu.mean_kgm2:.5g}, min "
+                f"{mu.min_kgm2:.5g}, max {mu.max_kgm2:.5g} kg·m².", "",
+                render(["Torque", f"Mean ({ml})", f"Max ({ml})", f"Min ({ml})", f"Range ΔC ({ml})"],
+                       _torque_rows(r, scale), fmt), ""]
+        largest = max(math.hypot(c, s) for _, c, s in r.total.orders) if r.total.orders else 0.0
+        out += [f"Orders of the total torque ({'gas and inertia' if r.gas else 'inertia only'}; "
+                "amplitude·cos(kθ − phase); orders below a thousandth of the largest left out):", "",
+                _order_table(r.total, scale, fmt, largest), ""]
+        rows = []
+        for pin in r.pins:
+            magnitude = np.abs(pin.force_n)
+            rows.append([str(pin.throw), f"{scale.force(pin.radial.mean, 1.0):.1f}",
+                         f"{scale.force(pin.tangential.mean, 1.0):.1f}",
+                         f"{scale.force(float(magnitude.max()), 1.0):.1f}",
+                         f"{scale.force(float(magnitude.min()), 1.0):.1f}"])
+        if r.main_bearings is not None:
+            magnitude = np.abs(r.main_bearings.force_n)
+            rows.append(["main bearings", "-", "-", f"{scale.force(float(magnitude.max()), 1.0):.1f}",
+                         f"{scale.force(float(magnitude.min()), 1.0):.1f}"])
+        out += ["Forces of the rods on the crank pins, and of the crankshaft on its main bearings "
+                "together:", "",
+                render(["Throw", f"Radial mean ({fl})", f"Tangential mean ({fl})", f"Largest ({fl})",
+                        f"Smallest ({fl})"], rows, fmt), ""]
+        if r.steadiness is not None:
+            out += [steadiness_text(r.steadiness, r.flywheel_kgm2), ""]
+    return "\n".join(out)
+
+
+def steadiness_text(speed, flywheel_kgm2=None):
+    """The speed and steadiness of an engine set, in one paragraph."""
+    margoulis = speed.to_dict()
+    text = (f"With a flywheel of {speed.inertia_kgm2:.5g} kg·m² and a {speed.load} load: speed "
+            f"{margoulis['min_speed_rpm']:.2f} to {margoulis['max_speed_rpm']:.2f} rpm (mean "
+            f"{margoulis['mean_speed_rpm']:.2f}), steadiness ω_m/(ω_max − ω_min) = "
+            f"{margoulis['steadiness']:.4g} integrated; Margoulis's closed forms (one harmonic of "
+            f"order {speed.order:g}, ΔC = {margoulis['torque_range_Nm']:.4g} N·m): r_c = "
+            f"{margoulis['r_c']:.4g}, r_v = {margoulis['r_v']:.4g}, r_h = {margoulis['r_h']:.4g}.")
+    if flywheel_kgm2 is not None:
+        text += f" The target steadiness needs a flywheel of {flywheel_kgm2:.5g} kg·m²."
+    return text

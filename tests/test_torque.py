@@ -1,0 +1,204 @@
+"""Torques, reduced mass, tilting, frame reaction and pin forces (issue 10), against hand-derived
+closed forms, independent second methods and the papers."""
+
+import dataclasses
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+
+import balance_cli as balance
+from balance_cli.model import GasCycle
+from balance_cli.torque import torque
+from conftest import CONFIGS, make_engine
+
+sys.path.insert(0, str(Path(__file__).parent / "reference"))
+
+import fraeys_newton_euler  # noqa: E402
+
+
+def single(r=0.05, l=0.2, m=1.0, rpm=3000.0, **extra):
+    return make_engine([0], [(0, 0.0)], r=r, l=l, m=m, rpm=rpm, cycle=2, **extra)
+
+
+def test_single_cylinder_inertia_torque_by_a_second_method():
+    """Virtual work of the inertia force on the exact slider: T(θ) = −m·ẍ·∂x/∂θ = −m·ω²·x''·x'
+    with the hand-derived closed forms (q = r/l, s = sin θ, c = cos θ, D = √(1 − q²s²))
+    x' = −r·s·(1 + q·c/D) and x'' = −r·(c + q·cos 2θ/D + q³·sin²2θ/(4D³)) — no FFT, no library
+    kinematics: agreement to 1e-10 of m·r²·ω² (the spectral derivative's rounding, about 1e-13
+    of the positions, grows with the square of the highest orders), and μ = m·x'² to 1e-12
+    of m·r²."""
+    r, l, m, rpm = 0.05, 0.2, 1.3, 2500.0
+    engine = single(r, l, m, rpm)
+    result = torque(engine, samples=256, max_order=20)
+    omega = rpm * math.pi / 30
+    q = r / l
+    theta = np.radians(result.inertia.theta_deg)
+    s, c = np.sin(theta), np.cos(theta)
+    d = np.sqrt(1 - q**2 * s**2)
+    x1 = -r * s * (1 + q * c / d)
+    x2 = -r * (c + q * np.cos(2 * theta) / d + q**3 * np.sin(2 * theta) ** 2 / (4 * d**3))
+    unit = m * r**2 * omega**2
+    assert np.abs(result.inertia.curve - (-m * omega**2 * x2 * x1)).max() < 1e-10 * unit
+    assert np.abs(result.reduced_mass.curve_kgm2 - m * x1**2).max() < 1e-12 * m * r**2
+
+
+@pytest.mark.parametrize("lam", [0.1, 0.25])
+def test_single_cylinder_inertia_torque_against_the_classic_series(lam):
+    """m·r²·ω²·(λ/4·sin θ − ½·sin 2θ − 3λ/4·sin 3θ − λ²/4·sin 4θ): each coefficient is the
+    first term of its series in λ; the next terms are of relative order λ² (sin θ, sin 3θ), λ
+    (sin 2θ: −½ − λ²/32…) and λ² (sin 4θ), bounded here by 2·λ² of the coefficient."""
+    r = 0.05
+    result = torque(single(r=r, l=r / lam), max_order=4)
+    unit = r**2 * (3000 * math.pi / 30) ** 2
+    for k, expected in ((1, lam / 4), (2, -0.5), (3, -3 * lam / 4), (4, -lam**2 / 4)):
+        cos, sin = result.inertia.order(k)
+        assert abs(cos) < 1e-12 * unit
+        assert abs(sin / unit - expected) <= 2 * lam**2 * abs(expected)
+    assert result.inertia.mean == 0.0
+
+
+def test_a_centred_piston_has_no_tilting_and_the_frame_takes_the_reverse_torque():
+    result = torque(single(), max_order=8)
+    assert result.tilting.range == 0.0
+    assert_allclose(result.frame.curve, -result.total.curve, atol=1e-9 * np.abs(result.total.curve).max())
+
+
+@pytest.mark.parametrize("config", sorted(p.relative_to(CONFIGS) for p in CONFIGS.rglob("*.toml")))
+def test_the_tangential_pin_forces_give_the_torque(config):
+    """Two methods: the torque from the kinetic energy (−½ω²·dμ/dθ, plus gas) and r times the
+    tangential force of the rods on the pins (virtual shifts of each pin); the crankshaft's
+    own masses turn at constant radius and add nothing. Fixed-frame engines only: on a rotary
+    the pin stands still and the torque acts on the crankcase."""
+    engine = balance.load(CONFIGS / config)
+    if engine.is_rotary:
+        pytest.skip("a rotary's crank pin stands still")
+    result = torque(engine, max_order=8)
+    from_pins = sum(engine.crank_radius_m * p.tangential.curve for p in result.pins)
+    # the virtual shifts' finite differences are good to about 1e-11 of the forces
+    unit = engine.per_cylinder_unit_n * engine.crank_radius_m
+    assert np.abs(from_pins - result.total.curve).max() < 1e-9 * unit
+
+
+@pytest.mark.parametrize("n", [5, 7, 9])
+def test_a_radial_with_plain_rods_has_only_orders_of_n(n):
+    """Σ over n cylinders at 360°/n of one cylinder's μ(θ − ψ_i) keeps only orders that are
+    multiples of n (Margoulis § 2; Tanaka Part I § 6, "balanced out if single obliquity")."""
+    engine = make_engine([360 * i / n for i in range(n)], [(0, 0.0)], r=0.05, l=0.2)
+    result = torque(engine, max_order=2 * n)
+    unit = engine.per_cylinder_unit_n * engine.crank_radius_m
+    for k, cos, sin in result.inertia.orders:
+        if k % n:
+            assert math.hypot(cos, sin) < 1e-9 * unit, k
+    mu = result.reduced_mass.curve_kgm2
+    c = np.abs(np.fft.rfft(mu)) / len(mu)
+    assert all(c[k] < 1e-13 * mu.mean() for k in range(1, n))
+    assert c[n] > 1e-10 * mu.mean()   # of order λ^(n−1): small, but there
+
+
+@pytest.mark.parametrize("cylinders", [4, 5, 6, 7, 8, 9])
+def test_margoulis_reduced_mass_of_evenly_firing_four_strokes(cylinders):
+    """Margoulis § 2: throws 720°/N apart (even firing of a four-stroke). One cylinder's
+    μ has every order; the N together keep order k only when 2k/N is whole. So μ is constant
+    up to his fourth series for odd N > 3 and even N > 6, and varies for N = 4 and 6."""
+    phases = [(720 * j / cylinders) % 360 for j in range(cylinders)]
+    engine = make_engine([0], [(p, 0.1 * j) for j, p in enumerate(phases)], r=0.05, l=0.25)
+    mu = torque(engine, max_order=8).reduced_mass.curve_kgm2
+    c = np.abs(np.fft.rfft(mu)) / len(mu)
+    for k in range(1, 9):
+        if (2 * k) % cylinders:
+            assert c[k] < 1e-13 * mu.mean(), k
+        elif k <= 4:   # Margoulis's four series; beyond them the terms are of order λ^k
+            assert c[k] > 1e-6 * mu.mean(), k
+    varies_below_fourth = any(c[k] > 1e-6 * mu.mean() for k in (1, 2, 3))
+    assert varies_below_fourth == (cylinders in (4, 6))
+
+
+def engine_with_gas(throws, imep_bar=12.0, cycle=4):
+    engine = make_engine([0], throws, r=0.045, l=0.15, m=0.5, rpm=3000.0, cycle=cycle)
+    return dataclasses.replace(engine, gas=GasCycle(bore_m=0.086, compression_ratio=10.0,
+                                                    imep_pa=imep_bar * 1e5))
+
+
+def test_gas_torque_of_an_even_inline_six_has_only_orders_of_three():
+    """Identical cylinders firing every 120°: Σ T(θ − 120°·j) keeps orders 3, 6, 9, …
+    (N/2·k). The pressure's sharp features alias into the sampled curve; with 2048 samples the
+    other orders are below 1e-6 of the third."""
+    six = engine_with_gas([(0, 0.0), (120, 0.1), (240, 0.2), (240, 0.3), (120, 0.4), (0, 0.5)])
+    gas = torque(six, samples=2048, max_order=10).gas
+    third = math.hypot(*gas.order(3))
+    for k, cos, sin in gas.orders:
+        if k % 3:
+            assert math.hypot(cos, sin) < 1e-6 * third, k
+    assert math.hypot(*gas.order(6)) > 0.1 * third
+
+
+def test_gas_torque_of_one_four_stroke_cylinder_has_every_half_order():
+    gas = torque(engine_with_gas([(0, 0.0)]), max_order=4).gas
+    assert [k for k, _, _ in gas.orders] == [0.5 * j for j in range(1, 9)]
+    assert all(math.hypot(c, s) > 1e-3 * abs(gas.mean) for _, c, s in gas.orders)
+
+
+@pytest.mark.parametrize("cycle", [2, 4])
+def test_mean_gas_torque_is_the_indicated_work(cycle):
+    """C_m = imep·V_d·N / (2π·cycle/2): the cycle's ∮p·dV (trapezoid on the model's 0.05° grid)
+    against −∮p·A·ds/dθ on the analysis grid, two integrations: 1e-5."""
+    engine = engine_with_gas([(0, 0.0), (180, 0.1)], imep_bar=10.0, cycle=cycle)
+    gas = torque(engine, samples=1024).gas
+    swept = math.pi / 4 * 0.086**2 * 2 * 0.045
+    assert_allclose(gas.mean, 10e5 * swept * 2 / (math.pi * cycle), rtol=1e-5)
+
+
+def test_a_pressure_curve_from_a_file_gives_the_parametric_torque(tmp_path):
+    """The [gas] cycle written to a CSV every 0.25° and read back: the same torque to the
+    linear interpolation of that grid (1e-3 of the largest order)."""
+    from balance_cli.gas import read_pressure_csv
+
+    engine = engine_with_gas([(0, 0.0), (180, 0.1), (180, 0.2), (0, 0.3)])
+    reference = torque(engine, max_order=6)
+    n = engine.cylinders[0].number
+    fire = 0.0
+
+    def travel(psi):
+        return balance.kinematics.travel_at(engine, np.radians(fire + psi), [n])[n]
+
+    curve = balance.gas.cycle_pressure(engine.gas, travel, 720.0)
+    angles = np.arange(0, 720, 0.25)
+    rows = ["angle_deg,pressure_bar"] + [f"{float(a)!r},{float(p) / 1e5!r}"
+                                         for a, p in zip(angles, curve.at(angles))]
+    path = tmp_path / "p.csv"
+    path.write_text("\n".join(rows) + "\n")
+    pressure = read_pressure_csv(path, 720.0)
+    plain = dataclasses.replace(engine, gas=dataclasses.replace(engine.gas))
+    from_file = torque(plain, max_order=6, pressure=pressure)
+    largest = max(math.hypot(c, s) for _, c, s in reference.gas.orders)
+    for (k, c1, s1), (_, c2, s2) in zip(reference.gas.orders, from_file.gas.orders):
+        assert math.hypot(c1 - c2, s1 - s2) < 1e-3 * largest, k
+
+
+def test_bramo_against_newton_euler():
+    """The library's exact μ, H, radial and rotating pin forces for the BRAMO 323 (from its
+    [parts]) against an independent Newton–Euler solution with rigid rods (tests/reference/
+    fraeys_newton_euler.py): 1e-9 of the largest coefficient (the two use the same data)."""
+    engine = balance.load(CONFIGS / "bramo-323.toml")
+    result = torque(engine, max_order=6)
+    ref = fraeys_newton_euler.coefficients(512)
+    r, w = engine.crank_radius_m, engine.speed_rad_s
+    mu = result.reduced_mass.curve_kgm2
+    c = np.fft.rfft(mu) / len(mu)
+    ours_u = [c[0].real / (2 * r**2)] + [k * 2 * c[k].real / (2 * r**2) for k in range(1, 6)]
+    assert_allclose(ours_u, ref["U"], atol=1e-9 * abs(ref["U"][0]))
+    for k in range(1, 6):
+        assert_allclose(result.inertia.order(k)[1] / (r**2 * w**2), ref["U"][k], atol=1e-9 * 16)
+        assert_allclose(result.tilting.order(k)[1] / (r**2 * w**2), ref["V"][k], atol=1e-9 * 16)
+    pin = result.pins[0]
+    assert_allclose(pin.radial.mean / (r * w**2), ref["R"][0], atol=1e-9 * 32)
+    for k in range(1, 6):
+        assert_allclose(pin.radial.order(k)[0] / (r * w**2), ref["R"][k], atol=1e-9 * 32)
+    for k, expected in ref["T"].items():
+        forward, backward = pin.order(abs(k))
+        ours = forward if k >= 0 else backward
+        assert abs(ours / (r * w**2) - expected) < 1e-9 * 32, k
