@@ -60,6 +60,10 @@ class Firing:
                 "max_deviation_deg": self.max_deviation_deg, "given": self.given}
 
 
+#: cylinders whose TDCs are refined together
+_TDC_BLOCK = 16
+
+
 def tdc_angles(engine: "Engine") -> dict[int, float]:
     """Engine angle (degrees in [0, 360)) at which each piston is farthest out, by cylinder number.
 
@@ -72,11 +76,15 @@ def tdc_angles(engine: "Engine") -> dict[int, float]:
     best = np.array([grid[np.argmax(travel[n])] for n in numbers])
     step = grid[1]
     for _ in range(3):
-        # a fine grid round each cylinder's best angle, that cylinder alone: memory stays
-        # linear in the number of cylinders
-        for i, n in enumerate(numbers):
-            local = best[i] + np.linspace(-step, step, 101)
-            best[i] = local[np.argmax(piston_travel(engine, local, [n])[n])]
+        # a fine grid round each cylinder's best angle, a block of cylinders at a time (each
+        # block's grids are closed together and the diagonal kept): memory stays linear in
+        # the number of cylinders, and the Python loop short
+        for start in range(0, len(numbers), _TDC_BLOCK):
+            block = numbers[start:start + _TDC_BLOCK]
+            local = best[start:start + len(block), None] + np.linspace(-step, step, 101)
+            travel = piston_travel(engine, local, block)
+            for i, n in enumerate(block):
+                best[start + i] = local[i, np.argmax(travel[n][i])]
         step /= 50
     crank = np.degrees(best)
     angles = -crank if engine.is_rotary else crank

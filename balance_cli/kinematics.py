@@ -18,7 +18,8 @@ import numpy as np
 from .errors import ModelError
 from .units import round_degrees
 
-__all__ = ["MassSet", "RodSet", "Linkage", "linkage", "mass_positions", "rod_directions",
+__all__ = ["MassSet", "RodSet", "Linkage", "LinkageState", "linkage", "linkage_state",
+           "mass_positions", "rod_directions",
            "crank_angles_of", "travel_at", "piston_travel", "check_assembly", "engine_angles"]
 
 #: crank angles at which a linkage is checked for assembly (0.1° apart)
@@ -131,7 +132,7 @@ def linkage(engine, crank_angles, numbers=None, pin_shift=None):
     masters = {c.master for c in wanted if c.is_link}
     # only the pins the wanted cylinders ride on (None for the others): the TDC search asks
     # for one cylinder at a time
-    throws = {c.throw for c in wanted}
+    throws = {c.throw for c in wanted} | set(pin_shift or {})
     pins = [r * np.exp(1j * (crank_angles + t.phase_rad)) if i in throws or numbers is None
             else None for i, t in enumerate(engine.throws)]
     for index, shift in (pin_shift or {}).items():
@@ -173,8 +174,22 @@ def crank_angles_of(engine, angles):
 @lru_cache(maxsize=256)
 def check_assembly(engine):
     """Raise :class:`ModelError` naming the first cylinder whose rod cannot reach its axis
-    somewhere on a 0.1° grid of a revolution. Every analysis calls it first (it is cached)."""
-    linkage(engine, engine_angles(_CHECK_SAMPLES))
+    somewhere in a revolution. Every analysis calls it first (it is cached).
+
+    A plain rod's crank pin sweeps the whole width ±r across its axis, so it reaches exactly
+    when the rod is longer than r + |pin offset|: checked in closed form, at the worst angle.
+    A link rod's knuckle pin follows no such simple path: checked on a 0.1° grid.
+    """
+    r, offset = engine.crank_radius_m, engine.pin_offset_m
+    for cyl in engine.cylinders:
+        if not cyl.is_link and engine.rod_length_m <= r + abs(offset):
+            # the pin farthest from the offset axis: r·sin(θ + phase − axis) = −r·sign(offset)
+            worst = (-0.5 if offset >= 0 else 0.5) * np.pi
+            _cannot_reach(cyl, worst - engine.throws[cyl.throw].phase_rad
+                          + engine.bank_angles_rad[cyl.bank])
+    links = [c.number for c in engine.cylinders if c.is_link]
+    if links:
+        linkage(engine, engine_angles(_CHECK_SAMPLES), links)
 
 
 def piston_travel(engine, crank_angles, numbers=None, pin_shift=None):
@@ -204,42 +219,67 @@ def _case_shift(engine, angles, pin_shift):
     return {i: shift * np.exp(-1j * angles) for i, shift in pin_shift.items()}
 
 
-def mass_positions(engine, angles, pin_shift=None):
-    """Every point mass of ``engine`` at engine angles ``angles`` (1-D, rad), in the fixed frame
-    (with crank pins moved by ``pin_shift``, fixed-frame offsets by throw index, if given)."""
+class LinkageState(NamedTuple):
+    """What one closing of the linkage gives: the point masses, the rods and the pistons'
+    travel (by cylinder number, m), at the same engine angles."""
+
+    masses: MassSet
+    rods: RodSet
+    travel: dict
+
+
+def linkage_state(engine, angles, pin_shift=None, throw=None) -> LinkageState:
+    """Masses, rods and travel at engine angles ``angles`` (any shape, rad; arrays gain that
+    shape as trailing axes), in the fixed frame, with crank pins moved by ``pin_shift``
+    (fixed-frame offsets by throw index, each broadcasting against ``angles``), from one
+    closing of the linkage: the crank-pin forces shift every pin several times, and closing
+    it once per shift for all three is what keeps ``balance torque`` fast.
+
+    With ``throw`` (an index), only what rides on that throw: its cylinders' masses and rods
+    and the masses at its pin, in the order they have in the whole engine's state.
+    """
     check_assembly(engine)
-    piston, _, knuckle, pins = linkage(engine, crank_angles_of(engine, angles),
-                                       pin_shift=_case_shift(engine, angles, pin_shift))
+    angles = np.asarray(angles, dtype=float)
+    chosen = engine.cylinders if throw is None else [c for c in engine.cylinders if c.throw == throw]
+    piston, travel, knuckle, pins = linkage(
+        engine, crank_angles_of(engine, angles), None if throw is None else [c.number for c in chosen],
+        _case_shift(engine, angles, pin_shift))
     rows = []  # (position, mass, z, owner, throw)
-    for cyl in engine.cylinders:
+    for cyl in chosen:
         rows.append((piston[cyl.number], cyl.reciprocating_kg, cyl.z_m, cyl.number, cyl.throw))
         if cyl.is_link and cyl.knuckle_kg:
             rows.append((knuckle[cyl.number], cyl.knuckle_kg, cyl.z_m, cyl.number, cyl.throw))
-    for index, (throw, pin) in enumerate(zip(engine.throws, pins)):
+    for index, (crank, pin) in enumerate(zip(engine.throws, pins)):
+        if throw is not None and index != throw:
+            continue
         for owner, mass in ((0, engine.rotating_kg), (-1, engine.crank_kg)):
             if mass:
-                rows.append((pin, mass, throw.z_m, owner, index))
-    positions = np.array([row[0] for row in rows])
+                rows.append((pin, mass, crank.z_m, owner, index))
+    rods = []
+    for cyl in chosen:
+        big_end = knuckle[cyl.number] if cyl.is_link else pins[cyl.throw]
+        rod = piston[cyl.number] - big_end
+        rods.append(rod / np.abs(rod))
+    positions = np.array([np.broadcast_to(row[0], angles.shape) for row in rows])
+    directions = np.array(rods)
     if engine.is_rotary:
         # the linkage was closed in the crankcase's frame, which itself turns forward by the
         # engine angle: turn every position into the fixed frame the forces are wanted in
-        positions = positions * np.exp(1j * angles)
-    return MassSet(positions, *(np.array([row[i] for row in rows]) for i in range(1, 5)))
+        turn = np.exp(1j * angles)
+        positions, directions = positions * turn, directions * turn
+    masses = MassSet(positions, *(np.array([row[i] for row in rows]) for i in range(1, 5)))
+    rod_set = RodSet(directions, np.array([c.rod_inertia_kgm2 for c in chosen]),
+                     np.array([c.number for c in chosen]))
+    return LinkageState(masses, rod_set, travel)
+
+
+def mass_positions(engine, angles, pin_shift=None):
+    """Every point mass of ``engine`` at engine angles ``angles`` (1-D, rad), in the fixed frame
+    (with crank pins moved by ``pin_shift``, fixed-frame offsets by throw index, if given)."""
+    return linkage_state(engine, angles, pin_shift).masses
 
 
 def rod_directions(engine, angles, pin_shift=None):
     """Every rod's unit direction at engine angles ``angles`` (1-D, rad), in the fixed frame
     (``pin_shift`` as for :func:`mass_positions`)."""
-    check_assembly(engine)
-    piston, _, knuckle, pins = linkage(engine, crank_angles_of(engine, angles),
-                                       pin_shift=_case_shift(engine, angles, pin_shift))
-    rows = []
-    for cyl in engine.cylinders:
-        big_end = knuckle[cyl.number] if cyl.is_link else pins[cyl.throw]
-        rod = piston[cyl.number] - big_end
-        rows.append(rod / np.abs(rod))
-    directions = np.array(rows)
-    if engine.is_rotary:
-        directions = directions * np.exp(1j * angles)
-    return RodSet(directions, np.array([c.rod_inertia_kgm2 for c in engine.cylinders]),
-                  np.array([c.number for c in engine.cylinders]))
+    return linkage_state(engine, angles, pin_shift).rods

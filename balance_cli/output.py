@@ -25,9 +25,33 @@ def _reason(exc):
     return exc.strerror or str(exc)
 
 
+_NESTED = {dict, list, tuple}
+_ONE_LINE = json.JSONEncoder(ensure_ascii=False).encode
+
+
 def to_json(document):
-    """A JSON document as balance writes it: indented, UTF-8 text, a final newline."""
-    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+    """A JSON document as balance writes it: indented, UTF-8 text, a final newline; an object
+    or list that holds only numbers and strings stays on one line (one line per order reads
+    better, and the C encoder writes those lines: the pure-Python indenting encoder took
+    longer than the analysis on a library's crank-pin forces)."""
+    return _encode(document, "") + "\n"
+
+
+def _encode(value, margin):
+    kind = type(value)
+    if kind is dict:
+        if _NESTED.isdisjoint(map(type, value.values())):
+            return _ONE_LINE(value)
+        inner = margin + "  "
+        body = ",\n".join(f"{inner}{_ONE_LINE(str(k))}: {_encode(v, inner)}"
+                          for k, v in value.items())
+        return "{\n" + body + "\n" + margin + "}" if body else "{}"
+    if kind is list or kind is tuple:
+        if _NESTED.isdisjoint(map(type, value)):
+            return _ONE_LINE(value)
+        inner = margin + "  "
+        return "[\n" + ",\n".join(inner + _encode(v, inner) for v in value) + "\n" + margin + "]"
+    return _ONE_LINE(value)
 
 
 def ensure_folder(folder):

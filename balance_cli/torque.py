@@ -21,15 +21,17 @@ are multiples of ½.
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
-from .analysis import DOCUMENT_VERSION, analyse
+from .analysis import DOCUMENT_VERSION
 from .errors import AnalysisError
 from .gas import cycle_pressure
 from .harmonics import orders_of
-from .kinematics import (crank_angles_of, engine_angles, mass_positions, piston_travel,
-                         rod_directions, travel_at)
+from .firing import firing_sequence
+from .kinematics import (check_assembly, crank_angles_of, engine_angles, linkage_state,
+                         piston_travel, travel_at)
 from .model import Engine
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings, part_values
 from .steadiness import Steadiness, flywheel_for, steadiness
@@ -158,11 +160,15 @@ class PinForce:
     radial: Series | None
     tangential: Series | None
 
+    @cached_property
+    def _spectrum(self):
+        return np.fft.fft(self.force_n) / self.force_n.shape[-1]
+
     def order(self, k):
         """Forward and backward phasors of order ``k``, N: F = F⁺·e^{ikθ} + F⁻·e^{−ikθ}."""
         n = self.force_n.shape[-1]
         j = int(round(k * self.period_deg / 360.0))
-        c = np.fft.fft(self.force_n) / n
+        c = self._spectrum
         return complex(c[j % n]), complex(c[-j % n])
 
     def to_dict(self, max_order, floor_n) -> dict:
@@ -263,14 +269,13 @@ def _torque_unit(engine):
     return engine.per_cylinder_unit_n * engine.crank_radius_m
 
 
-def _reduced_mass_and_momentum(engine, angles):
-    """μ(θ) and h(θ) = H/θ̇ at engine angles ``angles`` (one revolution), kg·m²."""
-    masses = mass_positions(engine, angles)
+def _reduced_mass_and_momentum(engine, state):
+    """μ(θ) and h(θ) = H/θ̇ from the linkage ``state`` over one revolution, kg·m²."""
+    masses, rods = state.masses, state.rods
     rates = periodic_derivative(masses.positions)
     weights = masses.masses_kg[:, None]
     mu = (weights * np.abs(rates) ** 2).sum(axis=0)
     h = (weights * (np.conj(masses.positions) * rates).imag).sum(axis=0)
-    rods = rod_directions(engine, angles)
     if np.any(rods.corrections_kgm2):
         # a rod's angular rate from its unit vector u: dβ/dθ = Im(ū·du/dθ)
         turning = (np.conj(rods.directions) * periodic_derivative(rods.directions)).imag
@@ -311,47 +316,58 @@ def _net_pressures(engine, cycle_angles, fire, pressure):
     return out
 
 
-def _richardson(evaluate, step):
-    """d/dh of ``evaluate(h)`` at 0 by central differences, extrapolated (error O(step⁴))."""
-    coarse = (evaluate(step) - evaluate(-step)) / (2 * step)
-    fine = (evaluate(step / 2) - evaluate(-step / 2)) / step
+#: virtual shifts of a crank pin, in crank radii: ±h and ±h/2 for a Richardson-extrapolated
+#: central difference (error O(h⁴), far below the noise floor at h = 1e-4)
+_SHIFT = 1e-4
+_STEPS = np.array([1.0, -1.0, 0.5, -0.5])
+
+
+def _derivative(values):
+    """d/dh at 0 from ``values`` at h = _STEPS·step (leading axis), per unit step: central
+    differences extrapolated, (4·fine − coarse)/3."""
+    coarse = (values[0] - values[1]) / 2
+    fine = (values[2] - values[3])
     return (4 * fine - coarse) / 3
 
 
-def _pin_forces(engine, angles, turns, net_pressure, area):
+def _pin_forces(engine, state, angles, turns, net_pressure, area):
     """The force of the pin on the rods riding on it, by virtual work: for a virtual shift δP
     of the pin (the cylinders held), F·δP = Σ m·a·δx + Σ C·β̈·δβ + Σ (p − p_c)·A·δs; the force
     of the rods on the pin is −F. One complex curve over the cycle per throw, N."""
     omega = engine.speed_rad_s
     n = len(angles)
-    masses = mass_positions(engine, angles)
+    masses, rods = state.masses, state.rods
     k = orders_of(n)
     accelerations = np.fft.ifft(np.fft.fft(masses.positions, axis=-1) * -(k * omega) ** 2, axis=-1)
     weights = np.where(masses.cylinder != -1, masses.masses_kg, 0.0)[:, None]  # not the crank's
-    rods = rod_directions(engine, angles)
     rates = (np.conj(rods.directions) * periodic_derivative(rods.directions)).imag
     angular_accelerations = omega**2 * periodic_derivative(rates).real
-    step = 1e-4 * engine.crank_radius_m
+    step = _SHIFT * engine.crank_radius_m
+    # every shift of one pin at once: (direction along/across) × (the four steps)
+    shifts = (np.array([1.0, 1j])[:, None] * _STEPS[None, :] * step).reshape(-1, 1)
+    grid = np.broadcast_to(angles, (len(shifts), n))
     forces = []
     for index in range(len(engine.throws)):
-        parts = []
-        for direction in (1.0, 1j):
-            dx = _richardson(lambda h: mass_positions(engine, angles, {index: h * direction}).positions,
-                             step)
-            du = _richardson(lambda h: rod_directions(engine, angles,
-                                                      {index: h * direction}).directions, step)
-            inertial = (weights * (np.conj(accelerations) * dx).real).sum(axis=0)
-            inertial += (rods.corrections_kgm2[:, None] * angular_accelerations
-                         * (np.conj(rods.directions) * du).imag).sum(axis=0)
-            component = np.tile(inertial, turns)
-            if net_pressure:
-                ds = _richardson(lambda h: np.array(list(travel_at(engine, angles,
-                                                                   pin_shift={index: h * direction}).values())),
-                                 step)
-                numbers = list(travel_at(engine, angles[:1]))
-                component = component + sum(net_pressure[m] * area * np.tile(ds[i], turns)
-                                            for i, m in enumerate(numbers))
-            parts.append(component)
+        shifted = linkage_state(engine, grid, {index: shifts}, throw=index)
+        # only what rides on this pin moves with it: the same rows of the whole engine's state
+        on_pin = np.isin(masses.cylinder, shifted.masses.cylinder) & (
+            (masses.cylinder > 0) | (masses.throw == index))
+        rods_on_pin = np.isin(rods.cylinder, shifted.rods.cylinder)
+        size = (2, len(_STEPS))
+        dx = _derivative(np.moveaxis(shifted.masses.positions.reshape(-1, *size, n), 2, 0)) / step
+        du = _derivative(np.moveaxis(shifted.rods.directions.reshape(-1, *size, n), 2, 0)) / step
+        inertial = (weights[on_pin, None] * (np.conj(accelerations[on_pin])[:, None] * dx).real
+                    ).sum(axis=0)
+        inertial += (rods.corrections_kgm2[rods_on_pin, None, None]
+                     * angular_accelerations[rods_on_pin, None]
+                     * (np.conj(rods.directions[rods_on_pin])[:, None] * du).imag).sum(axis=0)
+        parts = np.tile(inertial, turns)                       # (along, across) × cycle
+        numbers = list(shifted.rods.cylinder)
+        if net_pressure and numbers:
+            ds = _derivative(np.moveaxis(np.array([shifted.travel[m] for m in numbers])
+                                         .reshape(-1, *size, n), 2, 0)) / step
+            parts = parts + sum(net_pressure[m] * area * np.tile(ds[i], turns)
+                                for i, m in enumerate(numbers))
         forces.append(-(parts[0] + 1j * parts[1]))
     own = np.where(masses.cylinder == -1, masses.masses_kg, 0.0)[:, None]
     crank_inertia = np.tile(-(own * accelerations).sum(axis=0), turns)
@@ -390,7 +406,7 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
         or a steadiness asked for without a gas torque to drive the engine
     """
     check_settings(samples, max_order)
-    result = analyse(engine, samples, max_order)       # checks assembly and firing once
+    check_assembly(engine)
     if pressure is not None:
         if pressure.cycle_deg != engine.cycle_deg:
             raise AnalysisError(f"covers {pressure.cycle_deg:g}°, but {engine.name!r} is a "
@@ -403,7 +419,8 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
         bore_m = engine.gas.bore_m
     omega = engine.speed_rad_s
     angles = engine_angles(samples)
-    mu, h = _reduced_mass_and_momentum(engine, angles)
+    state = linkage_state(engine, angles)
+    mu, h = _reduced_mass_and_momentum(engine, state)
     turns = int(round(engine.cycle_deg / 360.0))
     floor = NOISE_FLOOR * _torque_unit(engine)
 
@@ -419,14 +436,14 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
     if bore_m is not None:
         area = math.pi * bore_m**2 / 4
         cycle_angles = engine_angles(samples * turns) * turns
-        net_pressure = _net_pressures(engine, cycle_angles, _firing_angles_deg(engine, result.firing),
+        net_pressure = _net_pressures(engine, cycle_angles, _firing_angles_deg(engine, firing_sequence(engine)),
                                       pressure)
         rates = _travel_rates(engine, angles)
         gas_curve = sum(-net_pressure[c.number] * area * np.tile(rates[c.number], turns)
                         for c in engine.cylinders)
         gas = series(gas_curve, tile=False)
         total = total + gas_curve
-    pins, crank_inertia = _pin_forces(engine, angles, turns, net_pressure, area)
+    pins, crank_inertia = _pin_forces(engine, state, angles, turns, net_pressure, area)
     theta = np.arange(samples * turns) * 360.0 / samples
     pin_results = []
     for index, (throw, force) in enumerate(zip(engine.throws, pins)):

@@ -5,10 +5,12 @@ ratio of the medians is what counts, so the machine's speed cancels out.
 
 - ``balance compare configs --format json`` against importing numpy, click and tabulate
   (target: at most 2.5)
+- ``balance torque configs --format json`` against the same (target: at most 2.5)
 - ``balance report configs --html`` against importing those and matplotlib.pyplot, which
   every drawing command needs (target: at most 4)
 """
 
+import compileall
 import statistics
 import subprocess
 import sys
@@ -25,6 +27,9 @@ def benchmarks(folder):
         ("balance compare configs --format json", [BALANCE, "compare", "configs", "--format", "json"],
          'python -c "import numpy, click, tabulate"',
          [sys.executable, "-c", "import numpy, click, tabulate"], 2.5, 15),
+        ("balance torque configs --format json", [BALANCE, "torque", "configs", "--format", "json"],
+         'python -c "import numpy, click, tabulate"',
+         [sys.executable, "-c", "import numpy, click, tabulate"], 2.5, 15),
         ("balance report configs --html", [BALANCE, "report", "configs", "--html", "-o", folder],
          'python -c "import numpy, click, tabulate, matplotlib.pyplot"',
          [sys.executable, "-c", "import numpy, click, tabulate, matplotlib.pyplot"], 4.0, 5),
@@ -38,6 +43,10 @@ def timed(command):
 
 
 def main():
+    # byte-compile balance first, as installing numpy compiled numpy: with
+    # PYTHONDONTWRITEBYTECODE set (as on this project's machines) every run would otherwise
+    # recompile the package's sources and time the compiler, not balance
+    compileall.compile_dir(str(ROOT / "balance_cli"), quiet=1)
     failed = False
     with tempfile.TemporaryDirectory() as folder:
         for name, command, base_name, baseline, target, runs in benchmarks(folder + "/report"):
