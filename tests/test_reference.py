@@ -44,6 +44,8 @@ def test_every_erratum_is_used_and_the_known_ones_are_all_checked():
     # the errata listed in shared/seeds/INDEX.md
     assert {"T1", "T2", "T3", "T5", "F1"} <= used
     assert all(e["status"] in {"confirmed", "refuted", "new"} for e in ERRATA.values())
+    assert all(e.get("verdict", "misprint") in {"misprint", "slip", "truncation", "sign", "unexplained"}
+               for e in ERRATA.values())
 
 
 def test_enough_figures_per_paper():
@@ -52,6 +54,7 @@ def test_enough_figures_per_paper():
         counts[row.paper] = counts.get(row.paper, 0) + 1
     assert counts["tanaka1925"] >= 60 and counts["fraeys1949"] >= 20
     assert counts["nakanishi1932"] >= 10 and counts["lecture-notes"] >= 5
+    assert counts["margoulis1920"] >= 5
 
 
 def test_bramo_config_derives_fraeys_de_veubekes_point_masses_from_table_viii():

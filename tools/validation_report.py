@@ -39,7 +39,9 @@ def render():
         "Each row is a figure printed in a source paper (or, where the paper gives a formula",
         "without numbers, the formula evaluated by hand), the value balance computes exactly, the",
         "deviation, the tolerance and its reason. *agrees*: within tolerance; *erratum*: a traced",
-        "misprint or slip of the paper, listed at the end with its evidence.",
+        "error of the paper (a misprint, a slip, a truncated series, a sign), listed at the end",
+        "with its verdict and evidence. A row `…-series` shows the paper's own series summed to",
+        "the order its table stops at, beside the exact row.",
         "",
         f"**{len(rows)} figures: {verdicts['agrees']} agree within their tolerance, "
         f"{verdicts['erratum']} are errata of the papers"
@@ -59,10 +61,15 @@ def render():
         lines.append("")
     lines += ["## Errata", "",
               "Confirmed: listed in `shared/seeds/INDEX.md` and reproduced here. New: found by this",
-              "project. Refuted: listed but not borne out (none so far).", ""]
+              "project. Refuted: listed but not borne out (none so far). The verdict says what kind of",
+              "error it is: a misprint (the printed figure differs from what the paper's own working",
+              "gives), a slip (an arithmetic error in that working), a truncation (the paper's series",
+              "stops short: its figure is the series, the exact value differs), a sign, or unexplained.",
+              ""]
     for e in errata:
         records = ", ".join(r.id for r in rows if r.erratum == e["id"])
-        lines += [f"### {e['id']} ({e['status']}): {e['where']}", "",
+        kind = f"{e['verdict']}, " if "verdict" in e else ""
+        lines += [f"### {e['id']} ({kind}{e['status']}): {e['where']}", "",
                   f"- printed: {e['printed']}", f"- correct: {e['correct']}",
                   f"- evidence: {e['evidence']}", f"- records: {records}", ""]
     return "\n".join(lines)

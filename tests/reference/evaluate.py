@@ -16,8 +16,12 @@ from pathlib import Path
 
 import numpy as np
 
+import fraeys_series
+
 from balance_cli import analyse, load
 from balance_cli.kinematics import linkage
+from balance_cli.steadiness import steadiness
+from balance_cli.torque import torque
 from balance_cli.model import Cylinder, Engine, Throw
 from balance_cli.units import STANDARD_GRAVITY
 
@@ -97,6 +101,11 @@ def _variant(record):
         cylinders = tuple(dataclasses.replace(c, reciprocating_kg=m / 1000.0)
                           for c, m in zip(cylinders, record["masses_g"]))
         engine = dataclasses.replace(engine, cylinders=cylinders)
+    if "rod_inertias_kgm2" in record:
+        # added to each cylinder's own (in number order): Tanaka's I_B and Φ corrections
+        cylinders = tuple(dataclasses.replace(c, rod_inertia_kgm2=c.rod_inertia_kgm2 + extra)
+                          for c, extra in zip(cylinders, record["rod_inertias_kgm2"]))
+        engine = dataclasses.replace(engine, cylinders=cylinders)
     if "knuckle_radii_mm" in record:
         cylinders = tuple(dataclasses.replace(c, knuckle_radius_m=a / 1000.0) if c.is_link else c
                           for c, a in zip(cylinders, record["knuckle_radii_mm"]))
@@ -106,7 +115,8 @@ def _variant(record):
 
 def _base(record):
     """The record's engine without the overrides that a difference is taken against."""
-    return _variant({k: v for k, v in record.items() if k not in ("masses_g", "knuckle_radii_mm")})
+    return _variant({k: v for k, v in record.items()
+                     if k not in ("masses_g", "knuckle_radii_mm", "rod_inertias_kgm2")})
 
 
 @lru_cache(maxsize=None)
@@ -118,13 +128,23 @@ def _result(engine, record):
     return _analysed(engine, record.get("samples", 256), record.get("max_order", 8))
 
 
+@lru_cache(maxsize=None)
+def _torqued(engine, samples, max_order):
+    return torque(engine, samples, max_order)
+
+
+def _torque_result(engine, record):
+    return _torqued(engine, record.get("samples", 256), record.get("max_order", 8))
+
+
 # ---------------------------------------------------------------- units and frames
 
 
 def _unit(name, engine, result):
     """Divisor turning newtons (or N·m) into the record's unit."""
+    if name == "per_cylinder":
+        return result.per_cylinder_unit_n
     return {
-        "per_cylinder": result.per_cylinder_unit_n,
         "N": 1.0, "Nm": 1.0,
         # phases and ratios: the scale cancels
         "": 1.0, "deg": 1.0,
@@ -216,6 +236,14 @@ def _quantity(record, frames):
     if kind == "interval":
         intervals = _result(_variant(record), record).firing.intervals_deg
         return {"max": max(intervals), "min": min(intervals)}[words[1]]
+    if kind == "torque":
+        return _torque_quantity(record, words[1:])
+    if kind == "fraeys":
+        return _fraeys_coefficient(record, words[1], int(words[2]))
+    if kind == "margoulis":
+        return _margoulis(record, words[1])
+    if kind == "fraeys-series":
+        return fraeys_series.series(record.get("series_order", 3))[words[1]][int(words[2])]
     if kind == "link":
         return _link_first_harmonic(record)[words[1]]
     if kind == "reduction":
@@ -225,6 +253,85 @@ def _quantity(record, frames):
     if kind == "series":
         return _series_check(words[1], record)
     raise ValueError(f"{record['id']}: unknown quantity {record['quantity']!r}")
+
+
+def _torque_value(result, part, words):
+    series = getattr(result, part)
+    form = words[0]
+    if form in ("sin", "cos"):
+        cos, sin = series.order(int(words[1]))
+        return sin if form == "sin" else cos
+    if form == "ratio":      # |sin K2 / sin K1|
+        return abs(series.order(int(words[2]))[1] / series.order(int(words[1]))[1])
+    return {"max": series.max, "min": series.min, "mean": series.mean}[form]
+
+
+def _torque_quantity(record, words):
+    """``torque PART sin|cos K``, ``torque PART max|min|mean``, ``torque PART ratio K1 K2``
+    (PART: inertia, frame, tilting, total), N·m in the record's unit; with ``difference``, the
+    changed engine's minus the unchanged one's (torques are linear in the masses and rod
+    inertias, so a difference is the part those changes contribute)."""
+    engine = _variant(record)
+    part, rest = words[0], words[1:]
+    value = _torque_value(_torque_result(engine, record), part, rest)
+    if record.get("difference"):
+        value -= _torque_value(_torque_result(_base(record), record), part, rest)
+    if rest[0] == "ratio":
+        return value
+    if record["unit"] == "%":   # of a torque the paper gives, ``percent_of_kgfm``
+        return 100.0 * value / STANDARD_GRAVITY / record["percent_of_kgfm"]
+    return value / _unit(record["unit"], engine, None)
+
+
+def _fraeys_coefficient(record, name, k):
+    """Fraeys de Veubeke's U_k, V_k, R_k, T_k (kg: torques per R²Ω², forces per RΩ²) from the
+    library: μ(θ) = 2R²(U₀ + Σ U_k/k·cos kθ), so the inertia torque −½Ω²dμ/dθ = R²Ω²·Σ U_k·sin kθ;
+    the tilting couple R²Ω²·Σ V_k·sin kθ; the radial pin force RΩ²(R₀ + Σ R_k cos kθ); the pin
+    force in the fixed frame RΩ²·Σ T_k·e^{ikθ}."""
+    engine = _variant(record)
+    result = _torque_result(engine, record)
+    r, w = engine.crank_radius_m, engine.speed_rad_s
+    if name == "U":
+        return (result.reduced_mass.mean_kgm2 / (2 * r**2) if k == 0
+                else result.inertia.order(k)[1] / (r * w) ** 2)
+    if name == "V":
+        return result.tilting.order(k)[1] / (r * w) ** 2
+    pin = result.pins[0]
+    if name == "R":
+        return (pin.radial.mean if k == 0 else pin.radial.order(k)[0]) / (r * w**2)
+    if name == "T":
+        forward, backward = pin.order(abs(k))
+        return (forward if k >= 0 else backward).real / (r * w**2)
+    raise ValueError(name)
+
+
+def _sinusoid(cylinders, mean, spread, samples=4096):
+    """Margoulis's (3): C = C_m + (ΔC/2)·sin(Nθ/2) over a four-stroke's 720°."""
+    theta = np.arange(samples) * 4 * np.pi / samples
+    return mean + spread / 2 * np.sin(cylinders * theta / 2)
+
+
+def _margoulis(record, form):
+    """``margoulis rv_over_rc`` (N·r_v/r_c with ``_times_N``): the library's closed forms for a
+    propeller of ℓ = 0.04·β·D⁵ and I = K·D⁵ (his (18), (19); D = 1, technical units: the g
+    they carry cancels); ``margoulis integrated``: the library's integrated steadiness for
+    ``cylinders``, ``inertia_kgm2``, ``mean_torque_Nm``, ``torque_range_Nm``, ``speed_rpm``,
+    ``load``."""
+    n = record["cylinders"]
+    if form.startswith("rv_over_rc"):
+        omega = 100.0
+        ell, inertia = 0.04 * record["beta"], record["K"]
+        mean = ell * omega**2
+        # a torque range small enough that r_c ≈ 100: the mean speed stays the nominal one
+        spread = omega**2 * n * inertia / 200.0
+        factors = steadiness(_sinusoid(n, mean, spread), 720.0, inertia, omega, "propeller").margoulis()
+        ratio = factors["r_v"] / factors["r_c"]
+        return ratio * n if form.endswith("times_N") else ratio
+    if form == "integrated":
+        omega = record["speed_rpm"] * 2 * np.pi / 60
+        curve = _sinusoid(n, record["mean_torque_Nm"], record["torque_range_Nm"])
+        return steadiness(curve, 720.0, record["inertia_kgm2"], omega, record["load"]).factor
+    raise ValueError(form)
 
 
 def _link_first_harmonic(record):
