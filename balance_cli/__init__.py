@@ -23,13 +23,19 @@ from .counterweight import (Antivibrateur, Balance, Counterweight, Plane, Shaft,
 from .errors import (AnalysisError, BalanceError, ConfigError, CounterweightError,  # noqa: E402
                      FiringError, ModelError, OutputError, PlotError, SamplingWarning, UnitError)
 from .firing import Firing  # noqa: E402
-from .model import Cylinder, Engine, Throw  # noqa: E402
+from .gas import PressureCurve, read_cycle_csv, read_pressure_csv  # noqa: E402
+from .model import Cylinder, Engine, GasCycle, Parts, Throw  # noqa: E402
 from .regress import Moved, Regression, RegressError, regression  # noqa: E402
 from .shaking import OrderComponents, Shaking  # noqa: E402
+from .flywheel import Steadiness, flywheel_for, steadiness  # noqa: E402
+from .torques import PinForce, ReducedMass, Series, TorqueResult, TorqueSet, torque  # noqa: E402
 
 __all__ = [
     "load", "loads", "load_many", "find_configs", "analyse", "compare", "counterweights",
     "regression", "plot", "Regression", "Moved",
+    "torque", "TorqueResult", "TorqueSet", "Series", "ReducedMass", "PinForce",
+    "steadiness", "flywheel_for", "Steadiness", "read_pressure_csv", "read_cycle_csv",
+    "PressureCurve", "Parts", "GasCycle",
     "Engine", "Cylinder", "Throw", "EngineResult", "Comparison", "Shaking", "OrderComponents",
     "Firing", "Balance", "Counterweight", "Plane", "Shaft", "Antivibrateur",
     "BalanceError", "ConfigError", "ModelError", "FiringError", "AnalysisError",

@@ -13,7 +13,6 @@ from pathlib import Path
 
 import click
 import numpy as np
-from click.core import ParameterSource
 
 from . import __version__
 from .analysis import analyse, compare as comparison_of
@@ -169,7 +168,8 @@ def validate(paths):
             bad += 1
             click.echo(f"invalid: {exc.message}", err=True)
         else:
-            click.echo(f"ok: {path} ({engine.name}, {engine.n_cylinders} cylinders)")
+            count = engine.n_cylinders
+            click.echo(f"ok: {path} ({engine.name}, {count} cylinder{'s' if count != 1 else ''})")
     if bad:
         raise SystemExit(1)
 
@@ -343,10 +343,6 @@ def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, 
     _write(output, text)
 
 
-def _given(name):
-    return click.get_current_context().get_parameter_source(name) != ParameterSource.DEFAULT
-
-
 def _use_agg():
     """Draw without a display: the command line's choice of backend, not the library's."""
     import matplotlib
@@ -372,24 +368,29 @@ def _drawing():
 
 @main.command()
 @_INPUTS
-@click.option("--kind", type=click.Choice(["locus", "spectrum", "star", "firing"]), required=True,
+@click.option("--kind", type=click.Choice(["locus", "spectrum", "star", "firing", "torque"]),
+              required=True,
               help="locus: resultant force per cylinder over a revolution (Tanaka's Fig. 9); "
                    "spectrum: forward and backward parts by order; star: each cylinder's phasor "
-                   "of one order, chained; firing: firing angles on a dial.")
+                   "of one order, chained; firing: firing angles on a dial; torque: inertia, gas "
+                   "(from a [gas] table) and total torque over a cycle, and the orders of the total.")
 @click.option("--output", "-o", required=True, metavar="PATH",
               help="Picture file; its extension gives the format: .png, .svg, .svgz, .pdf, .eps, "
                    ".ps, .jpg, .jpeg, .tif, .tiff, .webp. Folders are created.")
 @click.option("--order", type=click.IntRange(1), default=None,
               help="locus: one order only (default all); star: the order drawn (default 2).")
-@click.option("--units", type=click.Choice(["per-cylinder", "N", "kgf"]), default="per-cylinder",
-              show_default=True, help="spectrum only: units of the forces (kgf also puts moments "
-                                      "in kgf·m).")
+@click.option("--units", type=click.Choice(["per-cylinder", "N", "kgf"]), default=None,
+              help="spectrum: units of the forces, default per-cylinder (kgf also puts moments "
+                   "in kgf·m); torque: N (N·m, the default) or kgf (kgf·m).")
 @_SAMPLES
 @_MAX_ORDER
 def plot(paths, kind, output, order, units, samples, max_order):
     """Draw a picture of one or more engines (headless)."""
-    if _given("units") and kind != "spectrum":
-        raise click.UsageError(f"--units applies to --kind spectrum only, not {kind}")
+    if units is not None and kind not in ("spectrum", "torque"):
+        raise click.UsageError(f"--units applies to --kind spectrum and torque only, not {kind}")
+    if units == "per-cylinder" and kind == "torque":
+        raise click.UsageError("--units per-cylinder applies to --kind spectrum only; torques "
+                               "are drawn in N·m (N) or kgf·m (kgf)")
     if order is not None and kind not in ("locus", "star"):
         raise click.UsageError(f"--order applies to --kind locus and star only, not {kind}")
     files = _inputs(paths)
@@ -402,14 +403,22 @@ def plot(paths, kind, output, order, units, samples, max_order):
 
     with _reported():
         drawing.format_of(output)
-    results = _analyse_all(_load_all(files), samples, max_order)
+    engines = _load_all(files)
+    if kind == "torque":
+        from .torques import torque as torque_of
+
+        results = _run_each(engines, "Torques", lambda e: torque_of(e, samples, max_order))
+    else:
+        results = _analyse_all(engines, samples, max_order)
     with _reported(), _drawing():
         if kind == "locus":
             figure = drawing.locus(results, order)
         elif kind == "spectrum":
-            figure = drawing.spectrum(results, units)
+            figure = drawing.spectrum(results, units or "per-cylinder")
         elif kind == "star":
             figure = drawing.star(results, order or min(2, max_order))
+        elif kind == "torque":
+            figure = drawing.torque(results, units or "N")
         else:
             figure = drawing.firing(results)
         drawing.save(figure, output)
@@ -429,7 +438,8 @@ def plot(paths, kind, output, order, units, samples, max_order):
 @_SAMPLES
 @_MAX_ORDER
 def report(paths, output, with_html, reference, star_order, samples, max_order):
-    """Write a comparison report: tables, counterweights and pictures (Markdown, optionally HTML).
+    """Write a comparison report: tables, counterweights, torques and pictures (Markdown,
+    optionally HTML).
 
     The files are written into DIR all at once at the end; files of the same names already in
     DIR are replaced, others are left alone.
@@ -450,8 +460,13 @@ def report(paths, output, with_html, reference, star_order, samples, max_order):
     with _reported():
         comparison = comparison_of(results, reference)
     balances = _run_each(results, "Balancing", counterweights)
+    from .torques import torque as torque_of
+
+    # the report shows no bearing forces: leaving them out halves the work
+    torques = _run_each([r.engine for r in results], "Torques",
+                        lambda e: torque_of(e, samples, max_order, bearings=False))
     with _reported(), _drawing():
-        written = write_report(target, comparison, balances, star_order, with_html)
+        written = write_report(target, comparison, balances, star_order, with_html, torques)
     for path in written:
         click.echo(f"wrote {path}", err=True)
 
@@ -501,7 +516,7 @@ def torque(paths, pressure, bore, inertia, target, load, samples, max_order, uni
     steadiness (Margoulis).
     """
     from .gas import read_pressure_csv
-    from .torque import TorqueSet, torque as torque_of
+    from .torques import TorqueSet, torque as torque_of
 
     files = _inputs(paths)
     inputs = files + ([Path(pressure)] if pressure else [])
@@ -550,7 +565,7 @@ def steadiness(torque_file, inertia, speed, load, target, fmt, output):
     """Speed fluctuation of an engine set driven by a measured torque curve: the periodic speed,
     the steadiness ω_m/(ω_max − ω_min), and Margoulis's closed forms r_c, r_v, r_h."""
     from .gas import read_cycle_csv
-    from .steadiness import flywheel_for, steadiness as steadiness_of
+    from .flywheel import flywheel_for, steadiness as steadiness_of
 
     _guard([output], [Path(torque_file)])
     inertia_kgm2 = _quantity_option(inertia, "--inertia", "moment of inertia")

@@ -204,12 +204,13 @@ def cycle_pressure(gas, travel_m, cycle_deg, where="[gas]"):
     if gas.imep_pa is None:
         heat, pressure = 0.0, motored
     else:
-        _, w1 = work(1.0)
+        # pressure and work are affine in the heat released: two passes give both exactly
+        unit, w1 = work(1.0)
         heat = (gas.imep_pa * swept - w0) / (w1 - w0)
         if heat < 0:
             raise ConfigError(where, "gas.imep", "is below what compression and expansion alone "
                                                  "give; raise it or leave it out for a motored cycle")
-        pressure, _ = work(heat)
+        pressure = motored + heat * (unit - motored)
     angles = np.arange(0.0, cycle_deg, 1.0 / _FINE)
     signed = (angles + cycle_deg / 2) % cycle_deg - cycle_deg / 2
     values = np.where(np.abs(signed) <= 180.0, np.interp(signed, psi, pressure), gas.intake_pa)

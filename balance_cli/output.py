@@ -31,16 +31,16 @@ _ONE_LINE = json.JSONEncoder(ensure_ascii=False).encode
 
 def to_json(document):
     """A JSON document as balance writes it: indented, UTF-8 text, a final newline; an object
-    or list that holds only numbers and strings stays on one line (one line per order reads
+    or list inside it that holds only numbers and strings stays on one line (one line per order reads
     better, and the C encoder writes those lines: the pure-Python indenting encoder took
     longer than the analysis on a library's crank-pin forces)."""
-    return _encode(document, "") + "\n"
+    return _encode(document, "", top=True) + "\n"
 
 
-def _encode(value, margin):
+def _encode(value, margin, top=False):
     kind = type(value)
     if kind is dict:
-        if _NESTED.isdisjoint(map(type, value.values())):
+        if not top and _NESTED.isdisjoint(map(type, value.values())):
             return _ONE_LINE(value)
         inner = margin + "  "
         body = ",\n".join(f"{inner}{_ONE_LINE(str(k))}: {_encode(v, inner)}"

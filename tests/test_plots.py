@@ -2,6 +2,7 @@
 the HTML page in Chromium. The library is analysed once per module; the command line is run
 on single engines only, to check its wiring."""
 
+import importlib
 import math
 import os
 import shutil
@@ -226,9 +227,12 @@ def test_plot_command_refuses_a_format_before_computing(tmp_path, monkeypatch):
 
 
 @pytest.mark.parametrize("args, words", [
-    (["--kind", "locus", "--units", "kgf"], "--units applies to --kind spectrum only"),
-    (["--kind", "star", "--units", "N"], "--units applies to --kind spectrum only"),
+    (["--kind", "locus", "--units", "kgf"], "--units applies to --kind spectrum and torque only"),
+    (["--kind", "star", "--units", "N"], "--units applies to --kind spectrum and torque only"),
+    (["--kind", "firing", "--units", "per-cylinder"], "--units applies to --kind spectrum and torque"),
+    (["--kind", "torque", "--units", "per-cylinder"], "--units per-cylinder applies to --kind spectrum only"),
     (["--kind", "spectrum", "--order", "2"], "--order applies to --kind locus and star only"),
+    (["--kind", "torque", "--order", "2"], "--order applies to --kind locus and star only"),
 ])
 def test_plot_options_that_do_not_apply_are_usage_errors(tmp_path, args, words):
     result = run("plot", V8, *args, "--output", tmp_path / "p.png")
@@ -273,7 +277,7 @@ def test_report_markdown_with_relative_pictures(tmp_path):
     result = run("report", PART3, "--output", out)
     assert result.exit_code == 0, result.output
     text = (out / "report.md").read_text(encoding="utf-8")
-    for picture in ("locus.svg", "spectrum.svg", "star.svg", "firing.svg"):
+    for picture in ("locus.svg", "spectrum.svg", "star.svg", "firing.svg", "torque.svg"):
         assert f"]({picture})" in text
         assert (out / picture).read_bytes().startswith(b"<?xml")
     assert "| 90° V8, flat crank" in text and "## Counterweights" in text
@@ -313,13 +317,238 @@ def test_html_report_opens_in_headless_chromium_without_console_errors(tmp_path)
     assert ' src="http' not in html and ' href="http' not in html and "<script" not in html
     dom, console = dump(page, tmp_path / "profile")
     assert console == []
-    assert dom.count("<table") == 4          # engines, two comparison tables, counterweights
-    assert dom.count("<figure") == 4 and dom.count("<svg") >= 4
+    # engines, two comparison tables, counterweights, torques and reduced mass
+    assert dom.count("<table") == 6
+    assert dom.count("<figure") == 5 and dom.count("<svg") >= 5
     for name in ("90° V8, flat crank", "9-cylinder rotary", "Locus of the resultant force per cylinder",
-                 "Star of order 2", "Firing"):
+                 "Star of order 2", "Firing", "Torques", "Reduced mass"):
         assert name in dom
     # the copy beside it can be moved anywhere: nothing is loaded from the folder
     moved = tmp_path / "elsewhere.html"
     shutil.copy(page, moved)
     dom_moved, console = dump(moved, tmp_path / "profile-moved")
     assert console == [] and dom_moved.count("<svg") == dom.count("<svg")
+
+
+# --- torques: the picture (balance plot --kind torque) and the report's section -------------
+
+GAS = """
+[gas]
+bore = "86 mm"
+compression_ratio = 10
+imep = "12 bar"
+"""
+
+
+@pytest.fixture(scope="module")
+def gas_config(tmp_path_factory):
+    """The car's in-line four with a [gas] cycle: a four-stroke with gas and half orders."""
+    text = (CONFIGS / "inline-4-car.toml").read_text(encoding="utf-8")
+    path = tmp_path_factory.mktemp("gas") / "inline-4-gas.toml"
+    path.write_text(text.replace('name = "In-line 4, car proportions"',
+                                 'name = "In-line 4, car, with gas"') + GAS, encoding="utf-8")
+    return path
+
+
+@pytest.fixture(scope="module")
+def torques(gas_config):
+    """A four-stroke with gas, a four-stroke without and a two-stroke, in that order."""
+    from balance_cli.torques import torque
+
+    return [torque(load(path)) for path in (gas_config, V8, CONFIGS / "inline-4-marine.toml",
+                                            CONFIGS / "nakanishi-w12-60-2stroke.toml")]
+
+
+def torque_artists(fig, label):
+    from matplotlib.lines import Line2D
+
+    return [a for a in fig.artists if isinstance(a, Line2D) and a.get_label() == label]
+
+
+def test_torque_data_is_the_torque_in_each_unit(torques):
+    result = torques[0]
+    for units, scale in (("N", 1.0), ("kgf", 1 / STANDARD_GRAVITY)):
+        data = plot.torque_data(result, units)
+        assert_allclose(data["theta_deg"][:-1], result.total.theta_deg, rtol=0, atol=1e-12)
+        assert data["theta_deg"][-1] == 720.0 == data["period_deg"]
+        for name in ("inertia", "gas", "total"):
+            curve = getattr(result, name).curve
+            assert_allclose(data[name][:-1], curve * scale, rtol=1e-12, atol=0)
+            assert data[name][-1] == data[name][0]                    # closed over the cycle
+        assert_allclose(data["mean"], result.total.mean * scale, rtol=1e-12)
+        assert_allclose(data["orders"], 0.5 * np.arange(1, 17), rtol=0, atol=0)
+        assert_allclose(data["amplitudes"], [math.hypot(c, s) * scale for _, c, s in result.total.orders],
+                        rtol=1e-12, atol=0)
+        assert data["unit"] == ("N·m" if units == "N" else "kgf·m")
+    assert plot.torque_data(torques[1])["gas"] is None
+    with pytest.raises(PlotError, match="units must be one of N, kgf"):
+        plot.torque_data(result, "per-cylinder")
+    with pytest.raises(PlotError, match="needs at least one"):
+        plot.torque([])
+
+
+@pytest.mark.parametrize("units, scale", [("N", 1.0), ("kgf", 1 / STANDARD_GRAVITY)])
+def test_torque_figure_draws_each_engines_torques_mean_and_orders(torques, units, scale):
+    fig = plot.torque(torques, units)
+    totals, inertias = torque_artists(fig, "total"), torque_artists(fig, "inertia")
+    means, gases = torque_artists(fig, "mean total"), torque_artists(fig, "gas")
+    assert len(totals) == len(inertias) == len(means) == len(torques) and len(gases) == 1
+    assert_allclose(gases[0].get_ydata()[:-1], torques[0].gas.curve * scale, rtol=1e-12, atol=0)
+    bars = [a for a in fig.artists if a.get_label() == "orders"]
+    # the two-stroke W12's total has no order up to 8 above the noise floor: no bars drawn
+    assert len(bars) == 3 and not any(math.hypot(c, s) for _, c, s in torques[3].total.orders)
+    for result, total, inertia, mean in zip(torques, totals, inertias, means):
+        assert_allclose(total.get_xdata()[:-1], result.total.theta_deg, rtol=0, atol=1e-12)
+        assert total.get_xdata()[-1] == result.period_deg
+        assert_allclose(total.get_ydata()[:-1], result.total.curve * scale, rtol=1e-12, atol=0)
+        assert_allclose(inertia.get_ydata()[:-1], result.inertia.curve * scale, rtol=1e-12, atol=0)
+        assert_allclose(mean.get_ydata(), [result.total.mean * scale] * 2, rtol=1e-12, atol=0)
+    for result, patch in zip(torques, bars):
+        # closed rectangles from 0 up to each order's amplitude, centred on the order
+        corners = patch.get_path().vertices.reshape(-1, 5, 2)[:, :4]
+        expected = [(k, math.hypot(c, s) * scale) for k, c, s in result.total.orders if c or s]
+        assert_allclose(corners[:, :, 0].mean(axis=1), [k for k, _ in expected], rtol=0, atol=1e-12)
+        assert_allclose(corners[:, :, 1].max(axis=1), [a for _, a in expected], rtol=1e-12, atol=0)
+        assert_allclose(corners[:, :, 1].min(axis=1), 0.0, rtol=0, atol=0)
+    labels = next(a for a in fig.artists if isinstance(a, plot._Labels)).texts()
+    assert f"torque ({'N·m' if units == 'N' else 'kgf·m'})" in labels
+    assert {"0°", "360°", "720°", "180°", "no order up to 8"} <= set(labels)
+
+
+def test_torque_figure_keeps_each_engine_in_its_cell_below_its_title(torques, library):
+    """No title overlaps another, none leaves the figure, and each engine's curves stay in its
+    column of the grid, below its own title (17 engines: 3 columns, 6 rows)."""
+    from balance_cli.torques import torque
+
+    for chosen in (torques, [torque(r.engine, bearings=False) for r in library]):
+        fig = plot.torque(chosen)
+        renderer = fig.canvas.get_renderer()
+        columns, rows = plot.grid_size(len(chosen))
+        titles = [t for t in fig.texts if "-stroke" in t.get_text()]
+        assert len(titles) == len(chosen)
+        boxes = [t.get_window_extent(renderer) for t in titles]
+        for i, box in enumerate(boxes):
+            assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1 and box.y1 <= fig.bbox.y1
+            assert not any(box.overlaps(other) for other in boxes[i + 1:])
+        for index, (total, box) in enumerate(zip(torque_artists(fig, "total"), boxes)):
+            points = total.get_transform().transform(np.column_stack([total.get_xdata(),
+                                                                      total.get_ydata()]))
+            column = index % columns
+            assert fig.bbox.width * column / columns < points[:, 0].min()
+            assert points[:, 0].max() < fig.bbox.width * (column + 1) / columns
+            assert points[:, 1].max() < box.y0
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)
+
+
+def test_plot_command_draws_torques_as_png_and_in_kgf(tmp_path, gas_config, torques):
+    out = tmp_path / "torque.png"
+    result = run("plot", gas_config, V8, "--kind", "torque", "--output", out)
+    assert result.exit_code == 0, result.output
+    assert out.read_bytes().startswith(b"\x89PNG")
+    # two engines: two cells of 4 in (the figure at least 8 in wide) under a 0.75 in header
+    assert matplotlib.image.imread(out).shape[:2] == (475, 800)
+    svg = tmp_path / "torque.svg"
+    result = run("plot", gas_config, "--kind", "torque", "--units", "kgf", "--output", svg)
+    assert result.exit_code == 0, result.output
+    text = svg.read_text(encoding="utf-8")
+    assert "torque (kgf·m)" in text and "mean 19.46 kgf·m" in text
+    assert f"{torques[0].total.mean / STANDARD_GRAVITY:.4g}" == "19.46"
+
+
+def test_plot_command_torques_respect_samples_and_max_order(tmp_path, monkeypatch):
+    # the module (the package's attribute balance_cli.torques may be the function)
+    torque_module = importlib.import_module("balance_cli.torques")
+    seen = []
+    real = torque_module.torque
+
+    def spy(engine, samples, max_order, *args, **kwargs):
+        seen.append((samples, max_order))
+        return real(engine, samples, max_order, *args, **kwargs)
+
+    monkeypatch.setattr(torque_module, "torque", spy)
+    result = run("plot", V8, "--kind", "torque", "--samples", "64", "--max-order", "3",
+                 "--output", tmp_path / "t.svg")
+    assert result.exit_code == 0, result.output
+    assert seen == [(64, 3)]
+
+
+def test_plot_command_reports_a_torque_error_in_one_line(tmp_path, monkeypatch):
+    from balance_cli.errors import AnalysisError
+
+    def refuse(engine, *args, **kwargs):
+        raise AnalysisError("cannot be computed", "engine")
+
+    monkeypatch.setattr(importlib.import_module("balance_cli.torques"), "torque", refuse)
+    out = tmp_path / "t.png"
+    result = run("plot", V8, "--kind", "torque", "--output", out)
+    assert result.exit_code == 1
+    assert result.output.strip().splitlines() == [f"Error: {V8}: engine cannot be computed"]
+    assert "Traceback" not in result.output and not out.exists()
+    # and bad configurations and settings are refused as for the other kinds
+    bad = tmp_path / "bad.toml"
+    bad.write_text((CONFIGS / "inline-4-car.toml").read_text(encoding="utf-8")
+                   + GAS.replace("compression_ratio = 10", "compression_ratio = 0.5"), encoding="utf-8")
+    monkeypatch.undo()
+    for args, words in (([bad], "gas.compression_ratio"), ([V8, "--max-order", "100"], "--samples must be")):
+        result = run("plot", *args, "--kind", "torque", "--output", out)
+        assert result.exit_code == 1 and len(result.output.strip().splitlines()) == 1, result.output
+        assert words in result.output and not out.exists()
+
+
+def test_report_torque_bearings_left_out_change_no_torque(torques):
+    from balance_cli.torques import torque
+
+    result = torques[0]
+    light = torque(result.engine, bearings=False)
+    assert light.pins == () and light.main_bearings is None and result.pins
+    for name in ("inertia", "gas", "total", "frame", "tilting"):
+        assert_allclose(getattr(light, name).curve, getattr(result, name).curve, rtol=0, atol=0)
+    assert_allclose(light.reduced_mass.curve_kgm2, result.reduced_mass.curve_kgm2, rtol=0, atol=0)
+
+
+def markdown_table(text, heading):
+    """The rows of the first table after ``heading`` in a Markdown document, as lists of cells."""
+    lines = text[text.index(heading):].splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith("|"))
+    rows = []
+    for line in lines[start + 2:]:
+        if not line.startswith("|"):
+            break
+        rows.append([cell.strip() for cell in line.strip("|").split("|")])
+    return lines[start], rows
+
+
+def test_report_has_a_torque_table_picture_and_reduced_mass(tmp_path, gas_config, torques):
+    out = tmp_path / "report"
+    result = run("report", gas_config, V8, "--output", out, "--html")
+    assert result.exit_code == 0, result.output
+    text = (out / "report.md").read_text(encoding="utf-8")
+    assert "## Torques" in text and "](torque.svg)" in text
+    assert (out / "torque.svg").read_bytes().startswith(b"<?xml")
+    assert 'id="torque.svg"' in (out / "report.html").read_text(encoding="utf-8")
+    header, rows = markdown_table(text, "## Torques")
+    assert "Mean (N·m)" in header and "Range ΔC (N·m)" in header
+    table, engine = {}, None
+    for cells in rows:
+        engine = cells[0] or engine
+        table[engine, cells[1]] = cells[2:]
+    assert len(rows) == 8 and table["90° V8, flat crank", "gas"] == ["—"] * 4
+    for result in torques[:2]:
+        for name in ("inertia", "gas", "total", "frame"):
+            series = getattr(result, name)
+            if series is None:
+                continue
+            shown = [float(v) for v in table[result.engine.name, name]]
+            assert_allclose(shown, [series.mean, series.max, series.min, series.range],
+                            rtol=0, atol=0.0051)
+    # the mean total torque of the engine with gas: imep·V/(4π), about 191 N·m
+    assert table["In-line 4, car, with gas", "total"][0] == f"{torques[0].total.mean:.2f}"
+    assert 185 < torques[0].total.mean < 195
+    header, rows = markdown_table(text, "Reduced mass μ")
+    assert [r[0] for r in rows] == ["In-line 4, car, with gas", "90° V8, flat crank"]
+    for cells, result in zip(rows, torques):
+        mu = result.reduced_mass
+        assert_allclose([float(c) for c in cells[1:]], [mu.mean_kgm2, mu.min_kgm2, mu.max_kgm2],
+                        rtol=1e-4, atol=0)

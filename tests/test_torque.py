@@ -12,7 +12,7 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.model import GasCycle
-from balance_cli.torque import torque
+from balance_cli.torques import torque
 from conftest import CONFIGS, make_engine
 
 sys.path.insert(0, str(Path(__file__).parent / "reference"))
@@ -202,3 +202,16 @@ def test_bramo_against_newton_euler():
         forward, backward = pin.order(abs(k))
         ours = forward if k >= 0 else backward
         assert abs(ours / (r * w**2) - expected) < 1e-9 * 32, k
+
+
+def test_show_prints_the_parts_and_the_rod_inertias_they_leave_out():
+    """Table VIII's parts, and C = J − B·H·(L − H), c = j − b·h·(l − h) by hand."""
+    from click.testing import CliRunner
+    from balance_cli.cli import main
+    result = CliRunner().invoke(main, ["show", str(CONFIGS / "bramo-323.toml")])
+    assert result.exit_code == 0, result.output
+    master = 0.122625 - 10.54 * 0.0413 * (0.330 - 0.0413)
+    link = 0.0141264 - 1.42 * 0.1385 * (0.2615 - 0.1385)
+    assert "piston 2972 g; rod 10540 g, centre of gravity 41.3 mm from the big end" in result.output
+    assert f"master rods C = J − M·H·(L − H) = {master:g} kg·m²" in result.output
+    assert f"link rods c = j − m·h·(l − h) = {link:g} kg·m²" in result.output

@@ -23,7 +23,8 @@ def _quantity_and_unit(key):
 def _value(value):
     if value is None:
         return ""
-    return repr(value) if isinstance(value, float) else value
+    # float(): a numpy scalar's repr names its type (np.float64(…)) since numpy 2
+    return repr(float(value)) if isinstance(value, float) else value
 
 
 def compare_csv(comparison, scale):

@@ -8,7 +8,7 @@ caption)``.
 from .. import __version__
 from ..units import rad_s_to_rpm
 from .display import Scale
-from .tables import balance_summary, compare_parts
+from .tables import balance_summary, compare_parts, torque_summary
 
 __all__ = ["PICTURES", "blocks"]
 
@@ -25,11 +25,17 @@ PICTURES = [
      "Each cylinder's forward and backward phasor of order {star} at θ = 0, chained tip to tail; "
      "the dashed line is the engine's resultant."),
     ("firing.svg", "firing", "Firing", "Firing angles over one working cycle, intervals in red."),
+    ("torque.svg", "torque", "Torques",
+     "Above, the inertia, gas (from the [gas] cycle) and total torque on the crankshaft over one "
+     "cycle against the crank angle of throw 1, and the mean total torque (dashed); below, the "
+     "amplitude of each order of the total torque up to the highest order analysed (half orders "
+     "too for a four-stroke); N·m."),
 ]
 
 
-def blocks(comparison, balances, star_order):
-    """The report: engines, comparison tables, counterweights, pictures."""
+def blocks(comparison, balances, star_order, torques):
+    """The report: engines, comparison tables, counterweights, torques (the
+    :class:`~balance_cli.torques.TorqueResult` of each engine), pictures."""
     results = comparison.results
     count = f"{len(results)} engine{'s' if len(results) != 1 else ''}"
     out = [("h", 1, "Balance report"),
@@ -56,6 +62,18 @@ def blocks(comparison, balances, star_order):
                      "and what is left."))
     headers, rows = balance_summary(balances)
     out.append(("table", headers, rows))
+    out.append(("h", 2, "Torques"))
+    out.append(("p", "Torques at each engine's speed over one cycle (720° for a four-stroke), from "
+                     "the exact kinetic energy: the inertia torque, the gas torque of the "
+                     "configuration's [gas] cycle (— without one), their total on the crankshaft, "
+                     "positive with rotation, and the reaction on the engine frame; N·m "
+                     "(`balance torque` for their orders, the crank-pin forces and the "
+                     "steadiness)."))
+    (headers, rows), (mass_headers, mass_rows) = torque_summary(torques)
+    out.append(("table", headers, rows))
+    out.append(("p", "Reduced mass μ of the moving parts (their kinetic energy is ½·μ·ω²), over "
+                     "a revolution:"))
+    out.append(("table", mass_headers, mass_rows))
     out.append(("h", 2, "Pictures"))
     for file, _, title, caption in PICTURES:
         out.append(("figure", file, title.format(star=star_order), caption.format(star=star_order)))

@@ -11,15 +11,17 @@ __all__ = ["write_report", "REPORT_FILES"]
 REPORT_FILES = [file for file, *_ in PICTURES] + ["report.md", "report.html"]
 
 
-def write_report(target, comparison, balances, star_order, with_html):
-    """Write the report of ``comparison`` (and its ``balances``) into the folder ``target``;
-    nothing is left behind if any part fails. Returns the paths written."""
+def write_report(target, comparison, balances, star_order, with_html, torques):
+    """Write the report of ``comparison`` (and its ``balances`` and ``torques``, one of each per
+    engine) into the folder ``target``; nothing is left behind if any part fails. Returns the
+    paths written."""
     results = comparison.results
     figures = {
         "locus": lambda: plot.locus(results),
         "spectrum": lambda: plot.spectrum(results),
         "star": lambda: plot.star(results, star_order),
         "firing": lambda: plot.firing(results),
+        "torque": lambda: plot.torque(torques),
     }
 
     def fill(folder):
@@ -27,7 +29,7 @@ def write_report(target, comparison, balances, star_order, with_html):
         for file, kind, _, _ in PICTURES:
             plot.save(figures[kind](), folder / file)
             names.append(file)
-        content = blocks(comparison, balances, star_order)
+        content = blocks(comparison, balances, star_order, torques)
         write_text(folder / "report.md", markdown(content))
         names.append("report.md")
         if with_html:

@@ -14,7 +14,7 @@ from .display import markdown_text, plain_text
 
 __all__ = ["render", "compare_parts", "compare_tables", "order_rows", "order_headers",
            "balance_tables", "balance_summary", "list_table", "show_table", "regression_tables",
-           "torque_tables", "steadiness_text"]
+           "torque_tables", "torque_summary", "steadiness_text"]
 
 _TABLEFMT = {"table": "simple", "markdown": "pipe"}
 
@@ -140,10 +140,14 @@ def _parts_lines(engine):
                      + (f"; link rod {kg_to_g(parts.link_kg):g} g, {_mm(parts.link_cg_m)}, "
                         f"j {_inertia(parts.link_inertia_kgm2)}" if parts.link_kg else "")
                      + f"; crank {kg_to_g(parts.crank_kg):g} g")
-    corrections = sorted({c.rod_inertia_kgm2 for c in engine.cylinders})
-    if any(corrections) or engine.shaft_inertia_kgm2:
-        lines.append("  rod inertia:   left out by the point masses (C = J − M·H·(L − H)): "
-                     + ", ".join(_inertia(c) for c in corrections)
+    rods = sorted({c.rod_inertia_kgm2 for c in engine.cylinders if not c.is_link})
+    links = sorted({c.rod_inertia_kgm2 for c in engine.cylinders if c.is_link})
+    if any(rods) or any(links) or engine.shaft_inertia_kgm2:
+        lines.append("  rod inertia:   left out by the point masses: "
+                     + ("master rods" if links else "rods") + " C = J − M·H·(L − H) = "
+                     + ", ".join(_inertia(c) for c in rods)
+                     + (f"; link rods c = j − m·h·(l − h) = {', '.join(_inertia(c) for c in links)}"
+                        if links else "")
                      + f"; crankshaft and flywheel {_inertia(engine.shaft_inertia_kgm2)}")
     if engine.gas is not None:
         gas = engine.gas
@@ -287,6 +291,28 @@ def balance_summary(balances):
     headers = ["Engine", "Counterweights at crank radius", "1st order left fwd (per cyl)",
                "1st order bwd (per cyl)", "Largest resultant left (per cyl)"]
     return headers, rows
+
+
+def _torque_text(value_nm):
+    text = f"{value_nm:.2f}"
+    return "0.00" if text == "-0.00" else text
+
+
+def torque_summary(results):
+    """The report's torques: per engine the mean, largest, smallest and range of the inertia,
+    gas ("—" without one), total and frame torques, N·m, one row each; and a second table of
+    the reduced mass. Returns ((headers, rows), (headers, rows))."""
+    rows, masses = [], []
+    for r in results:
+        for i, (name, series) in enumerate((("inertia", r.inertia), ("gas", r.gas),
+                                            ("total", r.total), ("frame", r.frame))):
+            values = (["—"] * 4 if series is None else
+                      [_torque_text(v) for v in (series.mean, series.max, series.min, series.range)])
+            rows.append([r.engine.name if i == 0 else "", name] + values)
+        mu = r.reduced_mass
+        masses.append([r.engine.name, f"{mu.mean_kgm2:.5g}", f"{mu.min_kgm2:.5g}", f"{mu.max_kgm2:.5g}"])
+    return ((["Engine", "Torque", "Mean (N·m)", "Max (N·m)", "Min (N·m)", "Range ΔC (N·m)"], rows),
+            (["Engine", "Mean μ (kg·m²)", "Min μ (kg·m²)", "Max μ (kg·m²)"], masses))
 
 
 def _value_text(value):

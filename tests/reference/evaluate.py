@@ -20,8 +20,8 @@ import fraeys_series
 
 from balance_cli import analyse, load
 from balance_cli.kinematics import linkage
-from balance_cli.steadiness import steadiness
-from balance_cli.torque import torque
+from balance_cli.flywheel import steadiness
+from balance_cli.torques import torque
 from balance_cli.model import Cylinder, Engine, Throw
 from balance_cli.units import STANDARD_GRAVITY
 
@@ -97,6 +97,12 @@ def _variant(record):
     if "reciprocating" in record.get("variant", []):
         cylinders = tuple(dataclasses.replace(c, knuckle_kg=0.0) for c in cylinders)
         engine = dataclasses.replace(engine, rotating_kg=0.0, cylinders=cylinders)
+    if "single-obliquity" in record.get("variant", []):
+        # every link rod replaced by a plain rod of the master's length on the same pin
+        cylinders = tuple(dataclasses.replace(c, master=None, link_length_m=0.0, knuckle_radius_m=0.0,
+                                              knuckle_angle_rad=0.0, knuckle_kg=0.0)
+                          for c in cylinders)
+        engine = dataclasses.replace(engine, cylinders=cylinders)
     if "masses_g" in record:
         cylinders = tuple(dataclasses.replace(c, reciprocating_kg=m / 1000.0)
                           for c, m in zip(cylinders, record["masses_g"]))
@@ -144,6 +150,8 @@ def _unit(name, engine, result):
     """Divisor turning newtons (or N·m) into the record's unit."""
     if name == "per_cylinder":
         return result.per_cylinder_unit_n
+    if name == "per_cylinder_Nm":    # torques per m_rec·r²·ω²·n
+        return engine.per_cylinder_unit_n * engine.crank_radius_m
     return {
         "N": 1.0, "Nm": 1.0,
         # phases and ratios: the scale cancels
@@ -256,11 +264,16 @@ def _quantity(record, frames):
 
 
 def _torque_value(result, part, words):
-    series = getattr(result, part)
+    series = getattr(result, part) if part != "reduced_mass" else None
     form = words[0]
     if form in ("sin", "cos"):
         cos, sin = series.order(int(words[1]))
         return sin if form == "sin" else cos
+    if form == "largest_below":   # the largest amplitude of the orders below K
+        return max(math.hypot(c, s) for k, c, s in series.orders if k < float(words[1]))
+    if form == "variation":       # (max − min)/mean of the reduced mass
+        mu = result.reduced_mass.curve_kgm2
+        return (mu.max() - mu.min()) / mu.mean()
     if form == "ratio":      # |sin K2 / sin K1|
         return abs(series.order(int(words[2]))[1] / series.order(int(words[1]))[1])
     return {"max": series.max, "min": series.min, "mean": series.mean}[form]
@@ -271,12 +284,14 @@ def _torque_quantity(record, words):
     (PART: inertia, frame, tilting, total), N·m in the record's unit; with ``difference``, the
     changed engine's minus the unchanged one's (torques are linear in the masses and rod
     inertias, so a difference is the part those changes contribute)."""
-    engine = _variant(record)
+    # the papers' torques are of the moving parts alone: no gas, even where the engine has a cycle
+    engine = dataclasses.replace(_variant(record), gas=None)
     part, rest = words[0], words[1:]
     value = _torque_value(_torque_result(engine, record), part, rest)
     if record.get("difference"):
-        value -= _torque_value(_torque_result(_base(record), record), part, rest)
-    if rest[0] == "ratio":
+        base = dataclasses.replace(_base(record), gas=None)
+        value -= _torque_value(_torque_result(base, record), part, rest)
+    if rest[0] in ("ratio", "variation"):
         return value
     if record["unit"] == "%":   # of a torque the paper gives, ``percent_of_kgfm``
         return 100.0 * value / STANDARD_GRAVITY / record["percent_of_kgfm"]

@@ -34,7 +34,7 @@ from .kinematics import (check_assembly, crank_angles_of, engine_angles, linkage
                          piston_travel, travel_at)
 from .model import Engine
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings, part_values
-from .steadiness import Steadiness, flywheel_for, steadiness
+from .flywheel import Steadiness, flywheel_for, steadiness
 from .tolerances import NOISE_FLOOR
 from .units import phasor_deg, rad_s_to_rpm
 
@@ -77,7 +77,7 @@ class Series:
         c = np.fft.rfft(curve) / n
         orders = []
         for j in range(1, int(round(max_order * per_turn)) + 1):
-            cos, sin = 2 * c[j].real, -2 * c[j].imag
+            cos, sin = float(2 * c[j].real), float(-2 * c[j].imag)
             orders.append((j / per_turn, cos if abs(cos) >= floor else 0.0,
                            sin if abs(sin) >= floor else 0.0))
         mean = c[0].real if abs(c[0].real) >= floor else 0.0
@@ -375,7 +375,8 @@ def _pin_forces(engine, state, angles, turns, net_pressure, area):
 
 
 def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressure=None,
-           bore_m=None, inertia_kgm2=None, load="propeller", target=None) -> TorqueResult:
+           bore_m=None, inertia_kgm2=None, load="propeller", target=None,
+           bearings=True) -> TorqueResult:
     """Inertia, tilting, gas, total and frame torques and the reduced mass of ``engine`` at
     its speed.
 
@@ -394,10 +395,13 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
     inertia_kgm2 : float, optional
         a flywheel (and propeller) inertia: then the speed over the cycle is integrated with
         the gas torque driving, the moving parts' μ(θ) and the ``load`` ("propeller" or
-        "constant"; see :func:`balance_cli.steadiness.steadiness`)
+        "constant"; see :func:`balance_cli.flywheel.steadiness`)
     target : float, optional
         a steadiness to reach: the flywheel inertia that does is given too (and the speed
         with it, when no ``inertia_kgm2`` is given)
+    bearings : bool
+        False leaves out the forces on the crank pins and main bearings (``pins`` empty,
+        ``main_bearings`` None), half the work, for what needs the torques only
 
     Raises
     ------
@@ -443,7 +447,8 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
                         for c in engine.cylinders)
         gas = series(gas_curve, tile=False)
         total = total + gas_curve
-    pins, crank_inertia = _pin_forces(engine, state, angles, turns, net_pressure, area)
+    pins, crank_inertia = (_pin_forces(engine, state, angles, turns, net_pressure, area)
+                           if bearings else ([], None))
     theta = np.arange(samples * turns) * 360.0 / samples
     pin_results = []
     for index, (throw, force) in enumerate(zip(engine.throws, pins)):
@@ -453,8 +458,8 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
         pin_results.append(PinForce(index + 1, engine.cycle_deg, theta, force,
                                     series(local.real, "N", tile=False),
                                     series(local.imag, "N", tile=False)))
-    main = None if engine.is_rotary else PinForce(None, engine.cycle_deg, theta,
-                                                  sum(pins) + crank_inertia, None, None)
+    main = None if engine.is_rotary or not bearings else PinForce(
+        None, engine.cycle_deg, theta, sum(pins) + crank_inertia, None, None)
     speed, flywheel = None, None
     if inertia_kgm2 is not None or target is not None:
         if gas is None:
