@@ -475,9 +475,12 @@ def _quantity_option(text, flag, dimension):
     if text is None:
         return None
     try:
-        return parse_quantity(text, dimension)
+        value = parse_quantity(text, dimension)
     except BalanceError as exc:
         raise click.ClickException(f"{flag}: {exc}") from None
+    if not value > 0:
+        raise click.ClickException(f"{flag}: must be greater than zero, got {text!r}")
+    return value
 
 
 _LOAD = click.option("--load", type=click.Choice(["propeller", "constant"]), default="propeller",
@@ -518,6 +521,11 @@ def torque(paths, pressure, bore, inertia, target, load, samples, max_order, uni
     from .gas import read_pressure_csv
     from .torques import TorqueSet, torque as torque_of
 
+    if bore is not None and pressure is None:
+        raise click.UsageError("--bore applies with --pressure only (a [gas] table gives its own bore)")
+    if fmt == "csv" and (inertia is not None or target is not None):
+        raise click.UsageError("the steadiness of --inertia and --target is written by --format "
+                               "table, markdown and json, not csv")
     files = _inputs(paths)
     inputs = files + ([Path(pressure)] if pressure else [])
     _guard([output], inputs)
@@ -525,15 +533,14 @@ def torque(paths, pressure, bore, inertia, target, load, samples, max_order, uni
     bore_m = _quantity_option(bore, "--bore", "length")
     inertia_kgm2 = _quantity_option(inertia, "--inertia", "moment of inertia")
     engines = _load_all(files)
-    curves = {}
+    curve = None
     if pressure is not None:
         with _reported():
-            for cycle in sorted({e.cycle_deg for e in engines}):
-                curves[cycle] = read_pressure_csv(pressure, cycle)
+            # the cycle the file spans; an engine of the other cycle is refused by name
+            curve = read_pressure_csv(pressure, None)
 
     def work(engine):
-        return torque_of(engine, samples, max_order, curves.get(engine.cycle_deg), bore_m,
-                         inertia_kgm2, load, target)
+        return torque_of(engine, samples, max_order, curve, bore_m, inertia_kgm2, load, target)
 
     results = _run_each(engines, "Torques", work)
     scale = Scale.of(True, units)
@@ -570,7 +577,7 @@ def steadiness(torque_file, inertia, speed, load, target, fmt, output):
     _guard([output], [Path(torque_file)])
     inertia_kgm2 = _quantity_option(inertia, "--inertia", "moment of inertia")
     speed_rad_s = _quantity_option(speed, "--speed", "angular speed")
-    with _reported():
+    with _reported(flags={"torque_nm": f"--torque {torque_file}"}):
         angles, values, cycle = read_cycle_csv(torque_file, "torque")
         # an even grid for the integration, the curve linear between the file's points
         grid = np.arange(4096) * cycle / 4096

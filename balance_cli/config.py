@@ -208,7 +208,10 @@ def build(data: dict, path: str = "<config>") -> Engine:
         raise top.error("parts", "give [masses] (lumped point masses) or [parts] (part data), "
                                  "not both")
     if top.has("parts"):
-        parts = _read_parts(_Reader(path, data["parts"], "parts.", _PART_KEYS), rod_length)
+        parts_reader = _Reader(path, data["parts"], "parts.", _PART_KEYS)
+        parts = _read_parts(parts_reader, rod_length)
+        missing_link_keys = [k for k in ("link_mass", "link_cg", "link_inertia")
+                             if not parts_reader.has(k)]
         reciprocating, rotating, knuckle, crank = parts.piston_kg, 0.0, 0.0, parts.crank_kg
     else:
         if not top.has("masses"):
@@ -246,7 +249,8 @@ def build(data: dict, path: str = "<config>") -> Engine:
         cylinders, keys = _grid_cylinders(banks, throws, reciprocating, knuckle, links), {}
 
     if parts is not None:
-        cylinders, rotating = _lumped(path, parts, cylinders, rod_length, len(throws))
+        cylinders, rotating = _lumped(path, parts, cylinders, rod_length, len(throws),
+                                      missing_link_keys)
 
     firing_order = None
     if top.has("firing_order"):
@@ -298,16 +302,16 @@ def _read_parts(reader, rod_length):
     return parts
 
 
-def _lumped(path, parts, cylinders, rod_length, n_throws):
+def _lumped(path, parts, cylinders, rod_length, n_throws, missing_link_keys=()):
     """Lumped masses and rod corrections from part data, Fraeys de Veubeke § 8 (first
     reduction): the piston and the small-end share K·M of a plain or master rod reciprocate,
     its big-end share (1 − K)·M rotates with the pin; a link rod's shares k·m and (1 − k)·m go
     to its piston and its knuckle pin; what the two point masses leave out of each rod's
     rotational inertia stays with the rod as a correction C = J − M·H·(L − H)."""
     links = [c for c in cylinders if c.is_link]
-    if links and parts.link_kg <= 0.0:
-        raise ConfigError(path, "parts.link_mass", "missing for the link rods; give their mass, "
-                                                   "link_cg and link_inertia")
+    if links and missing_link_keys:
+        raise ConfigError(path, f"parts.{missing_link_keys[0]}", "missing for the link rods; give "
+                                                                "their link_mass, link_cg and link_inertia")
     lumped = []
     for c in cylinders:
         if c.is_link:
@@ -340,8 +344,9 @@ def _read_gas(reader):
         intake_pa=reader.quantity("intake_pressure", "pressure", required=False, default=1.0e5),
         crankcase_pa=reader.quantity("crankcase_pressure", "pressure", required=False,
                                      default=101325.0, sign="non-negative"),
+        # n = 1 would make p·Vⁿ⁻¹ constant and the cycle's heat term vanish
         polytropic_exponent=reader.real("polytropic_exponent", required=False, default=1.32,
-                                        low=1.0, high=1.67),
+                                        low=1.01, high=1.67),
         combustion_start_deg=reader.real("combustion_start", required=False, default=-10.0,
                                          low=-90.0, high=90.0, what="a number of degrees"),
         combustion_duration_deg=reader.real("combustion_duration", required=False, default=50.0,

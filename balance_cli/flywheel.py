@@ -159,6 +159,10 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
             raise AnalysisError(f"is invalid: {exc}", name) from None
     if load not in LOADS:
         raise AnalysisError(f"must be one of {', '.join(LOADS)}, got {load!r}", "load")
+    scale = float(np.abs(torque).max())
+    if float(torque.max() - torque.min()) <= 1e-12 * scale:
+        raise AnalysisError("does not vary over the cycle: the speed is constant and the steadiness "
+                            "infinite; give a torque that varies", "torque_nm")
     period = math.radians(period_deg)
     n = len(torque)
     theta = np.arange(n) * period / n
@@ -166,6 +170,8 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
     k = np.fft.fftfreq(n, 1.0 / n) * (2 * math.pi / period)
     mu_rate = np.fft.ifft(np.fft.fft(mu) * 1j * k).real
     mean_torque = float(torque.mean())
+    if abs(mean_torque) <= 1e-12 * scale:
+        mean_torque = 0.0   # rounding: a torque that averages out
     drive, rate, total = _periodic(torque, period), _periodic(mu_rate, period), _periodic(mu, period)
     if load == "propeller":
         if mean_torque <= 0:
@@ -186,6 +192,9 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
         if big_g[-1] > 200:   # e^G would reach the limits of floating point
             raise AnalysisError("is too small for this torque and load: the speed could not "
                                 "settle within the cycle; give a larger one", "inertia_kgm2")
+        if big_g[-1] < 1e-12:   # 1 − e^(−G) lost to rounding
+            raise AnalysisError("is too large for this propeller: its load could not hold the "
+                                "speed within a cycle; give a smaller one", "inertia_kgm2")
         big_f = cumulative_trapezoid(f * np.exp(big_g), fine, initial=0.0)
         start = np.exp(-big_g[-1]) * big_f[-1] / (1 - np.exp(-big_g[-1]))
         u = np.interp(theta, fine, np.exp(-big_g) * (start + big_f))
@@ -241,4 +250,12 @@ def flywheel_for(target, torque_nm, period_deg, speed_rad_s, load="propeller",
         high *= 10
         if high > 1e9:
             raise AnalysisError(f"{target:g} is out of reach with this torque and load", "target")
-    return brentq(excess, low, high, xtol=1e-14, rtol=1e-10)
+    found = brentq(excess, low, high, xtol=1e-14, rtol=1e-10)
+    # below some inertia the engine stops: the root finder then lands on that edge, where the
+    # steadiness jumps past the target instead of meeting it
+    reached = excess(found) + target
+    if abs(reached - target) > 1e-3 * target:
+        raise AnalysisError(f"{target:g} is below the least steadiness this torque and load allow "
+                            f"before the engine stops (about {reached:.4g}, with {found:.4g} kg·m²); "
+                            "ask for more", "target")
+    return found

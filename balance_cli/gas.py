@@ -17,12 +17,13 @@ The clearance volume of each cylinder is its own swept volume over (ε − 1).
 """
 
 import csv
+import os
 from dataclasses import dataclass
 
 import numpy as np
 
 from .errors import ConfigError, UnitError
-from .units import DIMENSIONS, parse_quantity
+from .units import DIMENSIONS, check_finite_range, parse_quantity
 
 __all__ = ["PressureCurve", "read_pressure_csv", "read_cycle_csv", "cycle_pressure"]
 
@@ -86,14 +87,19 @@ def read_cycle_csv(path, quantity, cycle_deg=None):
     ConfigError
         naming the file, the line and the fix
     """
+    if os.path.exists(path) and not os.path.isdir(path) and not os.path.isfile(path):
+        # a FIFO or a device would block or never end: only regular files are read
+        raise ConfigError(path, "", "is not a regular file; give a CSV file")
     try:
-        with open(path, encoding="utf-8", newline="") as handle:
+        with open(path, encoding="utf-8-sig", newline="") as handle:
             rows = list(csv.reader(handle))
     except FileNotFoundError:
         raise ConfigError(path, "", "no such file; check the path") from None
     except IsADirectoryError:
         raise ConfigError(path, "", "is a folder; give a CSV file") from None
-    except (OSError, UnicodeDecodeError) as exc:
+    except UnicodeDecodeError:
+        raise ConfigError(path, "", "is not UTF-8 text; give a CSV file") from None
+    except (OSError, csv.Error) as exc:
         raise ConfigError(path, "", f"cannot read the file ({getattr(exc, 'strerror', None) or exc})") from None
     rows = [(i, row) for i, row in enumerate(rows, 1) if row and any(cell.strip() for cell in row)]
     example = f"angle_deg,{quantity}_{'bar' if quantity == 'pressure' else 'Nm'}"
@@ -101,17 +107,30 @@ def read_cycle_csv(path, quantity, cycle_deg=None):
         raise ConfigError(path, "", f"is empty; give a header {example} and one row per angle")
     line, header = rows[0]
     unit, factor = _column_unit(path, line, header, quantity, example)
+    first = header[0].strip().lower()
+    if first not in ("angle_deg", "angle (deg)", "angle [deg]", "angle"):
+        raise ConfigError(path, f"line {line}", f"the first column is {header[0].strip()!r}; name "
+                                                f"it angle_deg and give crank angles in degrees")
     angles, values = [], []
     for line, row in rows[1:]:
         if len(row) != 2:
-            raise ConfigError(path, f"line {line}", f"has {len(row)} columns; give two: the angle "
+            raise ConfigError(path, f"line {line}", f"has {len(row)} column{'' if len(row) == 1 else 's'}; give two: the angle "
                                                     f"in degrees and the {quantity}")
         try:
             angle, value = float(row[0]), float(row[1])
         except ValueError:
-            raise ConfigError(path, f"line {line}", f"cannot read {row!r} as two numbers") from None
+            raise ConfigError(path, f"line {line}", f"cannot read {row!r} as two numbers; write "
+                                                    "them with a decimal point (12.5, not 12,5) "
+                                                    "and separate the columns by a comma") from None
         if not np.isfinite(angle) or not np.isfinite(value):
             raise ConfigError(path, f"line {line}", "holds a number that is not finite")
+        if abs(angle) > 2 * 720.0:
+            raise ConfigError(path, f"line {line}", f"angle {angle:g}° is beyond two cycles; give "
+                                                    "crank angles in degrees over one cycle")
+        try:
+            check_finite_range(value * factor, quantity, f"{value:g} {unit}", smallest=False)
+        except UnitError as exc:
+            raise ConfigError(path, f"line {line}", str(exc)) from None
         if quantity == "pressure" and value < 0:
             raise ConfigError(path, f"line {line}", f"pressure {value:g} {unit} is negative; give "
                                                     "absolute pressures")

@@ -111,9 +111,11 @@ def _destination(target):
             raise OutputError(f"cannot write {shown!r}: {_reason(exc)}") from None
     else:
         real = Path(os.path.realpath(path))
-    if real.exists() and not os.access(real, os.W_OK):
-        # renaming over it would replace a file its owner made read-only
-        raise OutputError(f"cannot write {shown!r}: Permission denied")
+    if real.is_file() and (not os.access(real, os.W_OK) or not real.stat().st_mode & 0o222):
+        # renaming over it would replace a file its owner made read-only (root's access() says
+        # yes to every file: the mode bits say what its owner meant)
+        raise OutputError(f"cannot write {shown!r}: the file is read-only; make it writable or "
+                          "write elsewhere")
     return real
 
 

@@ -19,6 +19,7 @@ exact for the band-limited motion; a four-stroke's torques repeat every 720°, s
 are multiples of ½.
 """
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from functools import cached_property
@@ -417,8 +418,11 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
                                 f"{engine.cycle}-stroke ({engine.cycle_deg:g}°)", "pressure")
         bore_m = bore_m if bore_m is not None else (engine.gas.bore_m if engine.gas else None)
         if bore_m is None:
-            raise AnalysisError("is given without a bore; give bore_m or a [gas] table with a bore",
-                                "pressure")
+            raise AnalysisError("is missing for the pressure curve: give the bore, or a [gas] "
+                                "table with one", "bore_m")
+    elif bore_m is not None:
+        raise AnalysisError("applies to a pressure curve only; give the pressure too (a [gas] "
+                            "table has its own bore)", "bore_m")
     elif engine.gas is not None:
         bore_m = engine.gas.bore_m
     omega = engine.speed_rad_s
@@ -465,13 +469,21 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
         if gas is None:
             raise AnalysisError("needs a gas torque to drive the engine: give a pressure curve "
                                 "or a [gas] table", "inertia_kgm2" if inertia_kgm2 else "target")
+        if load == "propeller" and not gas.mean > 0:
+            raise AnalysisError(f"needs an engine that drives its propeller, but the gas torque's "
+                                f"mean is {gas.mean:.4g} N·m (a motored cycle?); give the [gas] "
+                                "table an imep", "inertia_kgm2" if inertia_kgm2 else "target")
         drive = dict(torque_nm=gas.curve, period_deg=engine.cycle_deg, speed_rad_s=omega,
                      load=load, reduced_mass_kgm2=np.tile(mu.real, turns))
         if target is not None:
             flywheel = flywheel_for(target, **drive)
-        flywheel_or_none = 1e-12 if flywheel is None else max(flywheel, 1e-12)
-        speed = steadiness(inertia_kgm2=inertia_kgm2 if inertia_kgm2 is not None else
-                           flywheel_or_none, **drive)
+        if inertia_kgm2 is not None:
+            speed = steadiness(inertia_kgm2=inertia_kgm2, **drive)
+        else:
+            # the speed with the flywheel found; with none needed, the moving parts' own
+            # inertia alone (a vanishing flywheel: the integration needs a positive one)
+            speed = steadiness(inertia_kgm2=max(flywheel, 1e-12), **drive)
+            speed = dataclasses.replace(speed, inertia_kgm2=flywheel)
     return TorqueResult(engine, samples, ReducedMass(np.degrees(angles), mu.real), series(inertia),
                         series(tilting), series(-total + np.tile(tilting, turns), tile=False), gas,
                         series(total, tile=False), tuple(pin_results), main, max_order, speed,

@@ -96,7 +96,8 @@ def parse_quantity(text, dimension):
     if unit not in factors:
         for other, table in DIMENSIONS.items():
             if unit in table:
-                raise UnitError(f"{text!r} is a {other}, but a {dimension} is needed "
+                raise UnitError(f"{text!r} is {_article(other)} {other}, but {_article(dimension)} "
+                                f"{dimension} is needed "
                                 f"(units: {_units_of(dimension)})")
         raise UnitError(f"unknown unit {written!r} in {text!r} (units: {_units_of(dimension)})")
     value = number * factors[unit]
@@ -112,6 +113,14 @@ def _spelling(unit):
     return re.sub(r"\*+", "*", unit)
 
 
+def _article(word):
+    return "an" if word[:1] in "aeiou" else "a"
+
+
+def _plural(dimension):
+    return "moments of inertia" if dimension == "moment of inertia" else dimension + "s"
+
+
 def check_finite_range(value, dimension, shown=None, smallest=True):
     """Raise UnitError unless ``value`` (SI) is finite and zero or within :data:`LIMITS`
     (with ``smallest`` False, any magnitude up to the largest)."""
@@ -121,7 +130,7 @@ def check_finite_range(value, dimension, shown=None, smallest=True):
     if not math.isfinite(value):
         raise UnitError(f'{shown} is not a finite number; give a value such as "{_EXAMPLES[dimension]}"')
     if value and not low <= abs(value) <= high:
-        raise UnitError(f"{shown} is outside the {dimension}s balance accepts: "
+        raise UnitError(f"{shown} is outside the {_plural(dimension)} balance accepts: "
                         f"{low / factor:g} to {high / factor:g} {unit}")
 
 

@@ -71,7 +71,7 @@ CONFIG_CASES = [
     ("speed-nan", replaced('"3000 rpm"', '"nan rpm"'), "speed: cannot read 'nan rpm'"),
     ("speed-inf", replaced('"3000 rpm"', '"inf rpm"'), "speed: cannot read 'inf rpm'"),
     ("speed-overflow", replaced('"3000 rpm"', '"1e400 rpm"'), "is not a finite number"),
-    ("speed-length", replaced('"3000 rpm"', '"3000 mm"'), "is a length, but a angular speed"),
+    ("speed-length", replaced('"3000 rpm"', '"3000 mm"'), "is a length, but an angular speed"),
     ("speed-number", replaced('"3000 rpm"', "3000"), "speed: expected a string with a unit"),
     ("crank-overflow", replaced('"40 mm"', '"1e400 mm"'), "crank_radius: '1e400 mm' is not a finite"),
     ("crank-mass", replaced('"40 mm"', '"40 kg"'), "crank_radius: '40 kg' is a mass"),
@@ -472,7 +472,18 @@ def test_a_read_only_output_file_is_not_replaced(shared_folder):
     before = snapshot(shared_folder)
     outcome = as_ordinary_user(["compare", config, "-o", locked])
     check_user_refused(outcome, "cannot write", before, shared_folder)
-    assert "Permission denied" in outcome["stderr"]
+    assert "read-only" in outcome["stderr"]
+
+
+def test_a_read_only_output_file_is_not_replaced_even_by_root(tmp_path):
+    """access() grants root everything; the mode bits still say the owner meant it read-only."""
+    config = twin(tmp_path)
+    locked = tmp_path / "out.txt"
+    locked.write_text("keep me")
+    locked.chmod(0o444)
+    before = snapshot(tmp_path)
+    check_refused(invoke("compare", config, "-o", locked), 1, "the file is read-only", before,
+                  tmp_path)
 
 
 def test_a_fifo_named_like_a_configuration_is_refused_not_waited_for(tmp_path):

@@ -4,6 +4,7 @@ import csv
 import io
 import json
 import math
+import os
 
 import numpy as np
 import pytest
@@ -127,7 +128,16 @@ def test_steadiness_command(tmp_path):
     ("angle_deg,torque_furlong\n" + "".join(f"{a},1\n" for a in range(0, 360, 10)), "unknown unit 'furlong'"),
     ("angle_deg,torque_Nm\n" + "".join(f"{a},1\n" for a in range(0, 200, 10)), "cover 190°, not one 360° cycle"),
     ("angle_deg,torque_Nm,x\n0,1,2\n", "the header must name two columns"),
-    ("angle_deg,torque_Nm\n0,1\n10\n", "line 3: has 1 columns"),
+    ("angle_deg,torque_Nm\n0,1\n10\n", "line 3: has 1 column; give two"),
+    ("angle_deg,torque_Nm\n" + "".join(f"{a},{1e300 if a == 30 else 1}\n" for a in range(0, 360, 10)),
+     "line 5: 1e+300 Nm is outside the torques balance accepts"),
+    ("time_ms,torque_Nm\n" + "".join(f"{a},1\n" for a in range(0, 360, 10)),
+     "the first column is 'time_ms'; name it angle_deg"),
+    ("angle_deg,torque_Nm\n0,\"32,5\"\n", "with a decimal point (12.5, not 12,5)"),
+    ("angle_deg,torque_Nm\n" + "".join(f"{a},100\n" for a in range(0, 360, 10)),
+     "does not vary over the cycle"),
+    ("angle_deg,torque_Nm\n" + "".join(f"{a},{100 if a < 180 else -100}\n" for a in range(0, 360, 10)),
+     "has a mean of 0 N·m: a propeller absorbs only a positive mean torque"),
     ("angle_deg,torque_Nm\n0,one\n", "line 2: cannot read"),
     ("", "is empty"),
 ])
@@ -143,7 +153,9 @@ def test_bad_torque_files(tmp_path, content, words):
     ("angle_deg,pressure_bar\n" + "".join(f"{a},{-1 if a == 40 else 5}\n" for a in range(0, 720, 10)),
      "line 6: pressure -1 bar is negative"),
     ("angle_deg,pressure_bar\n" + "".join(f"{a},5\n" for a in range(0, 360, 10)),
-     "not one 720° cycle"),
+     "--pressure covers 360°, but 'In-line 4, car proportions' is a 4-stroke (720°)"),
+    ("angle_deg,pressure_bar\n" + "".join(f"{a},{1e200 if a == 30 else 5}\n" for a in range(0, 720, 10)),
+     "line 5: 1e+200 bar is outside the pressures balance accepts"),
     ("angle_deg,pressure_psx\n0,1\n", "unknown unit 'psx'"),
 ])
 def test_bad_pressure_files(tmp_path, content, words):
@@ -198,3 +210,50 @@ def test_torque_with_gas_and_a_flywheel(tmp_path):
     # no gas: a steadiness cannot be asked for
     result = invoke("torque", CONFIGS / "inline-4-car.toml", "--inertia", "0.15 kg*m^2")
     assert result.exit_code == 1 and "--inertia needs a gas torque to drive the engine" in result.stderr
+
+
+def test_a_fifo_is_not_read_as_a_pressure_or_torque_file(tmp_path):
+    fifo = tmp_path / "p.csv"
+    os.mkfifo(fifo)
+    for args in (("torque", CONFIGS / "inline-4-car.toml", "--pressure", fifo, "--bore", "86 mm"),
+                 ("steadiness", "--torque", fifo, "--inertia", "1 kg*m^2", "--speed", "1000 rpm")):
+        result = invoke(*args)
+        assert result.exit_code == 1 and "is not a regular file" in result.stderr
+
+
+@pytest.mark.parametrize("args, code, words", [
+    (("--bore", "86 mm"), 2, "--bore applies with --pressure only"),
+    (("--inertia", "1 kg*m^2", "--format", "csv"), 2, "not csv"),
+    (("--inertia", "0 kg*m^2"), 1, "--inertia: must be greater than zero, got '0 kg*m^2'"),
+])
+def test_torque_options_that_cannot_apply(args, code, words):
+    result = invoke("torque", CONFIGS / "abc-dragonfly.toml", *args)
+    assert result.exit_code == code and words in result.stderr and "Traceback" not in result.output
+
+
+def test_a_target_below_the_least_steadiness_is_refused_not_met_at_the_stall():
+    """Below some inertia the engine stops; the steadiness just above that edge is the least
+    there is, and a lower target cannot be met (it used to return the edge)."""
+    curve = sinusoid(mean=80.0, spread=400.0)
+    least = steadiness(curve, 720.0, 0.05, OMEGA, "constant").factor
+    with pytest.raises(AnalysisError, match="below the least steadiness"):
+        flywheel_for(0.6, curve, 720.0, OMEGA, "constant")
+    found = flywheel_for(2 * least, curve, 720.0, OMEGA, "constant")
+    assert_allclose(steadiness(curve, 720.0, found, OMEGA, "constant").factor, 2 * least, rtol=1e-6)
+
+
+def test_a_motored_cycle_cannot_drive_a_propeller(tmp_path):
+    text = (CONFIGS / "abc-dragonfly.toml").read_text(encoding="utf-8").replace('imep = "9 bar"\n', "")
+    config = tmp_path / "motored.toml"
+    config.write_text(text, encoding="utf-8")
+    result = invoke("torque", config, "--inertia", "3 kg*m^2")
+    assert result.exit_code == 1
+    assert "--inertia needs an engine that drives its propeller" in result.stderr
+    assert "(a motored cycle?)" in result.stderr
+
+
+def test_a_target_that_needs_no_flywheel_says_so():
+    result = invoke("torque", CONFIGS / "abc-dragonfly.toml", "--target", "0.8")
+    assert result.exit_code == 0, result.output
+    assert "The target steadiness needs no flywheel." in result.stdout
+    assert "With no flywheel (the moving parts' own inertia)" in result.stdout

@@ -215,3 +215,33 @@ def test_show_prints_the_parts_and_the_rod_inertias_they_leave_out():
     assert "piston 2972 g; rod 10540 g, centre of gravity 41.3 mm from the big end" in result.output
     assert f"master rods C = J − M·H·(L − H) = {master:g} kg·m²" in result.output
     assert f"link rods c = j − m·h·(l − h) = {link:g} kg·m²" in result.output
+
+
+@pytest.mark.parametrize("old, new, key", [
+    ('link_cg = "138.5 mm"                # h, from the knuckle pin\n', "", "parts.link_cg"),
+    ('link_inertia = "0.0141264 kg*m^2"   # j\n', "", "parts.link_inertia"),
+])
+def test_link_rods_need_all_their_part_data(tmp_path, old, new, key):
+    """A link rod's centre of gravity or inertia left out would silently be zero (15 % off μ)."""
+    text = (CONFIGS / "bramo-323.toml").read_text(encoding="utf-8")
+    assert old in text
+    path = tmp_path / "e.toml"
+    path.write_text(text.replace(old, new), encoding="utf-8")
+    with pytest.raises(balance.ConfigError, match=f"{key}: missing for the link rods"):
+        balance.load(path)
+
+
+def test_an_isothermal_exponent_is_refused(tmp_path):
+    text = (CONFIGS / "abc-dragonfly.toml").read_text(encoding="utf-8")
+    path = tmp_path / "e.toml"
+    path.write_text(text.replace('imep = "9 bar"', 'imep = "9 bar"\npolytropic_exponent = 1.0'),
+                    encoding="utf-8")
+    with pytest.raises(balance.ConfigError, match="gas.polytropic_exponent"):
+        balance.load(path)
+
+
+def test_a_bore_without_a_pressure_is_refused_by_the_library():
+    engine = balance.load(CONFIGS / "bramo-323.toml")
+    with pytest.raises(balance.AnalysisError, match="applies to a pressure curve only") as caught:
+        torque(engine, bore_m=0.154)
+    assert caught.value.parameter == "bore_m"

@@ -92,8 +92,8 @@ def torque_csv(results, scale):
             if series is None:
                 continue
             record = series.to_dict()
-            writer.writerow([r.engine.name, r.engine.config_path, name, 0,
-                             _value(scale.moment(series.mean)), "", "", ""])
+            writer.writerow([r.engine.name, r.engine.config_path, name, 0.0,
+                             _value(scale.moment(record["mean_Nm"])), "", "", ""])
             for order in record["orders"]:
                 writer.writerow([r.engine.name, r.engine.config_path, name, order["order"]]
                                 + [_value(scale.moment(order[f"{key}_Nm"]))
