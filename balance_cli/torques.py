@@ -479,7 +479,7 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
             flywheel = flywheel_for(target, **drive)
         if inertia_kgm2 is not None:
             speed = steadiness(inertia_kgm2=inertia_kgm2, **drive)
-        else:
+        elif flywheel is not None:
             # the speed with the flywheel found; with none needed, the moving parts' own
             # inertia alone (a vanishing flywheel: the integration needs a positive one)
             speed = steadiness(inertia_kgm2=max(flywheel, 1e-12), **drive)
