@@ -177,16 +177,9 @@ def check_assembly(engine):
     somewhere in a revolution. Every analysis calls it first (it is cached).
 
     A plain rod's crank pin sweeps the whole width ±r across its axis, so it reaches exactly
-    when the rod is longer than r + |pin offset|: checked in closed form, at the worst angle.
-    A link rod's knuckle pin follows no such simple path: checked on a 0.1° grid.
+    when the rod is longer than r + |pin offset|, which the Engine checks when it is built. A
+    link rod's knuckle pin follows no such simple path: checked here on a 0.1° grid.
     """
-    r, offset = engine.crank_radius_m, engine.pin_offset_m
-    for cyl in engine.cylinders:
-        if not cyl.is_link and engine.rod_length_m <= r + abs(offset):
-            # the pin farthest from the offset axis: r·sin(θ + phase − axis) = −r·sign(offset)
-            worst = (-0.5 if offset >= 0 else 0.5) * np.pi
-            _cannot_reach(cyl, worst - engine.throws[cyl.throw].phase_rad
-                          + engine.bank_angles_rad[cyl.bank])
     links = [c.number for c in engine.cylinders if c.is_link]
     if links:
         linkage(engine, engine_angles(_CHECK_SAMPLES), links)
