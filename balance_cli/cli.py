@@ -20,14 +20,14 @@ from .config import find_configs, load
 from .counterweight import Balances, check_options, counterweights
 from .errors import BalanceError, ConfigError, FiringError, ModelError, SamplingWarning
 from .firing import firing_sequence
-from .output import check_folder, refuse_inputs, to_json, write_text
+from .output import check_folder, refuse_inputs, to_json, write_folder, write_text
 from .regress import RegressError, baseline_configs, check_baseline, check_rtol, compared_like
 from .regress import regression as regression_of
-from .report.csvfile import balance_csv, compare_csv, torque_csv
+from .report.csvfile import balance_csv, compare_csv, search_csv, torque_csv
 from .report.display import Scale
 from .report.junit import junit_xml
 from .report.tables import (balance_tables, compare_tables, list_table, regression_tables,
-                            show_table, steadiness_text, torque_tables)
+                            search_tables, show_table, steadiness_text, torque_tables)
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings
 from .units import parse_quantity
 
@@ -661,6 +661,121 @@ def regress(baseline, paths, rtol, update, fmt, output):
         return
     if regression.moved:
         raise SystemExit(1)
+
+
+_SEARCH_FLAGS = {"objective": "--objective", "top": "--top", "step_deg": "--step",
+                 "workers": "--workers", "scheduler": "--scheduler", "limit": "--limit",
+                 "restarts": "--restarts", "template": "the template"}
+
+
+def _search_progress():
+    """A progress bar on standard error when it is a terminal: (callback, bar or None)."""
+    if not sys.stderr.isatty():
+        return None, contextlib.nullcontext()
+    state: dict = {}
+
+    def update(done, total):
+        if "bar" not in state:
+            state["bar"] = click.progressbar(length=total, label="Searching", file=sys.stderr)
+            state["bar"].__enter__()
+        state["bar"].update(done - state["bar"].pos)
+
+    @contextlib.contextmanager
+    def closing():
+        try:
+            yield
+        finally:
+            if "bar" in state:
+                state["bar"].__exit__(None, None, None)
+
+    return update, closing()
+
+
+@main.command()
+@click.argument("template_path", metavar="TEMPLATE.toml")
+@click.option("--objective", default=None, metavar="TERMS",
+              help="What to minimise: coefficients such as M1,M2 or F2:4,M1,M2 (F force, M moment, "
+                   "the order, + or - for the forward or backward part only, :weight, default "
+                   "1). Default: every F_k and M_k up to --max-order.")
+@click.option("--top", default=10, show_default=True, type=int, metavar="K",
+              help="How many arrangements to list (ties ranked by firing order).")
+@click.option("--allow-uneven", is_flag=True,
+              help="Search every crank on a grid of --step degrees, firing evenly or not.")
+@click.option("--step", "step", default=None, type=float, metavar="DEG",
+              help="The phase grid of --allow-uneven, in degrees (a divisor of 360 such as 30).")
+@click.option("--workers", default=None, type=int, metavar="N",
+              help="Processes to use [default: every core].")
+@click.option("--scheduler", default=None, metavar="ADDRESS",
+              help="Run on a Dask distributed cluster (tcp://host:8786) instead; needs "
+                   "pip install 'balance[cluster]'.")
+@click.option("--heuristic", is_flag=True,
+              help="A local search from random cranks for templates too large to enumerate: "
+                   "the best found, NOT proved optimal.")
+@click.option("--restarts", default=200, show_default=True, type=int, metavar="N",
+              help="Random starts of --heuristic.")
+@click.option("--seed", default=0, show_default=True, type=int, help="Random seed of --heuristic.")
+@click.option("--limit", default=None, type=int, metavar="N",
+              help="Refuse an exhaustive search evaluating more cranks than this "
+                   "[default: 2e9, about a minute on two cores].")
+@_SAMPLES
+@_MAX_ORDER
+@_FORMAT
+@_OUTPUT
+@click.option("--write", "write_dir", default=None, metavar="DIR",
+              help="Also write each listed arrangement as a complete configuration "
+                   "(DIR/arrangement-01.toml, ...), for compare, counterweight and plot.")
+def search(template_path, objective, top, allow_uneven, step, workers, scheduler, heuristic,
+           restarts, seed, limit, samples, max_order, fmt, output, write_dir):
+    """Find the crank arrangements and firing orders that leave the least of what you ask.
+
+    TEMPLATE.toml is an ordinary configuration whose [[throws]] give only z (no phase) and
+    which has no firing_order. Throw 1 stays at 0°; arrangements that are the same engine run
+    the other way round count once; mirror images (the crank read from the other end) balance
+    alike and are listed, but evaluated once. Without --heuristic the result is exhaustive:
+    nothing scores better than what is listed.
+    """
+    from .config import arrangement_toml, load_template
+    from .search import DEFAULT_LIMIT
+    from .search import search as search_of
+
+    with _reported():
+        refuse_inputs([output], [Path(template_path)])
+        template, data = load_template(template_path)
+        if write_dir is not None:
+            check_folder(write_dir)
+    _settings(samples, max_order)
+    callback, bar = _search_progress()
+    with _reported(template, _SEARCH_FLAGS), bar:
+        result = search_of(template, objective, top=top, allow_uneven=allow_uneven,
+                           step_deg=step, workers=workers, scheduler=scheduler,
+                           heuristic=heuristic, restarts=restarts, seed=seed,
+                           limit=DEFAULT_LIMIT if limit is None else limit, samples=samples,
+                           max_order=max_order, progress=callback)
+    if fmt == "json":
+        text = to_json(result.to_dict())
+    elif fmt == "csv":
+        text = search_csv(result)
+    else:
+        with _reported():
+            comparison = (comparison_of([a.result for a in result.arrangements])
+                          if result.arrangements else None)
+        text = search_tables(result, comparison, Scale.of(False, "N"), fmt)
+    if write_dir is not None:
+        def fill(folder):
+            names = []
+            for a in result.arrangements:
+                name = f"arrangement-{a.rank:02d}.toml"
+                header = (f"written by balance search from {template_path}, rank {a.rank} of "
+                          f"{len(result.arrangements)}\nobjective "
+                          f"{', '.join(str(t) for t in result.objective)}: score {a.score:.6g}"
+                          + ("" if result.exhaustive else " (heuristic, not proved optimal)"))
+                (folder / name).write_text(arrangement_toml(
+                    data, a.phases_deg, a.firing_order, a.engine.name, header), encoding="utf-8")
+                names.append(name)
+            return names
+        with _reported():
+            write_folder(write_dir, fill)
+    _write(output, text)
 
 
 if __name__ == "__main__":  # pragma: no cover

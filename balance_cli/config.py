@@ -22,7 +22,7 @@ from .kinematics import check_assembly
 from .model import FRAMES, Cylinder, Engine, GasCycle, Parts, Throw
 from .units import parse_quantity
 
-__all__ = ["load", "loads", "build", "find_configs", "load_many"]
+__all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template", "arrangement_toml"]
 
 _TOP_KEYS = {
     "name", "source", "cycle", "speed", "crank_radius", "rod_length", "pin_offset", "frame",
@@ -157,7 +157,25 @@ def load(path: "str | os.PathLike[str]") -> Engine:
     ConfigError
         naming the file, the key and the fix
     """
-    path = Path(path)
+    return loads(_read_text(Path(path)), name=str(path))
+
+
+def load_template(path: "str | os.PathLike[str]") -> tuple[Engine, dict]:
+    """Read a search template: a configuration whose ``[[throws]]`` give only ``z`` and which
+    has no ``firing_order`` (``balance search`` chooses both). Returns the engine, every throw
+    at phase 0, and the parsed TOML (for :func:`arrangement_toml`).
+
+    Raises
+    ------
+    ConfigError
+        naming the file, the key and the fix
+    """
+    text = _read_text(Path(path))
+    data = _parse(text, str(path))
+    return build(data, str(path), template=True), data
+
+
+def _read_text(path: Path) -> str:
     try:
         # a FIFO or a device would block or never end: only regular files are configurations
         if path.exists() and not path.is_file() and not path.is_dir():
@@ -178,21 +196,27 @@ def load(path: "str | os.PathLike[str]") -> Engine:
     except UnicodeDecodeError as exc:
         raise ConfigError(path, "", f"not UTF-8 text ({exc.reason} at byte {exc.start}); save it "
                                     "as UTF-8") from None
-    return loads(text, name=str(path))
+    return text
+
+
+def _parse(text, name):
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ConfigError(name, "", f"not valid TOML: {exc}; fix the syntax there") from None
 
 
 def loads(text: str, name: str = "<string>") -> Engine:
     """The engine described by TOML ``text``; ``name`` stands for the file in messages and
     becomes the engine's ``config_path``."""
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise ConfigError(name, "", f"not valid TOML: {exc}; fix the syntax there") from None
-    return build(data, name)
+    return build(_parse(text, name), name)
 
 
-def build(data: dict, path: str = "<config>") -> Engine:
-    """Build an engine from parsed TOML ``data`` (a dict), naming ``path`` in errors."""
+def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
+    """Build an engine from parsed TOML ``data`` (a dict), naming ``path`` in errors.
+
+    A ``template`` (for ``balance search``) gives no throw phases and no firing order: its
+    throws are built at phase 0."""
     top = _Reader(path, data, "", _TOP_KEYS)
     name = top.string("name")
     source = top.string("source", required=False, default="")
@@ -229,7 +253,10 @@ def build(data: dict, path: str = "<config>") -> Engine:
     throws = []
     for i, table in enumerate(top.tables("throws"), 1):
         throw = _Reader(path, table, f"throws[{i}].", _THROW_KEYS)
-        throws.append(Throw(math.radians(throw.degrees("phase")),
+        if template and throw.has("phase"):
+            raise throw.error("phase", "a search template gives only z for each throw (the "
+                                       "search chooses the phases); remove phase")
+        throws.append(Throw(0.0 if template else math.radians(throw.degrees("phase")),
                             throw.quantity("z", "length", required=False, default=0.0, sign="any")))
 
     links = None
@@ -253,6 +280,9 @@ def build(data: dict, path: str = "<config>") -> Engine:
                                       missing_link_keys)
 
     firing_order = None
+    if template and top.has("firing_order"):
+        raise top.error("firing_order", "a search template has no firing order (the search "
+                                        "chooses it); remove firing_order")
     if top.has("firing_order"):
         raw = data["firing_order"]
         if not isinstance(raw, list) or not all(
@@ -488,3 +518,43 @@ def find_configs(paths: "Iterable[str | os.PathLike[str]]") -> list[Path]:
 def load_many(paths: "Iterable[str | os.PathLike[str]]") -> list[Engine]:
     """Load every configuration under ``paths`` (see :func:`find_configs`)."""
     return [load(f) for f in find_configs(paths)]
+
+
+def arrangement_toml(template: dict, phases_deg: "Iterable[float]", firing_order: "Iterable[int]",
+                     name: str, header: str = "") -> str:
+    """A complete configuration: the parsed ``template`` (see :func:`load_template`) with these
+    throw phases (degrees, throw by throw), firing order and name; ``header`` becomes comment
+    lines at the top. The template's comments are not kept (TOML readers drop them)."""
+    data = dict(template)
+    data["name"] = name
+    phases = list(phases_deg)
+    data["throws"] = [{"phase": p, **{k: v for k, v in t.items() if k != "phase"}}
+                      for t, p in zip(template["throws"], phases, strict=True)]
+    data["firing_order"] = list(firing_order)
+    lines = [f"# {line}".rstrip() for line in header.splitlines()]
+    tables = []
+    for key, value in data.items():
+        if isinstance(value, dict):
+            tables.append((key, [value], False))
+        elif isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+            tables.append((key, value, True))
+        else:
+            lines.append(f"{key} = {_toml_value(value)}")
+    for key, rows, array in tables:
+        for row in rows:
+            lines += ["", f"[[{key}]]" if array else f"[{key}]"]
+            lines += [f"{k} = {_toml_value(v)}" for k, v in row.items()]
+    return "\n".join(lines) + "\n"
+
+
+def _toml_value(value):
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        return repr(value)
+    if isinstance(value, str):
+        escaped = value.replace("\\", "\\\\").replace('"', '\\"')
+        return f'"{escaped}"'
+    if isinstance(value, list):
+        return "[" + ", ".join(_toml_value(v) for v in value) + "]"
+    raise TypeError(f"no TOML form for {value!r}")

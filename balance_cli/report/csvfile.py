@@ -5,7 +5,7 @@ import io
 
 from .tables import WEIGHT_COLUMNS, order_values
 
-__all__ = ["compare_csv", "balance_csv", "torque_csv"]
+__all__ = ["compare_csv", "balance_csv", "torque_csv", "search_csv"]
 
 #: key suffix of an SI record -> unit written in the CSV
 _UNITS = (("_kgm", "kg·m"), ("_kg", "kg"), ("_deg", "deg"), ("_m", "m"))
@@ -99,4 +99,22 @@ def torque_csv(results, scale):
                                 + [_value(scale.moment(order[f"{key}_Nm"]))
                                    for key in ("cos", "sin", "amplitude")]
                                 + [_value(order["phase_deg"])])
+    return buffer.getvalue()
+
+
+def search_csv(result):
+    """One row per listed arrangement: rank, score, phases, firing order and intervals, and
+    every coefficient (full precision)."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    names = list(result.arrangements[0].coefficients) if result.arrangements else []
+    writer.writerow(["rank", "score", "phases_deg", "firing_order", "intervals_deg", "mirror_of"]
+                    + names)
+    for a in result.arrangements:
+        record = a.to_dict()
+        writer.writerow([a.rank, _value(a.score), " ".join(repr(float(p)) for p in a.phases_deg),
+                         "-".join(map(str, record["firing"]["order"])),
+                         " ".join(repr(float(x)) for x in record["firing"]["intervals_deg"]),
+                         "" if a.mirror_of is None else a.mirror_of]
+                        + [_value(a.coefficients[n]) for n in names])
     return buffer.getvalue()

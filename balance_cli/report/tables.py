@@ -14,7 +14,8 @@ from .display import markdown_text, plain_text
 
 __all__ = ["render", "compare_parts", "compare_tables", "order_rows", "order_headers",
            "balance_tables", "balance_summary", "list_table", "show_table", "regression_tables",
-           "torque_tables", "torque_summary", "steadiness_text"]
+           "torque_tables", "torque_summary", "steadiness_text", "search_tables", "search_summary",
+           "search_rows"]
 
 _TABLEFMT = {"table": "simple", "markdown": "pipe"}
 
@@ -431,3 +432,62 @@ def steadiness_text(speed, flywheel_kgm2=None):
     elif flywheel_kgm2 is not None:
         text += f" The target steadiness needs a flywheel of {flywheel_kgm2:.5g} kg·m²."
     return text
+
+
+def _coefficient_names(result):
+    names = []
+    for t in result.objective:
+        if t.name not in names:
+            names.append(t.name)
+    return names[:10]
+
+
+def search_summary(result):
+    """What was searched, how much, and whether the list is proved: a few lines of text."""
+    what = "even firing" if result.even else f"every crank on a {result.step_deg:g}° grid"
+    proof = ("exhaustive: no arrangement scores better than those listed" if result.exhaustive
+             else "HEURISTIC local search: the best found, NOT proved optimal")
+    lines = [
+        f"{result.template.name} ({result.template.config_path or 'template'}): {what}; "
+        f"objective {', '.join(str(t) for t in result.objective)}",
+        f"{result.arrangements_total:,} arrangements with throw 1 at 0° "
+        f"({result.firing_orders_per_crank} firing order{'s' if result.firing_orders_per_crank != 1 else ''} "
+        f"a crank), {result.arrangements_distinct:,} distinct; {result.evaluated:,} cranks "
+        f"evaluated, {result.pruned:,} skipped by bound ({result.elapsed_s:.2f} s, "
+        f"{result.workers} worker{'s' if result.workers != 1 else ''})",
+        f"Symmetries: {'; '.join(result.symmetries)}",
+        proof + ("; more arrangements tie at the last score than were kept, so the tie-break "
+                 "by firing order saw only the first found" if result.ties_truncated else ""),
+    ]
+    return lines
+
+
+def search_rows(result):
+    """Ranking rows: rank, score, phases, firing order, intervals, coefficients, mirror."""
+    names = _coefficient_names(result)
+    rows = []
+    for a in result.arrangements:
+        record = a.to_dict()
+        rows.append([str(a.rank), f"{a.score:.4f}",
+                     " ".join(f"{round_degrees(p, 3):g}" for p in a.phases_deg),
+                     "-".join(map(str, record["firing"]["order"])),
+                     _intervals(record["firing"])]
+                    + [f"{a.coefficients[n]:.4f}" for n in names]
+                    + ["" if a.mirror_of is None else str(a.mirror_of)])
+    headers = (["Rank", "Score", "Phases (°)", "Firing order", "Intervals (°)"] + names
+               + ["Mirror of"])
+    return headers, rows
+
+
+def search_tables(result, comparison, scale, fmt):
+    """The search as text or Markdown: what was done, the ranking, then the order table of
+    every listed arrangement as ``compare`` prints it."""
+    heading = "#### " if fmt == "markdown" else ""
+    safe = _safe(fmt)
+    out = [safe(line) + ("  " if fmt == "markdown" else "") for line in search_summary(result)]
+    headers, rows = search_rows(result)
+    out += ["", f"{heading}Best arrangements (coefficients: F_k in one throw's largest order-k "
+            "force, M_k in that force × the mean throw pitch)", "", render(headers, rows, fmt), ""]
+    if comparison is not None:
+        out.append(compare_tables(comparison, scale, fmt))
+    return "\n".join(out)
