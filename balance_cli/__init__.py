@@ -17,7 +17,8 @@ Every error is a :class:`BalanceError`. SI units and radians throughout; see the
 __version__ = "0.1.0"
 
 from .analysis import Comparison, EngineResult, analyse, compare  # noqa: E402
-from .config import find_configs, load, load_many, loads  # noqa: E402
+from .config import find_configs, load, load_many, load_template, loads  # noqa: E402
+from .cranksearch import Arrangement, SearchResult, Term, search  # noqa: E402
 from .counterweight import (Antivibrateur, Balance, Counterweight, Plane, Shaft,  # noqa: E402
                             counterweights)
 from .errors import (AnalysisError, BalanceError, ConfigError, CounterweightError,  # noqa: E402
@@ -35,7 +36,8 @@ __all__ = [
     "regression", "plot", "Regression", "Moved",
     "torque", "TorqueResult", "TorqueSet", "Series", "ReducedMass", "PinForce",
     "steadiness", "flywheel_for", "Steadiness", "read_pressure_csv", "read_cycle_csv",
-    "PressureCurve", "Parts", "GasCycle",
+    "PressureCurve", "Parts", "GasCycle", "search", "load_template", "SearchResult",
+    "Arrangement", "Term",
     "Engine", "Cylinder", "Throw", "EngineResult", "Comparison", "Shaking", "OrderComponents",
     "Firing", "Balance", "Counterweight", "Plane", "Shaft", "Antivibrateur",
     "BalanceError", "ConfigError", "ModelError", "FiringError", "AnalysisError",

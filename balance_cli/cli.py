@@ -735,8 +735,8 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
     nothing scores better than what is listed.
     """
     from .config import arrangement_toml, load_template
-    from .search import DEFAULT_LIMIT
-    from .search import search as search_of
+    from .cranksearch import DEFAULT_LIMIT
+    from .cranksearch import search as search_of
 
     with _reported():
         refuse_inputs([output], [Path(template_path)])
@@ -770,7 +770,8 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
                           f"{', '.join(str(t) for t in result.objective)}: score {a.score:.6g}"
                           + ("" if result.exhaustive else " (heuristic, not proved optimal)"))
                 (folder / name).write_text(arrangement_toml(
-                    data, a.phases_deg, a.firing_order, a.engine.name, header), encoding="utf-8")
+                    data, a.phases_deg, a.engine.firing_order, a.engine.name, header),
+                    encoding="utf-8")
                 names.append(name)
             return names
         with _reported():

@@ -520,17 +520,21 @@ def load_many(paths: "Iterable[str | os.PathLike[str]]") -> list[Engine]:
     return [load(f) for f in find_configs(paths)]
 
 
-def arrangement_toml(template: dict, phases_deg: "Iterable[float]", firing_order: "Iterable[int]",
+def arrangement_toml(template: dict, phases_deg: "Iterable[float]",
+                     firing_order: "Iterable[int] | None",
                      name: str, header: str = "") -> str:
     """A complete configuration: the parsed ``template`` (see :func:`load_template`) with these
-    throw phases (degrees, throw by throw), firing order and name; ``header`` becomes comment
+    throw phases (degrees, throw by throw), firing order (None: none, the most uniform one the
+    crank allows is then found) and name; ``header`` becomes comment
     lines at the top. The template's comments are not kept (TOML readers drop them)."""
     data = dict(template)
     data["name"] = name
     phases = list(phases_deg)
     data["throws"] = [{"phase": p, **{k: v for k, v in t.items() if k != "phase"}}
                       for t, p in zip(template["throws"], phases, strict=True)]
-    data["firing_order"] = list(firing_order)
+    data.pop("firing_order", None)
+    if firing_order is not None:
+        data["firing_order"] = list(firing_order)
     lines = [f"# {line}".rstrip() for line in header.splitlines()]
     tables = []
     for key, value in data.items():

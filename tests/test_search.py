@@ -11,7 +11,7 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.errors import AnalysisError, ConfigError
-from balance_cli.search import parse_objective, search
+from balance_cli.cranksearch import parse_objective, search
 
 sys.path.insert(0, str(Path(__file__).parent / "reference"))
 import arrangements as reference  # noqa: E402  (independent: numpy only, no balance_cli)
@@ -109,3 +109,236 @@ def test_the_best_of_seven_cylinders_equal_the_brute_force(objective):
     atol = 1e-7 if objective is None else 1e-9
     assert_allclose([a.score for a in found.arrangements], [r[2] for r in ranked[:10]],
                     rtol=RTOL_COEFFICIENT, atol=atol)
+
+
+# --- what the issue asks to reproduce -------------------------------------------------
+
+def template(name):
+    return balance.load_template(TEMPLATES / name)[0]
+
+
+def orders_of(found):
+    return [a.firing_order for a in found.arrangements]
+
+
+def test_inline_six_two_stroke_primary_and_secondary_couples():
+    """Combustion Engines 2009 no. 4: 60 distinct arrangements; M1 = 0 leaves 1-5-3-4-2-6 with
+    M2 = 2√3; M2 = 0 leaves 1-4-2-6-3-5 with M1 = 2√3 (the reference finds 2 and 4 of them)."""
+    best_m1 = search(template("inline-6-2stroke.toml"), "M1", top=2)
+    assert (best_m1.arrangements_total, best_m1.arrangements_distinct) == (120, 60)
+    assert [a.score for a in best_m1.arrangements] == [0.0, 0.0]
+    assert set(orders_of(best_m1)) == {(1, 5, 3, 4, 2, 6), (1, 4, 5, 2, 3, 6)}
+    mine = next(a for a in best_m1.arrangements if a.firing_order == (1, 5, 3, 4, 2, 6))
+    assert_allclose(mine.coefficients["M2"], 2 * math.sqrt(3), rtol=RTOL_COEFFICIENT)
+    best_m2 = search(template("inline-6-2stroke.toml"), "M2", top=5)
+    assert [a.score for a in best_m2.arrangements][:4] == [0.0] * 4
+    assert best_m2.arrangements[4].score > 0.1
+    other = next(a for a in best_m2.arrangements if a.firing_order == (1, 4, 2, 6, 3, 5))
+    assert_allclose(other.coefficients["M1"], 2 * math.sqrt(3), rtol=RTOL_COEFFICIENT)
+
+
+def test_inline_six_four_stroke_standard_crank_leaves_nothing_of_orders_one_and_two():
+    """The standard crank with its firing orders (1-5-3-6-2-4 is 1-4-2-6-3-5 run the other
+    way round) and its mirror image: the four the reference finds, and nothing else."""
+    found = search(template("inline-6-4stroke.toml"), "F1,F2,M1,M2", top=5)
+    assert found.firing_orders_per_crank == 4
+    assert (found.arrangements_total, found.arrangements_distinct) == (120, 60)
+    zero = {a.firing_order for a in found.arrangements if a.score == 0.0}
+    assert zero == {(1, 2, 3, 6, 5, 4), (1, 2, 4, 6, 5, 3), (1, 3, 2, 6, 4, 5), (1, 4, 2, 6, 3, 5)}
+    standard = next(a for a in found.arrangements if a.firing_order == (1, 4, 2, 6, 3, 5))
+    assert standard.phases_deg in ((0, 120, 240, 240, 120, 0), (0, 240, 120, 120, 240, 0))
+
+
+def test_inline_four_keeps_four_units_of_secondary_force_whatever_the_crank():
+    found = search(template("inline-4-4stroke.toml"), "F2", top=3)
+    assert found.arrangements_distinct == 3
+    assert_allclose([a.coefficients["F2"] for a in found.arrangements], [4.0] * 3,
+                    rtol=RTOL_COEFFICIENT)
+
+
+def test_inline_three_couples_are_root_three():
+    found = search(template("inline-3-2stroke.toml"), "M1,M2", top=1)
+    assert found.arrangements_distinct == 1
+    values = found.arrangements[0].coefficients
+    assert_allclose([values["M1"], values["M2"]], [math.sqrt(3)] * 2, rtol=RTOL_COEFFICIENT)
+
+
+SPEED = 2000 * 2 * math.pi / 60
+NAKANISHI = [
+    # template, force orders that vanish, his crank, primary couple (his eq. 2 and eq. 5)
+    ("nakanishi-v12-90-2stroke.toml", 5, (0, 120, 240, 60, 300, 180), 480, 60,
+     2 * math.sqrt(3) * 0.15 * (2.84 + 3.12 + 2.0) * 0.08 * SPEED**2),
+    ("nakanishi-w12-60-2stroke.toml", 3, (0, 90, 270, 180), 18, 3,
+     math.sqrt(10) * 0.15 * (1.5 * 2.84 + 4.68 + 2.0) * 0.08 * SPEED**2),
+]
+
+
+@pytest.mark.parametrize("name,orders,crank,cranks,free,couple", NAKANISHI)
+def test_nakanishi_cranks_are_among_the_force_free_ones(name, orders, crank, cranks, free, couple):
+    """Every even-firing crank without force in orders 1–5 (V12) or 1–3 (W12), as many as the
+    reference counts (120 and 6 cranks: 60 and 3 arrangements run either way), his among
+    them with his primary couple (exact: only A₁ = 1 enters the primary)."""
+    objective = ",".join(f"F{k}" for k in range(1, orders + 1))
+    found = search(template(name), objective, top=free + 1)
+    assert found.arrangements_total == cranks
+    assert [a.score for a in found.arrangements[:free]] == [0.0] * free
+    assert found.arrangements[free].score > 0.1
+    reversed_crank = tuple((-p) % 360 for p in crank)
+    his = [a for a in found.arrangements if a.phases_deg in (crank, reversed_crank)]
+    assert len(his) == 1
+    assert_allclose(his[0].result.order(1).moment_forward.__abs__()
+                    + abs(his[0].result.order(1).moment_backward), couple, rtol=1e-9)
+
+
+@pytest.mark.parametrize("name,objective,crank", [
+    ("nakanishi-v12-90-2stroke.toml", "F1,F2,F3,F4,F5,M2,M4,M1:0.01", (0, 120, 240, 60, 300, 180)),
+    ("nakanishi-w12-60-2stroke.toml", "F1,F2,F3,M2,M1:0.01", (0, 90, 270, 180)),
+])
+def test_nakanishi_crank_is_the_best_without_low_forces_and_secondary_couple(name, objective,
+                                                                          crank):
+    """Asking also for no secondary (and fourth) couple and the least primary couple, his
+    crank comes first: what he found by hand is proved optimal."""
+    found = search(template(name), objective, top=2)
+    assert found.exhaustive
+    assert found.arrangements[0].phases_deg in (crank, tuple((-p) % 360 for p in crank))
+    assert found.arrangements[1].score > found.arrangements[0].score + 0.01
+
+
+# --- the machinery --------------------------------------------------------------------
+
+def test_processes_and_a_dask_cluster_find_what_one_process_finds():
+    distributed = pytest.importorskip("distributed")
+    eight = template("inline-6-2stroke.toml")
+    eight = inline_template(8, 2)
+    one = search(eight, "M1,M2,M4", top=12, workers=1)
+    two = search(eight, "M1,M2,M4", top=12, workers=2)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=":0") as cluster:
+        remote = search(eight, "M1,M2,M4", top=12, scheduler=cluster.scheduler_address)
+    for other in (two, remote):
+        assert orders_of(other) == orders_of(one)
+        assert [a.score for a in other.arrangements] == [a.score for a in one.arrangements]
+        assert other.arrangements_distinct == one.arrangements_distinct == math.factorial(7) // 2
+
+
+def test_heuristic_is_labelled_and_finds_the_best_of_a_small_engine():
+    eight = inline_template(8, 2)
+    exact = search(eight, "M1,M2", top=1, workers=1)
+    guess = search(eight, "M1,M2", top=1, heuristic=True, restarts=40, seed=1)
+    assert (guess.exhaustive, guess.method) == (False, "heuristic")
+    assert_allclose(guess.arrangements[0].score, exact.arrangements[0].score, atol=1e-9)
+
+
+def test_uneven_cranks_on_a_grid_match_a_brute_force():
+    """In-line 4 four-stroke, phases on a 90° grid: 4³ = 64 cranks, (64 + 8 self-reversed)/2
+    = 36 distinct; the best scores as the in-line formula gives them for every crank."""
+    found = search(inline_template(4, 4), "F1,F2,M1,M2", top=36, allow_uneven=True,
+                   step_deg=90.0, workers=1)
+    assert (found.arrangements_total, found.arrangements_distinct) == (64, 36)
+    z = np.arange(4) - 1.5
+    scores = set()
+    for tail in np.ndindex(4, 4, 4):
+        beta = np.radians([0.0] + [90.0 * t for t in tail])
+        f = [abs(np.exp(1j * k * beta).sum()) for k in (1, 2)]
+        m = [abs((z * np.exp(1j * k * beta)).sum()) for k in (1, 2)]
+        scores.add(round(sum(f) + sum(m), 6))
+    assert sorted({round(a.score, 6) for a in found.arrangements}) == sorted(scores)
+    assert not all(a.result.firing.uniform for a in found.arrangements)
+
+
+@pytest.mark.parametrize("text,key", [
+    ('[[throws]]\nphase = 0\nz = "0 mm"\n[[throws]]\nz = "1 m"\n', "throws[1].phase"),
+    ('firing_order = [1, 2]\n[[throws]]\nz = "0 mm"\n[[throws]]\nz = "1 m"\n', "firing_order"),
+])
+def test_a_template_gives_no_phases_and_no_firing_order(tmp_path, text, key):
+    path = tmp_path / "t.toml"
+    path.write_text('name = "x"\ncycle = 2\nspeed = "1000 rpm"\ncrank_radius = "50 mm"\n'
+                    'rod_length = "200 mm"\n[masses]\nreciprocating = "1 kg"\n[[banks]]\n'
+                    'angle = 0\n' + text)
+    with pytest.raises(ConfigError, match=key.replace("[", r"\[").replace("]", r"\]")):
+        balance.load_template(path)
+
+
+@pytest.mark.parametrize("kwargs,parameter", [
+    ({"objective": "X1"}, "objective"), ({"objective": "F9"}, "objective"),
+    ({"objective": "F2:-1"}, "objective"), ({"objective": "M1,M1"}, "objective"),
+    ({"top": 0}, "top"), ({"workers": 0}, "workers"), ({"step_deg": 30.0}, "step_deg"),
+    ({"allow_uneven": True}, "step_deg"), ({"allow_uneven": True, "step_deg": 7.0}, "step_deg"),
+    ({"limit": 10}, "limit"),
+])
+def test_bad_search_settings_name_their_parameter(kwargs, parameter):
+    with pytest.raises(AnalysisError) as caught:
+        search(inline_template(6, 2), **kwargs)
+    assert caught.value.parameter == parameter
+
+
+def test_a_rotary_or_a_single_throw_has_nothing_to_arrange():
+    rotary = balance.load(ROOT / "configs/clerget-rotary.toml")
+    with pytest.raises(AnalysisError, match="rotary"):
+        search(rotary)
+    single = balance.load(ROOT / "configs/abc-dragonfly.toml")
+    with pytest.raises(AnalysisError, match="one throw"):
+        search(single)
+
+
+# --- the command ----------------------------------------------------------------------
+
+def invoke(*args):
+    from click.testing import CliRunner
+
+    from balance_cli.cli import main
+
+    return CliRunner().invoke(main, ["search", *map(str, args)])
+
+
+def test_json_document_has_the_documented_keys():
+    import json
+
+    run = invoke(TEMPLATES / "inline-6-2stroke.toml", "--objective", "M1", "--top", "2",
+                 "--format", "json", "--workers", "1")
+    assert run.exit_code == 0, run.output
+    document = json.loads(run.output)
+    for key in ("balance_version", "template", "objective", "arrangements_total",
+                "arrangements_distinct", "evaluated", "exhaustive", "elapsed_s", "results"):
+        assert key in document
+    first = document["results"][0]
+    assert set(first) >= {"rank", "score", "phases_deg", "firing", "coefficients", "orders"}
+    assert set(first["firing"]) >= {"order", "intervals_deg"}
+    assert len(first["orders"]) == 8 and "M1" in first["coefficients"]
+
+
+def test_written_arrangements_are_complete_configurations(tmp_path):
+    """--write: compare reads each file back with the firing order and couples listed."""
+    import json
+
+    out = tmp_path / "best"
+    run = invoke(TEMPLATES / "nakanishi-w12-60-2stroke.toml", "--objective", "F1,F2,F3,M2,M1:0.01",
+                 "--top", "2", "--write", out, "--format", "json", "--workers", "1")
+    assert run.exit_code == 0, run.output
+    listed = json.loads(run.output)["results"]
+    assert sorted(p.name for p in out.iterdir()) == ["arrangement-01.toml", "arrangement-02.toml"]
+    for record in listed:
+        engine = balance.load(out / f"arrangement-{record['rank']:02d}.toml")
+        again = balance.analyse(engine)
+        assert list(again.firing.order) == record["firing"]["order"]
+        assert_allclose(again.order(1).moment_forward.__abs__(),
+                        record["orders"][0]["moment"]["forward_Nm"], rtol=1e-12)
+
+
+@pytest.mark.parametrize("args,words", [
+    (["--objective", "F0"], "--objective"),
+    (["--top", "0"], "--top"),
+    (["--step", "30"], "--step"),
+    (["--allow-uneven"], "--step"),
+    (["--limit", "5"], "--limit"),
+])
+def test_command_errors_are_one_line_naming_the_option(args, words):
+    run = invoke(TEMPLATES / "inline-6-2stroke.toml", *args)
+    assert run.exit_code == 1 and isinstance(run.exception, SystemExit)
+    assert words in run.output and len(run.output.strip().splitlines()) == 1
+
+
+def test_a_configuration_with_phases_is_not_a_template():
+    run = invoke(ROOT / "configs/inline-4-car.toml")
+    assert run.exit_code == 1 and isinstance(run.exception, SystemExit)
+    assert "throws[1].phase" in run.output and "remove phase" in run.output

@@ -1178,9 +1178,8 @@ def _final(template, flat, problem, orbits, shift, terms, top, samples, max_orde
     for (crank, order), (score, position) in members.items():
         phases = _phases(problem, crank)
         engine = _arrangement_engine(template, phases, order, template.name)
-        if order is None:  # uneven: the most uniform order the crank allows
+        if order is None:  # uneven: the most uniform order the crank allows, not written
             order = firing_sequence(engine).order
-            engine = replace(engine, firing_order=order)
         rows.append((round(score / SCORE_TIE), order, crank, phases, engine))
     rows.sort(key=lambda r: (r[0], r[1]))
     listed = []
