@@ -47,7 +47,8 @@ import os
 import re
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 
@@ -119,7 +120,7 @@ def parse_objective(text: str | None, max_order: int = DEFAULT_MAX_ORDER) -> tup
     """
     if text is None or not text.strip():
         return default_objective(max_order)
-    terms = []
+    terms: list[Term] = []
     for item in text.split(","):
         match = _TERM.match(item)
         if not match:
@@ -323,12 +324,13 @@ class _Problem:
     reversal: bool
     mirror: bool
     split: int                    # prefix throws are 1..split−1 (0-based: 1..split-1)
-    prefix_rows: np.ndarray = field(default=None)   # (n_pref, split−1) phase indices
-    prefix_group: np.ndarray = field(default=None)  # (n_pref,) group index
-    prefix_tie: np.ndarray = field(default=None)    # (n_pref,) prefix equals its reversal
-    suffix_rows: list = field(default=None)         # per group: (n_suf, n − split) rows
-    suffix_key: list = field(default=None)          # per group: mirror key (sorted), or None
-    suffix_leader: list = field(default=None)       # per group: suffix ≤ its reversal
+    # filled by _build_tables
+    prefix_rows: Any = None     # (n_pref, split−1) phase indices
+    prefix_group: Any = None    # (n_pref,) group index
+    prefix_tie: Any = None      # (n_pref,) prefix equals its reversal
+    suffix_rows: Any = None     # per group: (n_suf, n − split) rows
+    suffix_key: Any = None      # per group: mirror key (sorted), or None
+    suffix_leader: Any = None   # per group: suffix ≤ its reversal
 
     def crank(self, prefix, suffix):
         return (0,) + tuple(int(p) for p in prefix) + tuple(int(p) for p in suffix)
@@ -724,16 +726,12 @@ def _evaluate(problem, units, top, threshold=math.inf, shared=None):
                         hits = hits[score[hits[:, 0], hits[:, 1]] <= cut + SCORE_TIE]
                     for i, q in hits:
                         qi = cols[q] if tie else q
-                        crank = problem.crank(rows[block[i]], Qs_rows(problem, g, start, qi))
+                        crank = problem.crank(rows[block[i]], problem.suffix_rows[g][start + qi])
                         pool.offer(float(score[i, q]), crank)
                     if shared is not None and pool.threshold < shared.value:
                         with shared.get_lock():
                             shared.value = min(shared.value, pool.threshold)
     return _Chunk(list((s, k) for k, s in pool.best.items()), evaluated, pruned, pool.truncated)
-
-
-def Qs_rows(problem, g, start, q):
-    return problem.suffix_rows[g][start + q]
 
 
 # --- workers --------------------------------------------------------------------------

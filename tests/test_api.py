@@ -29,6 +29,7 @@ def test_the_readme_examples_run_as_written(tmp_path, monkeypatch):
     blocks = readme_python_blocks()
     assert len(blocks) == 2
     (tmp_path / "configs").symlink_to(CONFIGS)
+    (tmp_path / "templates").symlink_to(ROOT / "templates")
     monkeypatch.chdir(tmp_path)
     namespace = {}
     for block in blocks:
