@@ -131,7 +131,7 @@ def parse_objective(text: str | None, max_order: int = DEFAULT_MAX_ORDER) -> tup
         order = int(order)
         if not 1 <= order <= max_order:
             raise AnalysisError(f"term {item.strip()!r} asks for order {order}, but orders 1 to "
-                                f"{max_order} are analysed; raise max_order or drop the term",
+                                f"{max_order} are analysed; raise the highest order or drop the term",
                                 "objective")
         weight = 1.0
         if weight_text is not None:
@@ -406,7 +406,7 @@ def _lattice(template, allow_uneven, step_deg):
     n_cyl = template.n_cylinders
     if allow_uneven:
         if step_deg is None:
-            raise AnalysisError("is needed with allow_uneven: the grid of throw phases to try, "
+            raise AnalysisError("is needed when uneven firing is allowed: the grid of throw phases to try, "
                                 "in degrees (such as 30)", "step_deg")
         P = round(360.0 / step_deg)
         if not (isinstance(step_deg, (int, float)) and step_deg > 0
@@ -416,7 +416,7 @@ def _lattice(template, allow_uneven, step_deg):
         n = len(template.throws)
         return P, 360.0 / P, 0, np.zeros(n), [[] for _ in range(n)]
     if step_deg is not None:
-        raise AnalysisError("applies only with allow_uneven: an even-firing search takes its "
+        raise AnalysisError("applies only when uneven firing is allowed: an even-firing search takes its "
                             "phases from the firing interval", "step_deg")
     if template.cycle == 2 or n_cyl % 2:
         s = 360.0 / n_cyl
@@ -448,7 +448,7 @@ def _lattice(template, allow_uneven, step_deg):
                     f"cylinders {mine[0]} and {c} ride on throw {j + 1} with top dead centres "
                     f"{round_degrees((tdc[c] - tdc[mine[0]]) % 360.0, 3):g}° apart, not a multiple "
                     f"of the {s:g}° firing interval, so no crank fires this template evenly; "
-                    "search with allow_uneven and a phase step", "template")
+                    "allow uneven firing and give a phase step", "template")
             e.append(round(steps) % P)
         base[j] = base_j
         offsets.append(e)
@@ -722,8 +722,11 @@ def _evaluate(problem, units, top, threshold=math.inf, shared=None):
                     evaluated += score.size
                     hits = np.argwhere(score <= pool.threshold + SCORE_TIE)
                     if len(hits) > 4 * (top + 64):
-                        cut = np.partition(score[hits[:, 0], hits[:, 1]], top - 1)[top - 1]
-                        hits = hits[score[hits[:, 0], hits[:, 1]] <= cut + SCORE_TIE]
+                        # a class is met at most four times (its symmetry images), so the
+                        # 4·top-th smallest score is at least the top-th best class's
+                        values = score[hits[:, 0], hits[:, 1]]
+                        cut = np.partition(values, 4 * top - 1)[4 * top - 1]
+                        hits = hits[values <= cut + SCORE_TIE]
                     for i, q in hits:
                         qi = cols[q] if tie else q
                         crank = problem.crank(rows[block[i]], problem.suffix_rows[g][start + qi])
@@ -786,8 +789,8 @@ def _run_cluster(problem, units, top, threshold, scheduler, progress):
     except ImportError:
         raise AnalysisError("needs the optional cluster support: pip install 'balance[cluster]' "
                             "(dask distributed)", "scheduler") from None
-    own = not isinstance(scheduler, str)
-    client = scheduler if own else None
+    given = not isinstance(scheduler, str)  # a caller's Client: theirs to close
+    client = scheduler if given else None
     try:
         if client is None:
             try:
@@ -805,9 +808,9 @@ def _run_cluster(problem, units, top, threshold, scheduler, progress):
             out.append(future.result())
             if progress:
                 progress(sizes[future.key])
-        return out
+        return out, sum(client.nthreads().values())
     finally:
-        if client is not None and not own:
+        if client is not None and not given:
             client.close()
 
 
@@ -1091,9 +1094,9 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     reduction = (2 if reversal else 1) * (2 if problem.mirror else 1)
     if not heuristic and expected // reduction > limit:
         raise AnalysisError(
-            f"an exhaustive search of this template evaluates about {expected // reduction:.3g} "
-            f"cranks, more than the limit of {limit:.3g}; use the heuristic search (not proved "
-            "optimal), a cluster (scheduler), or raise the limit", "limit")
+            f"is {limit:.3g} cranks, but an exhaustive search of this template evaluates about "
+            f"{expected // reduction:.3g}; raise it (about 30 million a second on two cores), or "
+            "use the heuristic search (not proved optimal) or a cluster", "limit")
 
     if heuristic:
         total_work = restarts
@@ -1105,7 +1108,8 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         units_of_work = _work_units(problem)
         tick = _ticker(progress, len(units_of_work))
         if scheduler is not None:
-            chunks = _run_cluster(problem, units_of_work, top, math.inf, scheduler, tick)
+            chunks, workers = _run_cluster(problem, units_of_work, top, math.inf, scheduler,
+                                           tick)
         else:
             chunks = _run_local(problem, units_of_work, top, workers, math.inf, tick)
     truncated = any(c.truncated for c in chunks)
@@ -1121,8 +1125,7 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     arrangements = _final(template, flat, problem, orbits, shift, terms, top, samples,
                           max_order, units, pitch)
     total = (total_cranks or 0) * firing_per_crank
-    distinct = _distinct(template, flat, problem, total, shift) if problem.reversal or reversal \
-        else total
+    distinct = _distinct(flat, problem, total, shift) if reversal else total
     return SearchResult(
         template=template, objective=terms, arrangements=tuple(arrangements),
         arrangements_total=total, arrangements_distinct=distinct,
@@ -1130,8 +1133,8 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         exhaustive=not heuristic, method="heuristic" if heuristic else "exhaustive",
         symmetries=tuple(symmetries), firing_orders_per_crank=firing_per_crank,
         even=not allow_uneven, step_deg=s, ties_truncated=truncated,
-        elapsed_s=time.perf_counter() - started, workers=1 if scheduler is None and workers < 1
-        else workers, max_order=max_order, samples=samples)
+        elapsed_s=time.perf_counter() - started, workers=1 if heuristic else workers,
+        max_order=max_order, samples=samples)
 
 
 def _ticker(progress, total):
@@ -1145,7 +1148,7 @@ def _ticker(progress, total):
     return tick
 
 
-def _distinct(template, flat, problem, total, shift):
+def _distinct(flat, problem, total, shift):
     """Arrangements counted once with their reversal: (total + self-reversed) / 2."""
     P, n = problem.lattice, problem.n_throws
     if P % 2:
