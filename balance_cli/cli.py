@@ -7,6 +7,7 @@ flags, the configuration file) and become one line on standard error with exit s
 
 import contextlib
 import json
+import re
 import sys
 import warnings
 from pathlib import Path
@@ -18,7 +19,8 @@ from . import __version__
 from .analysis import analyse, compare as comparison_of
 from .config import find_configs, load
 from .counterweight import Balances, check_options, counterweights
-from .errors import BalanceError, ConfigError, FiringError, ModelError, SamplingWarning
+from .errors import (BalanceError, ConfigError, FiringError, ModelError, OutputError,
+                     SamplingWarning)
 from .firing import firing_sequence
 from .output import check_folder, refuse_inputs, to_json, write_folder, write_text
 from .regress import RegressError, baseline_configs, check_baseline, check_rtol, compared_like
@@ -665,7 +667,29 @@ def regress(baseline, paths, rtol, update, fmt, output):
 
 _SEARCH_FLAGS = {"objective": "--objective", "top": "--top", "step_deg": "--step",
                  "workers": "--workers", "scheduler": "--scheduler", "limit": "--limit",
-                 "restarts": "--restarts", "template": "the template"}
+                 "restarts": "--restarts", "seed": "--seed", "template": "the template"}
+#: library words inside the search's messages, in the command line's terms
+_SEARCH_WORDS = {"allow_uneven": "--allow-uneven", "step_deg": "--step", "max_order": "--max-order",
+                 "heuristic search": "heuristic search (--heuristic)",
+                 "cluster scheduler": "cluster (--scheduler)"}
+
+
+@contextlib.contextmanager
+def _search_reported(engine):
+    try:
+        yield
+    except BalanceError as exc:
+        text = _message(exc, engine, _SEARCH_FLAGS)
+        for word, flag in _SEARCH_WORDS.items():
+            text = re.sub(rf"\b{re.escape(word)}\b", flag, text)
+        raise click.ClickException(text) from None
+
+
+def _same_path(a, b):
+    try:
+        return Path(a).resolve() == Path(b).resolve()
+    except OSError:
+        return False
 
 
 def _search_progress():
@@ -742,10 +766,16 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
         refuse_inputs([output], [Path(template_path)])
         template, data = load_template(template_path)
         if write_dir is not None:
-            check_folder(write_dir)
+            check_folder(write_dir, "--write")
+            # the files --write may write must replace neither the template nor --output
+            planned = [Path(write_dir) / f"arrangement-{k:02d}.toml" for k in range(1, max(top, 1) + 1)]
+            refuse_inputs(planned, [Path(template_path)])
+            if output not in (None, "-") and any(_same_path(output, p) for p in planned):
+                raise OutputError(f"{output!r} is one of the files --write writes; write the "
+                                  "table somewhere else")
     _settings(samples, max_order)
     callback, bar = _search_progress()
-    with _reported(template, _SEARCH_FLAGS), bar:
+    with _search_reported(template), bar:
         result = search_of(template, objective, top=top, allow_uneven=allow_uneven,
                            step_deg=step, workers=workers, scheduler=scheduler,
                            heuristic=heuristic, restarts=restarts, seed=seed,
@@ -760,23 +790,29 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
             comparison = (comparison_of([a.result for a in result.arrangements])
                           if result.arrangements else None)
         text = search_tables(result, comparison, Scale.of(False, "N"), fmt)
-    if write_dir is not None:
-        def fill(folder):
-            names = []
-            for a in result.arrangements:
-                name = f"arrangement-{a.rank:02d}.toml"
-                header = (f"written by balance search from {template_path}, rank {a.rank} of "
-                          f"{len(result.arrangements)}\nobjective "
-                          f"{', '.join(str(t) for t in result.objective)}: score {a.score:.6g}"
-                          + ("" if result.exhaustive else " (heuristic, not proved optimal)"))
-                (folder / name).write_text(arrangement_toml(
-                    data, a.phases_deg, a.engine.firing_order, a.engine.name, header),
-                    encoding="utf-8")
-                names.append(name)
-            return names
-        with _reported():
-            write_folder(write_dir, fill)
-    _write(output, text)
+    if write_dir is None:
+        _write(output, text)
+        return
+
+    def fill(folder):
+        # --output is written last inside the folder's transaction: if it fails, the folder
+        # is not written either
+        names = []
+        for a in result.arrangements:
+            name = f"arrangement-{a.rank:02d}.toml"
+            header = (f"written by balance search from {template_path}, rank {a.rank} of "
+                      f"{len(result.arrangements)}\nobjective "
+                      f"{', '.join(str(t) for t in result.objective)}: score {a.score:.6g}"
+                      + ("" if result.exhaustive else " (heuristic, not proved optimal)"))
+            (folder / name).write_text(arrangement_toml(
+                data, a.phases_deg, a.engine.firing_order, a.engine.name, header),
+                encoding="utf-8")
+            names.append(name)
+        write_text(output, text)
+        return names
+
+    with _reported():
+        write_folder(write_dir, fill)
 
 
 if __name__ == "__main__":  # pragma: no cover

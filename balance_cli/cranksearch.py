@@ -56,7 +56,7 @@ from .analysis import DOCUMENT_VERSION, EngineResult, analyse
 from .errors import AnalysisError
 from .firing import firing_sequence, tdc_angles
 from .kinematics import check_assembly
-from .model import Engine, Throw
+from .model import MAX_NAME_LENGTH, Engine, Throw
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings, shaking_forces
 from .tolerances import UNIFORM_FIRING_DEG
 from .units import round_degrees
@@ -75,6 +75,8 @@ SCORE_TIE = 1e-9
 SYMMETRY_TOLERANCE = 1e-9
 #: more arrangements than this tying at the K-th best score are not all kept
 TIE_CAP = 100_000
+#: more processes than this are refused (each costs memory and start-up)
+MAX_WORKERS = 1024
 #: a block of (prefix × suffix × channel) values evaluated at once
 _BLOCK = 1 << 21
 _TERM = re.compile(r"^\s*([FM])(\d+)([+-]?)\s*(?::\s*(.+?))?\s*$")
@@ -118,8 +120,11 @@ def parse_objective(text: str | None, max_order: int = DEFAULT_MAX_ORDER) -> tup
     AnalysisError
         naming ``objective`` (or ``max_order`` for an order above it)
     """
-    if text is None or not text.strip():
+    if text is None:
         return default_objective(max_order)
+    if not isinstance(text, str) or not text.strip():
+        raise AnalysisError("is empty; give terms such as M1,M2 (or leave it out for every F_k "
+                            "and M_k)", "objective")
     terms: list[Term] = []
     for item in text.split(","):
         match = _TERM.match(item)
@@ -129,10 +134,12 @@ def parse_objective(text: str | None, max_order: int = DEFAULT_MAX_ORDER) -> tup
                                 "part only, :weight)", "objective")
         kind, order, sign, weight_text = match.groups()
         order = int(order)
-        if not 1 <= order <= max_order:
+        if order < 1:
+            raise AnalysisError(f"term {item.strip()!r}: orders start at 1", "objective")
+        if order > max_order:
             raise AnalysisError(f"term {item.strip()!r} asks for order {order}, but orders 1 to "
-                                f"{max_order} are analysed; raise the highest order or drop the term",
-                                "objective")
+                                f"{max_order} are analysed; set max_order to {order} or drop the "
+                                "term", "objective")
         weight = 1.0
         if weight_text is not None:
             try:
@@ -192,8 +199,8 @@ class Arrangement:
         every F_k and M_k (k = 1..max_order) by name, and the objective's forward/backward
         parts (``F1+``, ``M2-``) where it names them
     mirror_of : int or None
-        the rank of the arrangement this one is the mirror image of (read from the other end),
-        when that one is listed above it
+        the rank of the first arrangement listed above this one whose crank is this crank's
+        mirror image (read from the other end), when it is another crank
     """
 
     rank: int
@@ -379,9 +386,8 @@ def _pitch(template):
     z = sorted(t.z_m for t in template.throws)
     pitch = (z[-1] - z[0]) / (len(z) - 1)
     if pitch <= 0.0:
-        raise AnalysisError("every throw of the template sits at the same axial position, so "
-                            "moments have no pitch to refer to; give each throw its z",
-                            "template")
+        raise AnalysisError("has every throw at the same axial position, so moments have no "
+                            "pitch to refer to; give each throw its z", "template")
     return pitch
 
 
@@ -406,17 +412,18 @@ def _lattice(template, allow_uneven, step_deg):
     n_cyl = template.n_cylinders
     if allow_uneven:
         if step_deg is None:
-            raise AnalysisError("is needed when uneven firing is allowed: the grid of throw phases to try, "
+            raise AnalysisError("is needed with allow_uneven: the grid of throw phases to try, "
                                 "in degrees (such as 30)", "step_deg")
-        P = round(360.0 / step_deg)
-        if not (isinstance(step_deg, (int, float)) and step_deg > 0
-                and abs(P * step_deg - 360.0) < 1e-9 and P >= 2):
-            raise AnalysisError(f"must divide 360° into two or more equal steps (such as 30 or "
-                                f"45), got {step_deg!r}", "step_deg")
+        ok = (isinstance(step_deg, (int, float)) and not isinstance(step_deg, bool)
+              and math.isfinite(step_deg) and 0.1 - 1e-12 <= step_deg <= 180.0)
+        P = round(360.0 / step_deg) if ok else 0
+        if not ok or abs(P * step_deg - 360.0) > 1e-9:
+            raise AnalysisError(f"must divide 360° into equal steps of 0.1° to 180° (such as 30 "
+                                f"or 45), got {step_deg!r}", "step_deg")
         n = len(template.throws)
         return P, 360.0 / P, 0, np.zeros(n), [[] for _ in range(n)]
     if step_deg is not None:
-        raise AnalysisError("applies only when uneven firing is allowed: an even-firing search takes its "
+        raise AnalysisError("applies only with allow_uneven: an even-firing search takes its "
                             "phases from the firing interval", "step_deg")
     if template.cycle == 2 or n_cyl % 2:
         s = 360.0 / n_cyl
@@ -445,10 +452,10 @@ def _lattice(template, allow_uneven, step_deg):
             steps = (r - base_j) / s
             if abs(steps - round(steps)) * s > UNIFORM_FIRING_DEG / 2:
                 raise AnalysisError(
-                    f"cylinders {mine[0]} and {c} ride on throw {j + 1} with top dead centres "
+                    f"cannot fire evenly: cylinders {mine[0]} and {c} ride on throw {j + 1} with top dead centres "
                     f"{round_degrees((tdc[c] - tdc[mine[0]]) % 360.0, 3):g}° apart, not a multiple "
-                    f"of the {s:g}° firing interval, so no crank fires this template evenly; "
-                    "allow uneven firing and give a phase step", "template")
+                    f"of the {s:g}° firing interval; "
+                    "search with allow_uneven and a step_deg", "template")
             e.append(round(steps) % P)
         base[j] = base_j
         offsets.append(e)
@@ -774,13 +781,17 @@ def _run_local(problem, units, top, workers, threshold, progress):
     context = multiprocessing.get_context("fork" if "fork" in methods else None)
     shared = context.Value("d", threshold)
     out = []
-    with context.Pool(workers, _init_worker, (problem, top, shared)) as pool:
-        pieces = _chunks(units, 16 * workers)
+    pieces = _chunks(units, 16 * workers)
+    with context.Pool(min(workers, len(pieces)), _init_worker, (problem, top, shared)) as pool:
         for piece, chunk in zip(pieces, pool.imap(_worker_chunk, pieces)):
             out.append(chunk)
             if progress:
                 progress(len(piece))
     return out
+
+
+#: seconds to wait for a Dask scheduler to answer
+_CONNECT_S = 10
 
 
 def _run_cluster(problem, units, top, threshold, scheduler, progress):
@@ -794,10 +805,13 @@ def _run_cluster(problem, units, top, threshold, scheduler, progress):
     try:
         if client is None:
             try:
-                client = Client(scheduler, timeout="20s")
-            except OSError as exc:
-                raise AnalysisError(f"cannot reach the Dask scheduler at {scheduler!r} ({exc}); "
-                                    "check the address (tcp://host:8786)", "scheduler") from None
+                client = Client(scheduler, timeout=f"{_CONNECT_S}s")
+            except (OSError, TimeoutError) as exc:
+                raise AnalysisError(f"{scheduler!r} did not answer within {_CONNECT_S} s ({exc}); "
+                                    "check that the scheduler runs there", "scheduler") from None
+            except (ValueError, TypeError):
+                raise AnalysisError(f"{scheduler!r} is not a scheduler address such as "
+                                    "tcp://host:8786", "scheduler") from None
         remote = client.scatter(problem, broadcast=True)
         pieces = _chunks(units, 16 * max(1, sum(client.nthreads().values())))
         futures = [client.submit(_cluster_chunk, remote, piece, top, threshold, pure=False)
@@ -1041,28 +1055,32 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     """
     started = time.perf_counter()
     check_settings(samples, max_order)
-    for name, value, low in (("top", top, 1), ("restarts", restarts, 1), ("limit", limit, 1)):
-        if isinstance(value, bool) or not isinstance(value, int) or value < low:
-            raise AnalysisError(f"must be a whole number of at least {low}, got {value!r}", name)
     if workers is None:
         workers = os.cpu_count() or 1
-    if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
-        raise AnalysisError(f"must be a whole number of at least 1, got {workers!r}", "workers")
+    for name, value, low, high in (("top", top, 1, 100_000), ("restarts", restarts, 1, 1_000_000),
+                                   ("limit", limit, 1, 10**15), ("seed", seed, 0, 2**63 - 1),
+                                   ("workers", workers, 1, MAX_WORKERS)):
+        if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high:
+            raise AnalysisError(f"must be a whole number from {low:,} to {high:,}, got {value!r}",
+                                name)
+    if heuristic and scheduler is not None:
+        raise AnalysisError("applies to the exhaustive search; the heuristic runs here, in one "
+                            "process: leave out scheduler or heuristic", "scheduler")
     terms = (parse_objective(objective, max_order) if objective is None or isinstance(objective, str)
              else tuple(objective))
     if not terms or not all(isinstance(t, Term) and 1 <= t.order <= max_order for t in terms):
         raise AnalysisError(f"must name coefficients of orders 1 to {max_order}", "objective")
     if template.is_rotary:
         raise AnalysisError("is a rotary engine: its crank does not turn, so there are no throw "
-                            "phases to arrange", "template")
+                            "phases to arrange; search a fixed-frame template", "template")
     n = len(template.throws)
     if n < 2:
         raise AnalysisError("has one throw: with throw 1 at 0° there is nothing to arrange; give "
                             "the template two or more [[throws]]", "template")
     if any(not any(c.throw == j for c in template.cylinders) for j in range(n)):
         empty = next(j for j in range(n) if not any(c.throw == j for c in template.cylinders))
-        raise AnalysisError(f"throw {empty + 1} carries no cylinder; remove it or give it one",
-                            "template")
+        raise AnalysisError(f"has no cylinder on throw {empty + 1}; remove the throw or give "
+                            "it a cylinder", "template")
     flat = replace(template, throws=tuple(Throw(0.0, t.z_m) for t in template.throws),
                    firing_order=None)
     check_assembly(flat)
@@ -1093,10 +1111,7 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     expected = cranks if cranks is not None else P ** (n - 1)
     reduction = (2 if reversal else 1) * (2 if problem.mirror else 1)
     if not heuristic and expected // reduction > limit:
-        raise AnalysisError(
-            f"is {limit:.3g} cranks, but an exhaustive search of this template evaluates about "
-            f"{expected // reduction:.3g}; raise it (about 30 million a second on two cores), or "
-            "use the heuristic search (not proved optimal) or a cluster", "limit")
+        _refuse_limit(limit, expected // reduction, "about ")
 
     if heuristic:
         total_work = restarts
@@ -1105,6 +1120,9 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         total_cranks = cranks
     else:
         total_cranks = _build_tables(problem)
+        planned = _planned(problem)
+        if planned > limit:
+            _refuse_limit(limit, planned, "")
         units_of_work = _work_units(problem)
         tick = _ticker(progress, len(units_of_work))
         if scheduler is not None:
@@ -1135,6 +1153,33 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         even=not allow_uneven, step_deg=s, ties_truncated=truncated,
         elapsed_s=time.perf_counter() - started, workers=1 if heuristic else workers,
         max_order=max_order, samples=samples)
+
+
+def _refuse_limit(limit, cranks, about):
+    raise AnalysisError(
+        f"is {limit:,} (cranks to evaluate), but an exhaustive search of this template evaluates "
+        f"{about}{cranks:,}; raise it (about 30 million a second on two cores), or use the "
+        "heuristic search (not proved optimal) or a cluster scheduler", "limit")
+
+
+def _planned(problem):
+    """Cranks the enumeration will score before any bound: the prefixes times the suffixes the
+    symmetry conditions leave each of them."""
+    count = 0
+    rows, groups, ties = problem.prefix_rows, problem.prefix_group, problem.prefix_tie
+    second = rows[:, 0] if rows.shape[1] else np.zeros(len(rows), int)
+    for g in np.unique(groups):
+        mine = groups == g
+        key, leader = problem.suffix_key[g], problem.suffix_leader[g]
+        n = len(problem.suffix_rows[g])
+        start = np.searchsorted(key, second[mine]) if key is not None else np.zeros(mine.sum(), int)
+        plain = n - start
+        if ties[mine].any():
+            after = np.cumsum(leader[::-1])[::-1]  # leaders from each position on
+            tied = np.where(start < n, after[np.minimum(start, n - 1)], 0)
+            plain = np.where(ties[mine], tied, plain)
+        count += int(plain.sum())
+    return count
 
 
 def _ticker(progress, total):
@@ -1189,16 +1234,16 @@ def _final(template, flat, problem, orbits, shift, terms, top, samples, max_orde
         result = analyse(engine, samples, max_order)
         values = _coefficients_of(result, units, pitch, terms)
         score = float(sum(t.weight * values[t.name] for t in terms))
-        name = f"{template.name}, arrangement {rank}"
-        if len(name) > 120:
-            name = name[:120]
+        suffix = f", arrangement {rank}"
+        name = template.name[:MAX_NAME_LENGTH - len(suffix)].rstrip() + suffix
         engine = replace(result.engine, name=name)
         result = replace(result, engine=engine)
         mirror_of = None
+        own = _reversal_class(problem, crank)
         if problem.mirror:
             partner = _reversal_class(problem, problem.images(crank)[1])
-            mirror_of = rank_of.get(partner)
-        rank_of.setdefault(_reversal_class(problem, crank), rank)
+            mirror_of = rank_of.get(partner) if partner != own else None
+        rank_of.setdefault(own, rank)
         listed.append(Arrangement(rank, score, phases, result, values, mirror_of))
     return listed
 

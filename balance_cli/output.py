@@ -165,16 +165,16 @@ def write_text(target, text):
     write_bytes(target, lambda handle: handle.write(text.encode("utf-8")))
 
 
-def check_folder(target):
-    """Raise OutputError unless ``target`` is a folder or can become one."""
+def check_folder(target, what="the report"):
+    """Raise OutputError unless ``target`` is a folder or can become one (for ``what``)."""
     shown = str(target)
     if shown in ("", "-"):
-        raise OutputError(f"{shown!r} is not a folder name; give a folder for the report")
+        raise OutputError(f"{shown!r} is not a folder name; give a folder for {what}")
     try:
         if os.path.lexists(target) and not Path(target).is_dir():
             if Path(target).is_symlink() and not Path(target).exists():
                 os.stat(target)   # says why the link leads nowhere (a loop, say)
-            raise OutputError(f"{shown!r} is not a folder; give a folder for the report")
+            raise OutputError(f"{shown!r} is not a folder; give a folder for {what}")
     except OSError as exc:
         raise OutputError(f"cannot write into {shown!r}: {_reason(exc)}") from None
 

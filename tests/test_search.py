@@ -342,3 +342,68 @@ def test_a_configuration_with_phases_is_not_a_template():
     run = invoke(ROOT / "configs/inline-4-car.toml")
     assert run.exit_code == 1 and isinstance(run.exception, SystemExit)
     assert "throws[1].phase" in run.output and "remove phase" in run.output
+
+
+# --- found by a hostile review ----------------------------------------------------------
+
+@pytest.mark.parametrize("args,words", [
+    (["--allow-uneven", "--step", "0"], "--step must divide 360°"),
+    (["--allow-uneven", "--step", "nan"], "--step must divide 360°"),
+    (["--allow-uneven", "--step", "1e-9"], "--step must divide 360°"),
+    (["--scheduler", "garbage"], "not a scheduler address"),
+    (["--scheduler", "foo://x:1"], "not a scheduler address"),
+    (["--heuristic", "--seed", "-1"], "--seed must be a whole number from 0"),
+    (["--objective", ""], "--objective is empty"),
+    (["--objective", " "], "--objective is empty"),
+    (["--objective", "F0"], "orders start at 1"),
+    (["--objective", "F9"], "set --max-order to 9"),
+    (["--heuristic", "--scheduler", "tcp://127.0.0.1:1"], "--scheduler applies to the exhaustive"),
+    (["--workers", "100000"], "--workers must be a whole number from 1 to 1,024"),
+    (["--heuristic", "--restarts", "100000000"], "--restarts must be"),
+    (["--step", "30"], "--step applies only with --allow-uneven"),
+])
+def test_hostile_options_are_one_line(args, words):
+    run = invoke(TEMPLATES / "inline-6-2stroke.toml", *args)
+    assert run.exit_code == 1 and isinstance(run.exception, SystemExit), run.output
+    assert words in run.output and len(run.output.strip().splitlines()) == 1
+
+
+def test_the_limit_is_the_number_evaluated():
+    """What the limit refuses is what the search would evaluate (44 for the in-line 6)."""
+    assert invoke(TEMPLATES / "inline-6-2stroke.toml", "--limit", "44").exit_code == 0
+    run = invoke(TEMPLATES / "inline-6-2stroke.toml", "--limit", "43")
+    assert run.exit_code == 1 and "evaluates 44" in run.output
+    found = search(template("inline-6-2stroke.toml"), "M1", workers=1)
+    assert found.evaluated + found.pruned == 44
+
+
+def test_write_never_replaces_the_template_or_the_output(tmp_path):
+    folder = tmp_path / "w"
+    folder.mkdir()
+    inside = folder / "arrangement-01.toml"
+    inside.write_bytes((TEMPLATES / "inline-6-2stroke.toml").read_bytes())
+    before = inside.read_bytes()
+    run = invoke(inside, "--write", folder, "--top", "2")
+    assert run.exit_code == 1 and "input file" in run.output and inside.read_bytes() == before
+    run = invoke(TEMPLATES / "inline-6-2stroke.toml", "--write", tmp_path / "x", "-o",
+                 tmp_path / "x" / "arrangement-01.toml")
+    assert run.exit_code == 1 and "--write writes" in run.output and not (tmp_path / "x").exists()
+
+
+def test_a_failed_output_writes_no_folder(tmp_path):
+    (tmp_path / "taken").mkdir()
+    run = invoke(TEMPLATES / "inline-6-2stroke.toml", "--top", "2", "--write", tmp_path / "new",
+                 "-o", tmp_path / "taken")
+    assert run.exit_code == 1 and not (tmp_path / "new").exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["taken"]
+
+
+def test_a_long_template_name_leaves_room_for_the_rank(tmp_path):
+    text = (TEMPLATES / "inline-6-2stroke.toml").read_text().replace(
+        'name = "In-line 6, two-stroke"', f'name = "{"A" * 118}"')
+    path = tmp_path / "long.toml"
+    path.write_text(text)
+    run = invoke(path, "--objective", "M1", "--top", "3")
+    assert run.exit_code == 0, run.output
+    names = [a.engine.name for a in search(balance.load_template(path)[0], "M1", top=3).arrangements]
+    assert len(set(names)) == 3 and all(len(n) <= 120 for n in names)

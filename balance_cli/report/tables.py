@@ -435,11 +435,11 @@ def steadiness_text(speed, flywheel_kgm2=None):
 
 
 def _coefficient_names(result):
-    names = []
-    for t in result.objective:
-        if t.name not in names:
-            names.append(t.name)
-    return names[:10]
+    """The objective's coefficients that are not zero in every listed arrangement (all of
+    them; a zero column says nothing), and whether any were left out."""
+    names = [t.name for t in result.objective]
+    shown = [n for n in names if any(a.coefficients[n] != 0.0 for a in result.arrangements)]
+    return shown or names[:1], len(shown) < len(names)
 
 
 def search_summary(result):
@@ -464,7 +464,7 @@ def search_summary(result):
 
 def search_rows(result):
     """Ranking rows: rank, score, phases, firing order, intervals, coefficients, mirror."""
-    names = _coefficient_names(result)
+    names, _ = _coefficient_names(result)
     rows = []
     for a in result.arrangements:
         record = a.to_dict()
@@ -488,6 +488,8 @@ def search_tables(result, comparison, scale, fmt):
     headers, rows = search_rows(result)
     out += ["", f"{heading}Best arrangements (coefficients: F_k in one throw's largest order-k "
             "force, M_k in that force × the mean throw pitch)", "", render(headers, rows, fmt), ""]
+    if _coefficient_names(result)[1]:
+        out += ["The objective's other coefficients are 0 in every arrangement listed.", ""]
     if comparison is not None:
         out.append(compare_tables(comparison, scale, fmt))
     return "\n".join(out)
