@@ -18,7 +18,6 @@ __version__ = "0.1.0"
 
 from .analysis import Comparison, EngineResult, analyse, compare  # noqa: E402
 from .config import find_configs, load, load_many, load_template, loads  # noqa: E402
-from .cranksearch import Arrangement, SearchResult, Term, search  # noqa: E402
 from .counterweight import (Antivibrateur, Balance, Counterweight, Plane, Shaft,  # noqa: E402
                             counterweights)
 from .errors import (AnalysisError, BalanceError, ConfigError, CounterweightError,  # noqa: E402
@@ -46,10 +45,18 @@ __all__ = [
 ]
 
 
+#: names loaded on first use: commands that neither draw nor search start without them
+_LAZY = {"plot": (".plot", None), "search": (".cranksearch", "search"),
+         "SearchResult": (".cranksearch", "SearchResult"),
+         "Arrangement": (".cranksearch", "Arrangement"), "Term": (".cranksearch", "Term")}
+
+
 def __getattr__(name):
     # balance.plot imports matplotlib, which the commands that do not draw never load
-    if name == "plot":
+    if name in _LAZY:
         import importlib
 
-        return importlib.import_module(".plot", __name__)
+        module, attribute = _LAZY[name]
+        loaded = importlib.import_module(module, __name__)
+        return loaded if attribute is None else getattr(loaded, attribute)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
