@@ -132,11 +132,10 @@ class Balance:
     def to_dict(self) -> dict:
         """This engine's entry of ``counterweight --format json`` (SI units; see the README)."""
         engine = self.engine
-        floor = engine.noise_floor_n
 
         def stage(shaking):
             return {"largest_resultant_N": shaking.largest_force(),
-                    "orders": [o.to_dict(floor) for o in shaking.orders]}
+                    "orders": shaking.records(engine)}
 
         entry = {
             "name": engine.name,

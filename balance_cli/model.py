@@ -215,6 +215,9 @@ class Engine:
         the part data the masses and inertias were derived from, if given
     gas : GasCycle or None
         the gas cycle, if given
+    vertical_rad : float or None
+        the engine's vertical, from the reference axis, positive with rotation, rad; None
+        (the default) takes the banks' bisector (see :attr:`vertical_axis_rad`)
 
     Raises
     ------
@@ -240,6 +243,7 @@ class Engine:
     shaft_inertia_kgm2: float = 0.0
     parts: Parts | None = None
     gas: GasCycle | None = None
+    vertical_rad: float | None = None
     _by_number: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
@@ -264,6 +268,19 @@ class Engine:
         if cylinder.is_link:
             return "link"
         return "master" if self.is_master(cylinder) else "plain"
+
+    @property
+    def vertical_axis_rad(self) -> float:
+        """The direction called vertical, rad from the reference axis: ``vertical_rad`` when
+        given; else the bisector of the banks (the cylinder axis of an in-line engine, the
+        middle of a V or W); banks whose directions add up to nothing (a radial, a boxer)
+        leave the reference axis itself."""
+        if self.vertical_rad is not None:
+            return self.vertical_rad
+        total = sum(complex(math.cos(a), math.sin(a)) for a in self.bank_angles_rad)
+        if abs(total) < 1e-9 * len(self.bank_angles_rad):
+            return 0.0
+        return math.atan2(total.imag, total.real)
 
     @property
     def n_cylinders(self) -> int:
@@ -300,9 +317,23 @@ class Engine:
 
     @property
     def noise_floor_n(self) -> float:
-        """Forces below this (N), and moments below it times one metre (N·m), are rounding
-        noise: :data:`~balance_cli.tolerances.NOISE_FLOOR` of m_rec·r·ω²·n."""
+        """Forces below this (N) are rounding noise: :data:`~balance_cli.tolerances.NOISE_FLOOR`
+        of m_rec·r·ω²·n."""
         return NOISE_FLOOR * self.per_cylinder_unit_n
+
+    @property
+    def length_scale_m(self) -> float:
+        """The lever arm of the engine's moments, m: the farthest cylinder from z̄, or the
+        crank radius when the cylinders are closer together than that."""
+        mean = self.mean_z_m
+        return max(self.crank_radius_m, max(abs(c.z_m - mean) for c in self.cylinders))
+
+    @property
+    def noise_floor_nm(self) -> float:
+        """Moments below this (N·m) are rounding noise: the force floor times the engine's
+        own lever arm (:attr:`length_scale_m`), not one metre, so that a small engine's real
+        couples are not taken for noise."""
+        return self.noise_floor_n * self.length_scale_m
 
 
 def _quantity(value, dimension, parameter, sign="positive", cylinder=None):
@@ -348,6 +379,8 @@ def _check(engine):
     _quantity(engine.crank_kg, "mass", "crank_kg", sign="non-negative")
     _quantity(engine.shaft_inertia_kgm2, "moment of inertia", "shaft_inertia_kgm2",
               sign="non-negative")
+    if engine.vertical_rad is not None:
+        _angle(engine.vertical_rad, "vertical_rad")
     if engine.rod_length_m <= engine.crank_radius_m + abs(engine.pin_offset_m):
         raise ModelError(
             f"of {engine.rod_length_m:g} m is not longer than the crank radius plus |pin offset| "

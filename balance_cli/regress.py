@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .analysis import DOCUMENT_VERSION, Comparison, analyse, compare
+from .analysis import DOCUMENT_VERSION, READABLE_VERSIONS, Comparison, analyse, compare
 from .errors import AnalysisError, BalanceError
 from .shaking import check_settings
 from .tolerances import FIRING_CHANGE_DEG, NOISE_FLOOR, PHASE_CHANGE_DEG, PHASE_FLOOR
@@ -121,10 +121,10 @@ def check_baseline(document, path="<baseline>"):
         if not isinstance(document, dict) or key not in document:
             _fail(path, f"not a `balance compare --format json` document (no {key!r})")
     version = document["balance_version"]
-    if type(version) is not int or version != DOCUMENT_VERSION:
+    if type(version) is not int or version not in READABLE_VERSIONS:
         raise RegressError(f"{path}: written by balance_version {version!r}, but this balance "
-                           f"reads version {DOCUMENT_VERSION}; write the baseline again with this "
-                           "version")
+                           f"reads versions {', '.join(map(str, READABLE_VERSIONS))}; write the "
+                           "baseline again with this version")
     for key in ("samples", "max_order"):
         if isinstance(document.get(key), bool) or not isinstance(document.get(key), int):
             _fail(path, f"has no whole number {key!r}")
