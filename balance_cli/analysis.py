@@ -97,8 +97,8 @@ class EngineResult:
         """The order that contributes most to the counterweighted ``part`` ("force" or
         "moment"): ``order``, ``max`` (N or N·m, the ellipse's largest value, the forward first
         order left out where a counterweight takes it), ``axis_deg`` (None: it turns) and
-        ``direction`` in words ("vertical", "horizontal", "rotating" or "at 30° from the
-        vertical"; for a moment "pitching" and "yawing"). None when nothing is left."""
+        ``direction`` in words ("vertical", "horizontal", "rotating" or "+30° from vertical",
+        positive with rotation; for a moment "pitching", "yawing", "+30° from pitching"). None when nothing is left."""
         if part not in ("force", "moment"):
             raise AnalysisError(f'must be "force" or "moment", got {part!r}', "part")
         engine = self.engine
@@ -140,6 +140,8 @@ class EngineResult:
             "counterweighted_resultant_per_cylinder": self.counterweighted_per_cylinder,
             "percent_of_reference": self.percent_of(reference or self),
             "vertical_deg": math.degrees(engine.vertical_axis_rad),
+            "noise_floor_N": engine.noise_floor_n,
+            "noise_floor_Nm": engine.noise_floor_nm,
             "largest_moment_Nm": self.largest_moment_nm,
             "counterweighted_moment_Nm": self.counterweighted_moment_nm,
             "main_force_order": _main_record(self.main_order("force"), "N"),
@@ -179,7 +181,7 @@ def _direction_words(axis_deg, vertical_rad, part):
         return names[1]
     # the axis measured from the vertical the short way, positive with rotation
     signed = off if off <= 90.0 else off - 180.0
-    return f"{names[0]} turned {signed:+.0f}°"
+    return f"{signed:+.0f}° from {names[0]}"
 
 
 def analyse(engine: Engine, samples: int = DEFAULT_SAMPLES,

@@ -7,8 +7,9 @@ a revolution is checked by :func:`balance_cli.kinematics.check_assembly`, which 
 calls first.
 """
 
+import dataclasses
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 from .errors import ModelError, UnitError
 from .tolerances import NOISE_FLOOR, SAME_DIRECTION_RAD, SAME_POSITION_M
@@ -255,6 +256,30 @@ class Engine:
         object.__setattr__(self, "_by_number", {c.number: c for c in self.cylinders
                                                 if isinstance(c, Cylinder)})
         _check(self)
+
+    def replace(self, **changes) -> "Engine":
+        """A copy with ``changes`` (field names and SI values, as the constructor takes them),
+        checked like any new engine, the linkage's assembly included::
+
+            faster = engine.replace(speed_rad_s=2 * engine.speed_rad_s)
+
+        Raises
+        ------
+        ModelError
+            a name that is not a field, or a value the engine cannot have
+        """
+        names = [f.name for f in fields(self) if f.init]
+        unknown = sorted(set(changes) - set(names))
+        if unknown:
+            raise ModelError(f"Engine.replace: {', '.join(map(repr, unknown))} is not a field of "
+                             f"Engine; choose from {', '.join(names)}")
+        engine = dataclasses.replace(self, **changes)
+        # the model is the package's ground floor; the assembly check lives above it, and a
+        # replaced engine must be checked as fully as one read from a file
+        from .kinematics import check_assembly
+
+        check_assembly(engine)
+        return engine
 
     def cylinder(self, number):
         """The cylinder with this number."""

@@ -159,10 +159,11 @@ def check_baseline(document, path="<baseline>"):
         for o in orders:
             parts = [o.get(part) for part in ("force", "moment")] if isinstance(o, dict) else []
             if not isinstance(o, dict) or not _number(o.get("order")) \
-                    or not all(isinstance(p, dict) and all(_number(v) for v in p.values())
+                    or not all(isinstance(p, dict) and all(_number(v) or k == "axis_deg" and v is None
+                                                           for k, v in p.items())
                                for p in parts) or len(parts) != 2:
                 _fail(where, "has an order that is not {order, force: {...}, moment: {...}} of "
-                             "finite numbers")
+                             "finite numbers (an axis may be null)")
         listed = [o["order"] for o in orders]
         if len(set(listed)) != len(listed):
             _fail(where, "lists an order twice")

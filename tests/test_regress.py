@@ -115,8 +115,8 @@ def test_the_baseline_settings_are_used(project):
 @pytest.mark.parametrize("content, words", [
     ("not json", "not JSON"),
     ('{"engines": []}', "no 'balance_version'"),
-    ('{"balance_version": 2, "engines": [], "samples": 256, "max_order": 8}',
-     "written by balance_version 2"),
+    ('{"balance_version": 3, "engines": [], "samples": 256, "max_order": 8}',
+     "written by balance_version 3"),
     ('[1, 2]', "not a `balance compare --format json` document"),
     ('{"balance_version": 1, "samples": 256, "max_order": 8, "engines": [{"name": "x"}]}',
      "engines[1]: lacks config, cylinders, firing, orders, unit_force_N"),

@@ -9,8 +9,8 @@ import math
 import numpy as np
 from tabulate import tabulate
 
-from ..units import kg_to_g, m_to_mm, pa_to_bar, rad_s_to_rpm, round_degrees
-from .display import markdown_text, plain_text
+from ..units import kg_to_g, m_to_mm, pa_to_bar, rad_s_to_rpm, round_degrees, significant
+from .display import Scale, figure, markdown_text, plain_text
 
 __all__ = ["render", "compare_parts", "compare_tables", "order_rows", "order_headers",
            "balance_tables", "balance_summary", "list_table", "show_table", "regression_tables",
@@ -31,13 +31,14 @@ def render(headers, rows, fmt):
                     tablefmt=_TABLEFMT[fmt], disable_numparse=True)
 
 
-def _digits(scale):
-    return 4 if not scale.absolute else 1 if scale.units == "N" else 2
+def _axis_text(axis_deg):
+    """An ellipse's axis for a table: "—" where there is none (a circle, or nothing)."""
+    return "—" if axis_deg is None else f"{round_degrees(axis_deg, 0, 180.0):.0f}"
 
 
 def order_values(record, unit_n, scale):
     """Force forward/backward/max/min, axis and moment forward/backward/max of one order's
-    record (``OrderComponents.to_dict``) in display units."""
+    record (``OrderComponents.to_dict``) in display units (the counterweight tables' columns)."""
     f, m = record["force"], record["moment"]
     return ([scale.force(f[k], unit_n) for k in ("forward_N", "backward_N", "max_N", "min_N")]
             + [f["axis_deg"]]
@@ -47,14 +48,13 @@ def order_values(record, unit_n, scale):
 def order_rows(name, records, unit_n, scale):
     """Text rows (engine, order, force fwd/bwd/max/min/axis, moment fwd/bwd/max) of the order
     records that are not zero (the records hold noise as exact zeros)."""
-    digits = _digits(scale)
     rows = []
     for record in records:
         if record["force"]["max_N"] == 0.0 and record["moment"]["max_Nm"] == 0.0:
             continue
         v = order_values(record, unit_n, scale)
-        rows.append([name, str(record["order"])] + [f"{x:.{digits}f}" for x in v[:4]]
-                    + [f"{round_degrees(v[4], 0, 180.0):.0f}"] + [f"{x:.2f}" for x in v[5:]])
+        rows.append([name, str(record["order"])] + [figure(x) for x in v[:4]]
+                    + [_axis_text(v[4])] + [figure(x) for x in v[5:]])
     return rows
 
 
@@ -64,6 +64,63 @@ def order_headers(scale):
             "F axis (°)", f"M fwd ({ml})", f"M bwd ({ml})", f"M max ({ml})"]
 
 
+#: the columns of a part's table: (record key without unit, heading)
+_PART_COLUMNS = {
+    "force": ("F", ("forward", "fwd"), ("backward", "bwd"), ("max", "max"), ("min", "min"),
+              ("vertical", "vertical"), ("horizontal", "horizontal")),
+    "moment": ("M", ("forward", "fwd"), ("backward", "bwd"), ("max", "max"), ("min", "min"),
+               ("vertical", "V (pitch)"), ("horizontal", "H (yaw)")),
+}
+
+
+def part_headers(scale, part):
+    """Headings of the force or moment table of the orders."""
+    symbol, *columns = _PART_COLUMNS[part]
+    label = scale.force_label if part == "force" else scale.moment_label
+    headings = [f"{symbol} {heading} ({label})" for _, heading in columns]
+    return ["Engine", "Order"] + headings[:4] + [f"{symbol} axis (°)"] + headings[4:]
+
+
+def part_rows(name, records, unit_n, scale, part):
+    """Text rows of the force (or moment) table: every order where it is not zero, with its
+    forward, backward, max, min, axis and vertical and horizontal amplitudes."""
+    unit = "N" if part == "force" else "Nm"
+    shown = (lambda v: scale.force(v, unit_n)) if part == "force" else scale.moment
+    _, *columns = _PART_COLUMNS[part]
+    rows = []
+    for record in records:
+        values = record[part]
+        if values[f"max_{unit}"] == 0.0:
+            continue
+        cells = [figure(shown(values[f"{key}_{unit}"])) for key, _ in columns]
+        rows.append([name, str(record["order"])] + cells[:4] + [_axis_text(values["axis_deg"])]
+                    + cells[4:])
+    return rows
+
+
+def order_parts(entries, scale, samples):
+    """The force and moment tables of the orders, as (title, headers, rows, note), for
+    ``entries`` of (name, order records, m_rec·r·ω²·n)."""
+    unit = ("per cylinder, in units of m_rec·r·ω²·n" if not scale.absolute
+            else f"in {scale.units}")
+    forces = [row for name, records, unit_n in entries
+              for row in part_rows(name, records, unit_n, scale, "force")]
+    moments = [row for name, records, unit_n in entries
+               for row in part_rows(name, records, unit_n, scale, "moment")]
+    return [
+        (f"Free forces by order ({unit})", part_headers(scale, "force"), forces,
+         "Orders not listed are zero. fwd turns with the crank, bwd against it; max and min are "
+         "the semi-axes of the order's ellipse, axis the direction of max from the reference axis "
+         "(— where the ellipse is a circle); vertical and horizontal are the amplitudes of the "
+         f"components along the engine's vertical and across it ({samples} samples a "
+         "revolution)."),
+        (f"Free moments by order (in {scale.moment_label})", part_headers(scale, "moment"), moments,
+         "V (pitch) is the moment of the vertical forces, about the horizontal axis across the "
+         "crankshaft (marine M1V, M2V); H (yaw) the moment of the horizontal forces, about the "
+         "vertical (M1H, M2H)." if moments else "No free moment in any order."),
+    ]
+
+
 def _intervals(firing):
     mean = sum(firing["intervals_deg"]) / len(firing["intervals_deg"])
     if firing["uniform"]:
@@ -71,37 +128,60 @@ def _intervals(firing):
     return f"{min(firing['intervals_deg']):.1f} to {max(firing['intervals_deg']):.1f}"
 
 
-def _summary_row(record, unit_n, scale):
-    largest = (f"{record['counterweighted_resultant_per_cylinder']:.4f}" if not scale.absolute
-               else f"{scale.force(record['counterweighted_resultant_N'], unit_n):.1f}")
-    percent = record["percent_of_reference"]
-    return [record["name"], str(record["cylinders"]), str(record["cycle"]), record["frame"],
-            "-".join(map(str, record["firing"]["order"])), _intervals(record["firing"]), largest,
-            "n/a" if percent is None else f"{percent:.1f}"]
+#: a share of the reference above this many per cent is shown as a ratio (×62, not 6200 %)
+PERCENT_LIMIT = 1000.0
+
+
+def _share_text(percent):
+    if percent is None:
+        return "n/a"
+    if percent > PERCENT_LIMIT:
+        return f"×{significant(percent / 100.0, 3)}"
+    return f"{percent:.1f}"
+
+
+def _main_text(main, shown):
+    """The main order of a part in words: "2, vertical, 0.2147"."""
+    if main is None:
+        return "—"
+    value = main.get("max_N", main.get("max_Nm"))
+    return f"{main['order']}: {figure(shown(value))}, {main['direction']}"
 
 
 def compare_parts(comparison, scale):
     """The comparison as (title, headers, rows, note) tables, for any renderer; rendered from
     the records of ``Comparison.to_dict``."""
-    unit = ("per cylinder, in units of m_rec·r·ω²·n" if not scale.absolute
-            else f"in {scale.units}")
     records = comparison.to_dict()["engines"]
     units = [r.per_cylinder_unit_n for r in comparison.results]
-    rows = [row for record, unit_n in zip(records, units)
-            for row in order_rows(record["name"], record["orders"], unit_n, scale)]
-    summary = [_summary_row(record, unit_n, scale) for record, unit_n in zip(records, units)]
-    return [
-        (f"Free forces and moments by order (forces {unit}; moments in {scale.moment_label})",
-         order_headers(scale), rows,
-         "Orders not listed are zero. fwd turns with the crank, bwd against it; max and min are "
-         "the semi-axes of the order's ellipse, axis the direction of max from the reference axis "
-         f"({comparison.samples} samples a revolution)."),
-        ("Firing and largest resultant (after an ideal crankshaft counterweight)",
-         ["Engine", "Cyl", "Cycle", "Frame", "Firing order", "Intervals (°)",
-          f"Largest ({scale.force_label})", f"% of {comparison.reference.engine.name}"],
-         summary,
-         "n/a: the reference engine has no resultant to compare with." if any(
-             record["percent_of_reference"] is None for record in records) else ""),
+    entries = [(record["name"], record["orders"], unit_n) for record, unit_n in zip(records, units)]
+    firing = [[record["name"], str(record["cylinders"]), str(record["cycle"]), record["frame"],
+               "-".join(map(str, record["firing"]["order"])), _intervals(record["firing"])]
+              for record in records]
+    summary = []
+    for record, unit_n in zip(records, units):
+        force = lambda v, u=unit_n: scale.force(v, u)  # noqa: E731
+        summary.append([record["name"], figure(force(record["counterweighted_resultant_N"])),
+                        _share_text(record["percent_of_reference"]),
+                        _main_text(record["main_force_order"], force),
+                        figure(scale.moment(record["counterweighted_moment_Nm"])),
+                        _main_text(record["main_moment_order"], scale.moment)])
+    notes = ["Largest: the resultant's largest magnitude over a revolution, all orders; main "
+             "order: the order with the largest ellipse, its max and direction (rotating: a "
+             "circle). A turning crank's ideal counterweight has taken the forward first order of "
+             "force and moment away (a rotary's crank does not turn)."]
+    if any(record["percent_of_reference"] is None for record in records):
+        notes.append("n/a: the reference engine has no resultant to compare with.")
+    if any((record["percent_of_reference"] or 0.0) > PERCENT_LIMIT for record in records):
+        notes.append(f"×: a multiple of the reference's resultant, where it is above "
+                     f"{PERCENT_LIMIT:.0f} %.")
+    fl, ml = scale.force_label, scale.moment_label
+    return order_parts(entries, scale, comparison.samples) + [
+        ("Firing", ["Engine", "Cyl", "Cycle", "Frame", "Firing order", "Intervals (°)"], firing, ""),
+        ("Largest free force and moment (after an ideal crankshaft counterweight)",
+         ["Engine", f"Largest F ({fl})", f"% of {comparison.reference.engine.name}",
+          f"Main F order: max ({fl}), direction", f"Largest M ({ml})",
+          f"Main M order: max ({ml}), direction"],
+         summary, " ".join(notes)),
     ]
 
 
@@ -294,25 +374,25 @@ def balance_summary(balances):
     return headers, rows
 
 
-def _torque_text(value_nm):
-    text = f"{value_nm:.2f}"
-    return "0.00" if text == "-0.00" else text
-
-
-def torque_summary(results):
+def torque_summary(results, scale=None):
     """The report's torques: per engine the mean, largest, smallest and range of the inertia,
-    gas ("—" without one), total and frame torques, N·m, one row each; and a second table of
-    the reduced mass. Returns ((headers, rows), (headers, rows))."""
+    gas ("—" without one), total and frame torques, in ``scale``'s moment unit (default N·m),
+    one row each; and a second table of the reduced mass. Returns ((headers, rows), (headers,
+    rows))."""
+    scale = Scale() if scale is None else scale
     rows, masses = [], []
     for r in results:
         for i, (name, series) in enumerate((("inertia", r.inertia), ("gas", r.gas),
                                             ("total", r.total), ("frame", r.frame))):
             values = (["—"] * 4 if series is None else
-                      [_torque_text(v) for v in (series.mean, series.max, series.min, series.range)])
+                      [figure(scale.moment(v)) for v in (series.mean, series.max, series.min,
+                                                         series.range)])
             rows.append([r.engine.name if i == 0 else "", name] + values)
         mu = r.reduced_mass
         masses.append([r.engine.name, f"{mu.mean_kgm2:.5g}", f"{mu.min_kgm2:.5g}", f"{mu.max_kgm2:.5g}"])
-    return ((["Engine", "Torque", "Mean (N·m)", "Max (N·m)", "Min (N·m)", "Range ΔC (N·m)"], rows),
+    ml = scale.moment_label
+    return ((["Engine", "Torque", f"Mean ({ml})", f"Max ({ml})", f"Min ({ml})", f"Range ΔC ({ml})"],
+             rows),
             (["Engine", "Mean μ (kg·m²)", "Min μ (kg·m²)", "Max μ (kg·m²)"], masses))
 
 
@@ -324,8 +404,21 @@ def _value_text(value):
     return str(value)
 
 
-def regression_tables(regression, fmt):
-    """The regression table as text or Markdown: what moved, then engines added and removed."""
+def _in_units(quantity, value, scale):
+    """A regression value in ``scale``'s units: forces (``*_N``) and moments (``*_Nm``) only."""
+    if not isinstance(value, float):
+        return value
+    if quantity.endswith("_Nm"):
+        return scale.moment(value)
+    if quantity.endswith("_N"):
+        return scale.force(value, 1.0)
+    return value
+
+
+def regression_tables(regression, fmt, scale=None):
+    """The regression table as text or Markdown: what moved, then engines added and removed;
+    forces and moments in ``scale``'s units (default N and N·m)."""
+    scale = Scale(True, "N") if scale is None else scale
     heading = "### " if fmt == "markdown" else ""
     safe = _safe(fmt)
     checked = len(regression.checked)
@@ -340,19 +433,20 @@ def regression_tables(regression, fmt):
         rows = []
         for row in regression.rows:
             change, relative = row.change, row.relative_change
+            shown = lambda v, q=row.quantity: _in_units(q, v, scale)  # noqa: E731
             rows.append([row.engine, "-" if row.order is None else str(row.order), row.quantity,
-                         _value_text(row.baseline), _value_text(row.now),
-                         "-" if change is None else f"{change:+.3g}",
+                         _value_text(shown(row.baseline)), _value_text(shown(row.now)),
+                         "-" if change is None else f"{shown(change):+.3g}",
                          "-" if relative is None else f"{100 * relative:+.3g} %",
-                         "-" if row.tolerance is None else f"{row.tolerance:.3g}"])
+                         "-" if row.tolerance is None else f"{shown(row.tolerance):.3g}"])
         out += [render(["Engine", "Order", "Quantity", "Baseline", "Now", "Change", "Relative",
                         "Tolerance"], rows, fmt), ""]
     for title, names in (("Engines added (not in the baseline)", regression.added),
                          ("Engines removed (in the baseline, not now)", regression.removed)):
         if names:
             out += [f"{title}:", ""] + [f"- {safe(n)}" for n in names] + [""]
-    out.append("Units: N and N·m (SI), degrees for *_deg; change is now − baseline. Update the "
-               "baseline on purpose with --update.")
+    out.append(f"Units: {scale.units} for *_N and {scale.moment_label} for *_Nm, degrees for "
+               "*_deg; change is now − baseline. Update the baseline on purpose with --update.")
     return "\n".join(out) + "\n"
 
 
@@ -362,15 +456,15 @@ def _torque_rows(result, scale):
                          ("tilting", result.tilting), ("frame", result.frame)):
         if series is None:
             continue
-        rows.append([name] + [f"{scale.moment(v):.2f}" for v in (series.mean, series.max,
-                                                                  series.min, series.range)])
+        rows.append([name] + [figure(scale.moment(v)) for v in (series.mean, series.max,
+                                                                 series.min, series.range)])
     return rows
 
 
 def _order_table(series, scale, fmt, largest):
     """The orders of a torque above a thousandth of its largest one."""
-    rows = [[f"{k:g}", f"{scale.moment(c):.3f}", f"{scale.moment(s):.3f}",
-             f"{scale.moment(math.hypot(c, s)):.3f}", f"{round_degrees(d['phase_deg'], 1):.1f}"]
+    rows = [[f"{k:g}", figure(scale.moment(c)), figure(scale.moment(s)),
+             figure(scale.moment(math.hypot(c, s))), f"{round_degrees(d['phase_deg'], 1):.1f}"]
             for (k, c, s), d in zip(series.orders, series.to_dict()["orders"])
             if math.hypot(c, s) >= 1e-3 * largest and largest > 0]
     ml = scale.moment_label
@@ -399,14 +493,12 @@ def torque_tables(results, scale, fmt):
         rows = []
         for pin in r.pins:
             magnitude = np.abs(pin.force_n)
-            rows.append([str(pin.throw), f"{scale.force(pin.radial.mean, 1.0):.1f}",
-                         f"{scale.force(pin.tangential.mean, 1.0):.1f}",
-                         f"{scale.force(float(magnitude.max()), 1.0):.1f}",
-                         f"{scale.force(float(magnitude.min()), 1.0):.1f}"])
+            rows.append([str(pin.throw)] + [figure(scale.force(v, 1.0)) for v in (
+                pin.radial.mean, pin.tangential.mean, float(magnitude.max()), float(magnitude.min()))])
         if r.main_bearings is not None:
             magnitude = np.abs(r.main_bearings.force_n)
-            rows.append(["main bearings", "-", "-", f"{scale.force(float(magnitude.max()), 1.0):.1f}",
-                         f"{scale.force(float(magnitude.min()), 1.0):.1f}"])
+            rows.append(["main bearings", "-", "-", figure(scale.force(float(magnitude.max()), 1.0)),
+                         figure(scale.force(float(magnitude.min()), 1.0))])
         out += ["Forces of the rods on the crank pins, and of the crankshaft on its main bearings "
                 "together:", "",
                 render(["Throw", f"Radial mean ({fl})", f"Tangential mean ({fl})", f"Largest ({fl})",
