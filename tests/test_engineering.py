@@ -21,7 +21,7 @@ from balance_cli.cli import main
 from balance_cli.report.display import Scale
 from balance_cli.units import UNIT_SYSTEMS, parse_quantity, significant
 
-from conftest import TWIN, exact_b, make_engine
+from conftest import ROOT, TWIN, exact_b, make_engine
 
 M, R, L, RPM, D = 0.6, 0.045, 0.15, 3000.0, 0.1
 W = RPM * math.pi / 30.0
@@ -249,14 +249,17 @@ def test_engine_replace_is_checked():
         engine.replace(rod_length_m=0.01)
 
 
-def test_json_version_2_and_regress_reads_version_1(tmp_path):
+def test_json_version_2_and_regress_reads_version_1(monkeypatch):
     """New keys only, and a baseline written by version 1 still regresses clean."""
+    monkeypatch.chdir(ROOT)   # the baselines name their configurations from the root
     data = json.loads(run("compare", "configs", "--format", "json").output)
     assert data["balance_version"] == 2
     engine = data["engines"][0]
     for key in ("vertical_deg", "largest_moment_Nm", "counterweighted_moment_Nm",
                 "main_force_order", "main_moment_order", "noise_floor_N", "noise_floor_Nm"):
         assert key in engine
-    out = run("regress", "tests/golden/compare.json", "configs")
+    # compare-v1.json is the golden baseline as version 1 wrote it, kept unchanged
+    old = ROOT / "tests" / "golden" / "compare-v1.json"
+    assert json.loads(old.read_text(encoding="utf-8"))["balance_version"] == 1
+    out = run("regress", old)
     assert out.exit_code == 0, out.output
-    assert json.loads(open("tests/golden/compare.json").read())["balance_version"] == 1

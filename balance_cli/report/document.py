@@ -55,7 +55,7 @@ def blocks(comparison, balances, star_order, torques, scale=None):
                   r.engine.source] for r in results]))
     out.append(("h", 2, "Comparison"))
     for title, headers, rows, note in compare_parts(comparison, scale):
-        out += [("h", 3, title), ("table", headers, rows)]
+        out += [("h", 3, title)] + ([("table", headers, rows)] if rows else [])
         if note:
             out.append(("p", note))
     out.append(("h", 2, "Counterweights"))

@@ -107,8 +107,10 @@ def order_parts(entries, scale, samples):
               for row in part_rows(name, records, unit_n, scale, "force")]
     moments = [row for name, records, unit_n in entries
                for row in part_rows(name, records, unit_n, scale, "moment")]
+    top = entries and len(entries[0][1])
     return [
         (f"Free forces by order ({unit})", part_headers(scale, "force"), forces,
+         f"No free force in any order up to {top}." if not forces else
          "Orders not listed are zero. fwd turns with the crank, bwd against it; max and min are "
          "the semi-axes of the order's ellipse, axis the direction of max from the reference axis "
          "(— where the ellipse is a circle); vertical and horizontal are the amplitudes of the "
@@ -117,7 +119,7 @@ def order_parts(entries, scale, samples):
         (f"Free moments by order (in {scale.moment_label})", part_headers(scale, "moment"), moments,
          "V (pitch) is the moment of the vertical forces, about the horizontal axis across the "
          "crankshaft (marine M1V, M2V); H (yaw) the moment of the horizontal forces, about the "
-         "vertical (M1H, M2H)." if moments else "No free moment in any order."),
+         "vertical (M1H, M2H)." if moments else f"No free moment in any order up to {top}."),
     ]
 
 
@@ -140,10 +142,11 @@ def _share_text(percent):
     return f"{percent:.1f}"
 
 
-def _main_text(main, shown):
-    """The main order of a part in words: "2, vertical, 0.2147"."""
+def _main_text(main, shown, largest):
+    """The main order of a part in words: "2: 0.2147, vertical"."""
     if main is None:
-        return "—"
+        # what is left lies in orders above those analysed
+        return "— (above the orders analysed)" if largest else "—"
     value = main.get("max_N", main.get("max_Nm"))
     return f"{main['order']}: {figure(shown(value))}, {main['direction']}"
 
@@ -162,9 +165,11 @@ def compare_parts(comparison, scale):
         force = lambda v, u=unit_n: scale.force(v, u)  # noqa: E731
         summary.append([record["name"], figure(force(record["counterweighted_resultant_N"])),
                         _share_text(record["percent_of_reference"]),
-                        _main_text(record["main_force_order"], force),
+                        _main_text(record["main_force_order"], force,
+                                   record["counterweighted_resultant_N"]),
                         figure(scale.moment(record["counterweighted_moment_Nm"])),
-                        _main_text(record["main_moment_order"], scale.moment)])
+                        _main_text(record["main_moment_order"], scale.moment,
+                                   record["counterweighted_moment_Nm"])])
     notes = ["Largest: the resultant's largest magnitude over a revolution, all orders; main "
              "order: the order with the largest ellipse, its max and direction (rotating: a "
              "circle). A turning crank's ideal counterweight has taken the forward first order of "
@@ -191,7 +196,7 @@ def compare_tables(comparison, scale, fmt):
     safe = _safe(fmt)
     out = []
     for title, headers, rows, note in compare_parts(comparison, scale):
-        out += [f"{heading}{safe(title)}", "", render(headers, rows, fmt), ""]
+        out += [f"{heading}{safe(title)}", ""] + ([render(headers, rows, fmt), ""] if rows else [])
         if note:
             out += [note, ""]
     return "\n".join(out)
