@@ -414,7 +414,8 @@ def _checked_offsets(shaft_offsets, orders):
     if shaft_offsets is None:
         return {}
     if not orders:
-        raise CounterweightError("needs shaft_orders: it places balancer shafts", "shaft_offsets")
+        raise CounterweightError("places balancer shafts, but no shaft order was asked for",
+                                 "shaft_offsets")
     items = shaft_offsets.items() if isinstance(shaft_offsets, Mapping) else [(None, shaft_offsets)]
     checked = {}
     for ratio, pair in items:
