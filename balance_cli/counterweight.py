@@ -212,6 +212,8 @@ class Balance:
     rolling_moments : tuple of RollingMoment
         for each order with shafts, the rolling moment of all of that order's shafts together
         (a Lanchester pair's couple); zero when they sit on the crank axis
+    shaft_orders : tuple of int
+        the orders shafts were asked for (an order already zero gets none)
     """
 
     engine: Engine
@@ -226,6 +228,7 @@ class Balance:
     samples: int = DEFAULT_SAMPLES
     balancer_shafts: tuple = ()
     rolling_moments: tuple = ()
+    shaft_orders: tuple = ()
 
     @property
     def max_order(self) -> int:
@@ -254,6 +257,7 @@ class Balance:
         if self.after_shafts is not None:
             entry["shafts"] = [s.to_dict() for s in self.shafts]
             entry["after_shafts"] = stage(self.after_shafts)
+            entry["shaft_orders"] = list(self.shaft_orders)
             entry["balancer_shafts"] = [s.to_dict() for s in self.balancer_shafts]
             entry["shaft_rolling_moments"] = [m.to_dict() for m in self.rolling_moments]
         if self.test_masses_kg is not None:
@@ -607,7 +611,7 @@ def counterweights(engine: "Engine | EngineResult",
     masses = _test_masses(engine, shaking) if test_masses else None
     return Balance(engine, shaking, rotor, tuple(weights), balance_factor, residual,
                    tuple(shafts), current if orders else None, masses, samples, tuple(built),
-                   _rolling_totals(engine, built))
+                   _rolling_totals(engine, built), tuple(orders))
 
 
 def check_options(radius_m=None, balance_factor=None, shaft_orders=(),

@@ -471,6 +471,8 @@ def test_cli_nothing_left_in_words():
     assert "Left after the shafts" not in result.output
     assert "Rolling moment about the crank axis: none" in result.output
     assert "kg·mm" not in result.output
+    primary = run("counterweight", CONFIGS / "inline-4-car.toml", "--shafts", "1,2")
+    assert "Order 1: no shaft needed, already zero." in primary.output
     six = run("counterweight", CONFIGS / "tanaka-part3" / "3-inline-6.toml", "--max-order", "5")
     assert six.exit_code == 0, six.output
     assert "After the counterweights, nothing is left up to order 5" in six.output
@@ -498,6 +500,7 @@ def test_cli_json_balancer_shafts(tmp_path):
                  "--format", "json", "--output", out)
     assert result.exit_code == 0, result.output
     (engine,) = json.loads(out.read_text(encoding="utf-8"))["engines"]
+    assert engine["shaft_orders"] == [2]
     # the old per-mass list, unchanged
     assert [set(s) for s in engine["shafts"]] == [
         {"order", "speed_ratio", "mass_eccentricity_kgm", "phase_deg", "z_m"}] * 2

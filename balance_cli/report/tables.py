@@ -330,6 +330,11 @@ def balance_tables(balances, scale, fmt):
             out += ["Balancer shafts as built (each mass's m·e, its angle from the reference axis "
                     "when θ = 0, positive with rotation, and its axial position):", "",
                     _record_table(_shaft_rows(record["balancer_shafts"]), SHAFT_COLUMNS, fmt), ""]
+            built = {s["order"] for s in record["balancer_shafts"]}
+            idle = [k for k in record.get("shaft_orders", []) if k not in built]
+            if idle:
+                out += [f"Order{'s' if len(idle) > 1 else ''} {', '.join(map(str, idle))}: no "
+                        "shaft needed, already zero.", ""]
             out += _rolling_lines(record, scale, fmt)
             out += _left(record["name"], "shafts", record["after_shafts"]["orders"], n_unit,
                          scale, fmt)
