@@ -449,28 +449,26 @@ def _checked_offsets(shaft_offsets, orders):
 
 
 def _build_shaft(engine, speed_ratio, masses, offset):
-    """A BalancerShaft of force phasors at axial positions, with its rolling moment."""
+    """A BalancerShaft of force phasors at axial positions, with its rolling moment; and that
+    moment's phasor before the noise is cut, for the totals."""
     order = abs(speed_ratio)
     spin = (order * engine.speed_rad_s) ** 2
     parts = tuple(ShaftMass(abs(p) / spin, phasor_deg(p), z) for z, p in masses)
     force = sum((p for _, p in masses), 0j)
     position = offset_position(*offset, engine.vertical_axis_rad)
-    moment = RollingMoment.from_phasor(order, rolling_moment_phasor(position, force, speed_ratio),
-                                       engine.noise_floor_nm)
-    return BalancerShaft(speed_ratio, parts, offset[0], offset[1], abs(force), moment)
+    phasor = rolling_moment_phasor(position, force, speed_ratio)
+    moment = RollingMoment.from_phasor(order, phasor, engine.noise_floor_nm)
+    return BalancerShaft(speed_ratio, parts, offset[0], offset[1], abs(force), moment), phasor
 
 
-def _rolling_totals(engine, shafts):
+def _rolling_totals(engine, shafts, phasors):
     """Per order, the rolling moment of all its shafts together (a pair's couple)."""
     totals = []
     for order in sorted({s.order for s in shafts}):
-        mine = [s for s in shafts if s.order == order]
-        phasor = 0j
-        for s in mine:
-            m = s.rolling_moment
-            phasor += complex(m.cos_nm, -m.sin_nm)
-        totals.append(RollingMoment.from_phasor(order, phasor, engine.noise_floor_nm,
-                                                tuple(s.speed_ratio for s in mine)))
+        mine = [(s, p) for s, p in zip(shafts, phasors) if s.order == order]
+        totals.append(RollingMoment.from_phasor(order, sum((p for _, p in mine), 0j),
+                                                engine.noise_floor_nm,
+                                                tuple(s.speed_ratio for s, _ in mine)))
     return tuple(totals)
 
 
@@ -594,12 +592,13 @@ def counterweights(engine: "Engine | EngineResult",
         current = current.plus(1, forward=phasor, forward_moment=(plane.z_m - z_mean) * phasor)
     residual = current
 
-    shafts, built = [], []
+    shafts, built, rolling = [], [], []
     shaft_planes = planes if len(planes) == 2 else default_planes(engine)
     for order in orders:
         for ratio, masses in _shafts_for(order, residual, shaft_planes, engine):
-            shaft = _build_shaft(engine, ratio, masses, _offset_for(ratio, offsets))
+            shaft, turning = _build_shaft(engine, ratio, masses, _offset_for(ratio, offsets))
             built.append(shaft)
+            rolling.append(turning)
             for (z, phasor), mass in zip(masses, shaft.masses):
                 shafts.append(Shaft(order, ratio, mass.mass_eccentricity_kgm, mass.phase_deg, z))
                 lever = (z - z_mean) * phasor
@@ -611,7 +610,7 @@ def counterweights(engine: "Engine | EngineResult",
     masses = _test_masses(engine, shaking) if test_masses else None
     return Balance(engine, shaking, rotor, tuple(weights), balance_factor, residual,
                    tuple(shafts), current if orders else None, masses, samples, tuple(built),
-                   _rolling_totals(engine, built), tuple(orders))
+                   _rolling_totals(engine, built, rolling), tuple(orders))
 
 
 def check_options(radius_m=None, balance_factor=None, shaft_orders=(),
