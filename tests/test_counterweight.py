@@ -523,3 +523,38 @@ def test_cli_json_balancer_shafts(tmp_path):
                    "--format", "csv").output
     assert "balancer shaft 1 mass 1,mass_eccentricity," in csv_text
     assert "shafts +2 -2 rolling moment order 2,amplitude,0.0,N·m" in csv_text
+
+
+TWIN_270 = """name = "270° twin"
+cycle = 4
+speed = "6000 rpm"
+crank_radius = "35 mm"
+rod_length = "120 mm"
+[masses]
+reciprocating = "400 g"
+[[banks]]
+angle = 0
+[[throws]]
+phase = 0
+z = "0 mm"
+[[throws]]
+phase = 90
+z = "80 mm"
+"""
+
+
+def test_cli_270_twin_reports_one_shaft_with_two_masses(tmp_path):
+    """As test_270_twin_…: one −1 shaft, masses m·r/2 = 0.4·0.035/2 = 0.007 kg·m at 180° (throw
+    1's plane) and 90° (throw 2's)."""
+    config = tmp_path / "twin.toml"
+    config.write_text(TWIN_270, encoding="utf-8")
+    result = run("counterweight", config, "--shafts", "1", "--format", "json")
+    assert result.exit_code == 0, result.output
+    (engine,) = json.loads(result.output)["engines"]
+    (shaft,) = engine["balancer_shafts"]
+    assert shaft["speed_ratio"] == -1 and shaft["turning"] == "against"
+    assert_allclose([m["mass_eccentricity_kgm"] for m in shaft["masses"]], [0.007, 0.007], rtol=1e-9)
+    assert_allclose([m["phase_deg"] for m in shaft["masses"]], [180.0, 90.0], atol=1e-9)
+    assert_allclose([m["z_m"] for m in shaft["masses"]], [0.0, 0.08], atol=1e-12)
+    assert engine["after_shafts"]["orders"][0]["force"]["max_N"] == 0.0
+    assert engine["after_shafts"]["orders"][0]["moment"]["max_Nm"] == 0.0
