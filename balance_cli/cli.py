@@ -292,6 +292,31 @@ def _orders_option(text):
                                  param_hint="--shafts") from None
 
 
+def _shaft_offsets_option(texts):
+    """``--shaft-offset [RATIO:]LATERAL,VERTICAL`` (repeatable) as the library's mapping:
+    without RATIO the offset of every shaft not named."""
+    offsets = {}
+    for text in texts:
+        ratio, _, lengths = text.rpartition(":")
+        key = None
+        if ratio.strip():
+            try:
+                key = int(ratio)
+            except ValueError:
+                raise click.BadParameter(f"{text!r}: the speed ratio before ':' must be a whole "
+                                         "number such as +2 or -2", param_hint="--shaft-offset") from None
+        parts = lengths.split(",")
+        if len(parts) != 2:
+            raise click.BadParameter(f"{text!r}: give LATERAL,VERTICAL such as '120 mm,-80 mm', "
+                                     "optionally after a speed ratio ('-2:120 mm,-80 mm')",
+                                     param_hint="--shaft-offset")
+        if key in offsets:
+            which = "every shaft" if key is None else f"speed ratio {key:+d}"
+            raise click.BadParameter(f"{which} is placed twice", param_hint="--shaft-offset")
+        offsets[key] = tuple(_length_option(p.strip(), "--shaft-offset") for p in parts)
+    return offsets or None
+
+
 def _length_option(text, flag):
     if text is None:
         return None
@@ -313,6 +338,10 @@ def _length_option(text, flag):
                    "throw (0.5 is the classic single's), instead of cancelling the forward first order.")
 @click.option("--shafts", metavar="K[,K...]",
               help="Cancel these residual orders with balancer shafts (k× speed, with or against the crank).")
+@click.option("--shaft-offset", "shaft_offsets", multiple=True, metavar="[RATIO:]LATERAL,VERTICAL",
+              help="Put the shafts' axes off the crank axis, e.g. '120 mm,-80 mm' (lateral along the "
+                   "engine's horizontal, vertical along its vertical); '-2:…' places only the shaft "
+                   "of speed ratio −2. Repeatable. Reports the rolling moment the offsets leave.")
 @click.option("--antivibrateur", "antivibrateur", is_flag=True,
               help="Add Fraeys de Veubeke's rotor on the crank pin (twice crank speed), sized to "
                    "cancel the forward second order (single-throw engines with a turning crank).")
@@ -327,13 +356,14 @@ def _length_option(text, flag):
 @_SPEED
 @_FORMAT
 @_OUTPUT
-def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, antivibrateur_radius,
-                  test_masses, samples, max_order, absolute, units, speed, fmt, output):
+def counterweight(paths, planes, radius, balance_factor, shafts, shaft_offsets, antivibrateur,
+                  antivibrateur_radius, test_masses, samples, max_order, absolute, units, speed, fmt,
+                  output):
     """Counterweights that cancel the forward first order, and what is left.
 
     Two planes cancel the forward first-order force and moment; one plane the force only.
-    Optionally: balancer shafts for residual orders, the antivibrateur of radial engines, and
-    the balancing-machine test masses.
+    Optionally: balancer shafts for residual orders (placed off the crank axis with
+    --shaft-offset), the antivibrateur of radial engines, and the balancing-machine test masses.
     """
     files = _inputs(paths)
     _guard([output], files)
@@ -342,13 +372,15 @@ def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, 
     orders = _orders_option(shafts)
     radius_m = _length_option(radius, "--radius")
     rotor = _length_option(antivibrateur_radius, "--antivibrateur-radius") if antivibrateur else None
-    with _reported():
-        check_options(radius_m, balance_factor, orders, rotor, max_order)
+    offsets = _shaft_offsets_option(shaft_offsets)
+    flags = {"shaft_offsets": "--shaft-offset"}
+    with _reported(flags=flags):
+        check_options(radius_m, balance_factor, orders, rotor, max_order, offsets)
     engines = _load_all(files, speed)
 
     def work(engine):
         return counterweights(engine, plane_specs, radius_m, balance_factor, orders, rotor,
-                              test_masses, samples, max_order)
+                              test_masses, samples, max_order, offsets)
 
     balances = _run_each(engines, "Balancing", work)
     scale = Scale.of(absolute, units)

@@ -288,14 +288,81 @@ WEIGHT_COLUMNS = [
     ("radius_m", "Radius (mm)", lambda v: f"{m_to_mm(v):g}"),
     ("angle_deg", "Angle (° from throw 1)", lambda v: f"{round_degrees(v, 2):.2f}"),
 ]
+#: one row per mass of a balancer shaft (``Balance.to_dict``'s ``balancer_shafts``, each mass
+#: record with its shaft's ``shaft`` number, ``speed_ratio`` and ``offset_m``; None on the
+#: shaft's second mass and after, so that a shaft reads as one block)
 SHAFT_COLUMNS = [
-    ("order", "Order", str),
-    ("speed_ratio", "Speed ratio", lambda v: f"{v:+d}"),
-    ("speed_ratio", "Turning", lambda v: "with the crank" if v > 0 else "against the crank"),
-    ("mass_eccentricity_kgm", "m·e (kg·mm)", lambda v: f"{m_to_mm(v):.3f}"),
-    ("phase_deg", "Phase at θ = 0 (°)", lambda v: f"{round_degrees(v, 2):.2f}"),
+    ("shaft", "Shaft", lambda v: "" if v is None else str(v)),
+    ("speed_ratio", "Speed ratio", lambda v: "" if v is None else f"{v:+d}"),
+    ("speed_ratio", "Turning",
+     lambda v: "" if v is None else "with the crank" if v > 0 else "against the crank"),
+    ("offset_m", "Offset lateral, vertical (mm)",
+     lambda v: "" if v is None else f"{m_to_mm(v['lateral']):g}, {m_to_mm(v['vertical']):g}"),
+    ("mass_eccentricity_kgm", "m·e (kg·m)", lambda v: _significant(v)),
+    ("phase_deg", "Angle at θ = 0 (°)", lambda v: f"{round_degrees(v, 2):.2f}"),
     ("z_m", "z (mm)", lambda v: f"{m_to_mm(v):g}"),
 ]
+
+
+def _significant(value, figures=4):
+    """``figures`` significant figures, without an exponent from 1e-4 up (0.003640, 642.6,
+    4980395): a row of zeros after the point is harder to read than 2.155e-05."""
+    if value == 0 or not math.isfinite(value):
+        return f"{value:g}"
+    if abs(value) < 1e-4:
+        return f"{value:.{figures - 1}e}"
+    decimals = max(0, figures - 1 - math.floor(math.log10(abs(value))))
+    return f"{value:.{decimals}f}"
+
+
+def _shaft_rows(shafts):
+    """The mass records of ``balancer_shafts``, each with its shaft's columns on its first."""
+    rows = []
+    for number, shaft in enumerate(shafts, 1):
+        for i, mass in enumerate(shaft["masses"]):
+            first = i == 0
+            rows.append({**mass, "shaft": number if first else None,
+                         "speed_ratio": shaft["speed_ratio"] if first else None,
+                         "offset_m": shaft["offset_m"] if first else None})
+    return rows
+
+
+def _rolling_lines(record, scale, fmt):
+    """The rolling moment the shafts' offsets leave, or why there is none."""
+    shafts = record["balancer_shafts"]
+    if all(s["offset_m"]["lateral"] == 0 and s["offset_m"]["vertical"] == 0 for s in shafts):
+        return ["Rolling moment about the crank axis: none; the shafts sit on the crank axis, and "
+                "a centred shaft's force passes through it.", ""]
+    rows = []
+    for total in record["shaft_rolling_moments"]:
+        mine = [(n, s) for n, s in enumerate(shafts, 1) if s["order"] == total["order"]]
+        if all(s["offset_m"]["lateral"] == 0 and s["offset_m"]["vertical"] == 0 for _, s in mine):
+            continue
+        for number, shaft in mine:
+            m = shaft["rolling_moment"]
+            rows.append([str(total["order"]), f"{number} ({shaft['speed_ratio']:+d})",
+                         _significant(scale.moment(m["amplitude_Nm"])),
+                         f"{round_degrees(m['phase_deg'], 2):.2f}"])
+        if len(mine) > 1:
+            rows.append([str(total["order"]),
+                         " and ".join(f"{n}" for n, _ in mine) + " together",
+                         _significant(scale.moment(total["amplitude_Nm"])),
+                         f"{round_degrees(total['phase_deg'], 2):.2f}"])
+    return ["Rolling moment about the crank axis from the shafts' forces at their offsets "
+            "(M = amplitude·cos(kθ − phase), positive with rotation, as the frame torque of "
+            "balance torque; a centred shaft makes none, and orders whose shafts are all "
+            "centred are left out):", "",
+            render(["Order", "Shaft", f"Amplitude ({scale.moment_label})", "Phase (°)"], rows, fmt),
+            ""]
+
+
+def _left(name, stage, records, n_unit, scale, fmt):
+    """The orders left after ``stage``, or the words that nothing is."""
+    rows = order_rows(name, records, n_unit, scale)
+    if not rows:
+        return [f"After the {stage}, nothing is left up to order {len(records)}: every force and "
+                "moment is zero.", ""]
+    return [f"Left after the {stage}:", "", render(order_headers(scale), rows, fmt), ""]
 
 
 def _record_table(records, columns, fmt):
@@ -330,7 +397,7 @@ def balance_tables(balances, scale, fmt):
         a = record["antivibrateur"]
         if a is not None:
             out += [f"Antivibrateur on the crank pin, turning at twice crank speed with the crank: "
-                    f"M·e = {m_to_mm(a['mass_eccentricity_kgm']):.2f} kg·mm (M = {a['mass_kg']:.4f} "
+                    f"M·e = {_significant(a['mass_eccentricity_kgm'])} kg·m (M = {a['mass_kg']:.4f} "
                     f"kg at e = {m_to_mm(a['eccentricity_m']):g} mm), at "
                     f"{round_degrees(a['phase_deg'], 2):.2f}° when θ = 0; the counterweights above "
                     "include its mass.", ""]
@@ -340,19 +407,22 @@ def balance_tables(balances, scale, fmt):
                 f"backward {scale.force(f['backward_N'], n_unit):.4g} ({unit}; no counterweight "
                 f"touches the backward part); moment {scale.moment(m['forward_Nm']):.4g} forward, "
                 f"{scale.moment(m['backward_Nm']):.4g} backward ({scale.moment_label}).", ""]
-        out += ["Left after the counterweights:", "",
-                render(order_headers(scale),
-                       order_rows(record["name"], record["residual"]["orders"], n_unit, scale), fmt),
-                ""]
-        if "after_shafts" in record and not record["shafts"]:
+        out += _left(record["name"], "counterweights", record["residual"]["orders"], n_unit,
+                     scale, fmt)
+        if "after_shafts" in record and not record["balancer_shafts"]:
             out += ["Balancer shafts: none needed; the orders asked for are already zero.", ""]
         elif "after_shafts" in record:
-            out += ["Balancer shafts:", "",
-                    _record_table(record["shafts"], SHAFT_COLUMNS, fmt), "",
-                    "Left after the shafts:", "",
-                    render(order_headers(scale),
-                           order_rows(record["name"], record["after_shafts"]["orders"], n_unit, scale),
-                           fmt), ""]
+            out += ["Balancer shafts as built (each mass's m·e, its angle from the reference axis "
+                    "when θ = 0, positive with rotation, and its axial position):", "",
+                    _record_table(_shaft_rows(record["balancer_shafts"]), SHAFT_COLUMNS, fmt), ""]
+            built = {s["order"] for s in record["balancer_shafts"]}
+            idle = [k for k in record.get("shaft_orders", []) if k not in built]
+            if idle:
+                out += [f"Order{'s' if len(idle) > 1 else ''} {', '.join(map(str, idle))}: no "
+                        "shaft needed, already zero.", ""]
+            out += _rolling_lines(record, scale, fmt)
+            out += _left(record["name"], "shafts", record["after_shafts"]["orders"], n_unit,
+                         scale, fmt)
         if "test_masses_kg" in record:
             rows = [[str(i + 1), f"{m:.4f}"] for i, m in enumerate(record["test_masses_kg"])]
             out += ["Balancing-machine test masses (hang on each crank pin; the crankshaft's own "
