@@ -12,7 +12,7 @@ from tabulate import tabulate
 from ..units import kg_to_g, m_to_mm, pa_to_bar, rad_s_to_rpm, round_degrees, significant
 from .display import Scale, figure, markdown_text, plain_text
 
-__all__ = ["render", "compare_parts", "compare_tables", "order_rows", "order_headers",
+__all__ = ["render", "compare_parts", "compare_tables", "part_rows", "part_headers", "order_parts",
            "balance_tables", "balance_summary", "list_table", "show_table", "regression_tables",
            "torque_tables", "torque_summary", "steadiness_text", "search_tables", "search_summary",
            "search_rows"]
@@ -43,25 +43,6 @@ def order_values(record, unit_n, scale):
     return ([scale.force(f[k], unit_n) for k in ("forward_N", "backward_N", "max_N", "min_N")]
             + [f["axis_deg"]]
             + [scale.moment(m[k]) for k in ("forward_Nm", "backward_Nm", "max_Nm")])
-
-
-def order_rows(name, records, unit_n, scale):
-    """Text rows (engine, order, force fwd/bwd/max/min/axis, moment fwd/bwd/max) of the order
-    records that are not zero (the records hold noise as exact zeros)."""
-    rows = []
-    for record in records:
-        if record["force"]["max_N"] == 0.0 and record["moment"]["max_Nm"] == 0.0:
-            continue
-        v = order_values(record, unit_n, scale)
-        rows.append([name, str(record["order"])] + [figure(x) for x in v[:4]]
-                    + [_axis_text(v[4])] + [figure(x) for x in v[5:]])
-    return rows
-
-
-def order_headers(scale):
-    fl, ml = scale.force_label, scale.moment_label
-    return ["Engine", "Order", f"F fwd ({fl})", f"F bwd ({fl})", f"F max ({fl})", f"F min ({fl})",
-            "F axis (°)", f"M fwd ({ml})", f"M bwd ({ml})", f"M max ({ml})"]
 
 
 #: the columns of a part's table: (record key without unit, heading)
@@ -284,7 +265,7 @@ def show_table(engine, firing):
 WEIGHT_COLUMNS = [
     ("throw", "Throw", lambda v: "-" if v is None else str(v)),
     ("z_m", "z (mm)", lambda v: f"{m_to_mm(v):g}"),
-    ("mass_kg", "Mass (kg)", lambda v: f"{v:.4f}"),
+    ("mass_kg", "Mass (kg)", figure),
     ("radius_m", "Radius (mm)", lambda v: f"{m_to_mm(v):g}"),
     ("angle_deg", "Angle (° from throw 1)", lambda v: f"{round_degrees(v, 2):.2f}"),
 ]
@@ -298,21 +279,10 @@ SHAFT_COLUMNS = [
      lambda v: "" if v is None else "with the crank" if v > 0 else "against the crank"),
     ("offset_m", "Offset lateral, vertical (mm)",
      lambda v: "" if v is None else f"{m_to_mm(v['lateral']):g}, {m_to_mm(v['vertical']):g}"),
-    ("mass_eccentricity_kgm", "m·e (kg·m)", lambda v: _significant(v)),
+    ("mass_eccentricity_kgm", "m·e (kg·m)", figure),
     ("phase_deg", "Angle at θ = 0 (°)", lambda v: f"{round_degrees(v, 2):.2f}"),
     ("z_m", "z (mm)", lambda v: f"{m_to_mm(v):g}"),
 ]
-
-
-def _significant(value, figures=4):
-    """``figures`` significant figures, without an exponent from 1e-4 up (0.003640, 642.6,
-    4980395): a row of zeros after the point is harder to read than 2.155e-05."""
-    if value == 0 or not math.isfinite(value):
-        return f"{value:g}"
-    if abs(value) < 1e-4:
-        return f"{value:.{figures - 1}e}"
-    decimals = max(0, figures - 1 - math.floor(math.log10(abs(value))))
-    return f"{value:.{decimals}f}"
 
 
 def _shaft_rows(shafts):
@@ -341,12 +311,12 @@ def _rolling_lines(record, scale, fmt):
         for number, shaft in mine:
             m = shaft["rolling_moment"]
             rows.append([str(total["order"]), f"{number} ({shaft['speed_ratio']:+d})",
-                         _significant(scale.moment(m["amplitude_Nm"])),
+                         figure(scale.moment(m["amplitude_Nm"])),
                          f"{round_degrees(m['phase_deg'], 2):.2f}"])
         if len(mine) > 1:
             rows.append([str(total["order"]),
                          " and ".join(f"{n}" for n, _ in mine) + " together",
-                         _significant(scale.moment(total["amplitude_Nm"])),
+                         figure(scale.moment(total["amplitude_Nm"])),
                          f"{round_degrees(total['phase_deg'], 2):.2f}"])
     return ["Rolling moment about the crank axis from the shafts' forces at their offsets "
             "(M = amplitude·cos(kθ − phase), positive with rotation, as the frame torque of "
@@ -357,12 +327,17 @@ def _rolling_lines(record, scale, fmt):
 
 
 def _left(name, stage, records, n_unit, scale, fmt):
-    """The orders left after ``stage``, or the words that nothing is."""
-    rows = order_rows(name, records, n_unit, scale)
-    if not rows:
+    """The orders left after ``stage`` (forces, then moments), or the words that nothing is."""
+    forces = part_rows(name, records, n_unit, scale, "force")
+    moments = part_rows(name, records, n_unit, scale, "moment")
+    if not forces and not moments:
         return [f"After the {stage}, nothing is left up to order {len(records)}: every force and "
                 "moment is zero.", ""]
-    return [f"Left after the {stage}:", "", render(order_headers(scale), rows, fmt), ""]
+    out = [f"Left after the {stage}:", ""]
+    for rows, part, none in ((forces, "force", "no force"), (moments, "moment", "no moment")):
+        out += ([render(part_headers(scale, part), rows, fmt), ""] if rows
+                else [f"({none} in any order up to {len(records)})", ""])
+    return out
 
 
 def _record_table(records, columns, fmt):
@@ -397,7 +372,7 @@ def balance_tables(balances, scale, fmt):
         a = record["antivibrateur"]
         if a is not None:
             out += [f"Antivibrateur on the crank pin, turning at twice crank speed with the crank: "
-                    f"M·e = {_significant(a['mass_eccentricity_kgm'])} kg·m (M = {a['mass_kg']:.4f} "
+                    f"M·e = {figure(a['mass_eccentricity_kgm'])} kg·m (M = {a['mass_kg']:.4f} "
                     f"kg at e = {m_to_mm(a['eccentricity_m']):g} mm), at "
                     f"{round_degrees(a['phase_deg'], 2):.2f}° when θ = 0; the counterweights above "
                     "include its mass.", ""]
