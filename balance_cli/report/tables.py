@@ -372,16 +372,17 @@ def balance_tables(balances, scale, fmt):
         a = record["antivibrateur"]
         if a is not None:
             out += [f"Antivibrateur on the crank pin, turning at twice crank speed with the crank: "
-                    f"M·e = {figure(a['mass_eccentricity_kgm'])} kg·m (M = {a['mass_kg']:.4f} "
+                    f"M·e = {figure(a['mass_eccentricity_kgm'])} kg·m (M = {figure(a['mass_kg'])} "
                     f"kg at e = {m_to_mm(a['eccentricity_m']):g} mm), at "
                     f"{round_degrees(a['phase_deg'], 2):.2f}° when θ = 0; the counterweights above "
                     "include its mass.", ""]
         first = record["residual"]["orders"][0]
         f, m = first["force"], first["moment"]
-        out += [f"First order left: forward {scale.force(f['forward_N'], n_unit):.4g}, "
-                f"backward {scale.force(f['backward_N'], n_unit):.4g} ({unit}; no counterweight "
-                f"touches the backward part); moment {scale.moment(m['forward_Nm']):.4g} forward, "
-                f"{scale.moment(m['backward_Nm']):.4g} backward ({scale.moment_label}).", ""]
+        out += [f"First order left: forward {figure(scale.force(f['forward_N'], n_unit))}, "
+                f"backward {figure(scale.force(f['backward_N'], n_unit))} ({unit}; no counterweight "
+                f"touches the backward part); moment {figure(scale.moment(m['forward_Nm']))} "
+                f"forward, {figure(scale.moment(m['backward_Nm']))} backward "
+                f"({scale.moment_label}).", ""]
         out += _left(record["name"], "counterweights", record["residual"]["orders"], n_unit,
                      scale, fmt)
         if "after_shafts" in record and not record["balancer_shafts"]:
@@ -399,7 +400,7 @@ def balance_tables(balances, scale, fmt):
             out += _left(record["name"], "shafts", record["after_shafts"]["orders"], n_unit,
                          scale, fmt)
         if "test_masses_kg" in record:
-            rows = [[str(i + 1), f"{m:.4f}"] for i, m in enumerate(record["test_masses_kg"])]
+            rows = [[str(i + 1), figure(m)] for i, m in enumerate(record["test_masses_kg"])]
             out += ["Balancing-machine test masses (hang on each crank pin; the crankshaft's own "
                     "unbalance excluded):", "",
                     render(["Throw", "Mass (kg)"], rows, fmt), ""]
@@ -414,11 +415,11 @@ def balance_summary(balances):
         n_unit = b.engine.per_cylinder_unit_n
         first = record["residual"]["orders"][0]["force"]
         weights = "; ".join(
-            f"{c['mass_kg']:.4g} kg at {round_degrees(c['angle_deg'], 1):.1f}° ({_plane_text(c)})"
+            f"{figure(c['mass_kg'])} kg at {round_degrees(c['angle_deg'], 1):.1f}° ({_plane_text(c)})"
             for c in record["counterweights"])
-        rows.append([record["name"], weights, f"{first['forward_N'] / n_unit:.4f}",
-                     f"{first['backward_N'] / n_unit:.4f}",
-                     f"{record['residual']['largest_resultant_N'] / n_unit:.4f}"])
+        rows.append([record["name"], weights, figure(first['forward_N'] / n_unit),
+                     figure(first['backward_N'] / n_unit),
+                     figure(record['residual']['largest_resultant_N'] / n_unit)])
     headers = ["Engine", "Counterweights at crank radius", "1st order left fwd (per cyl)",
                "1st order bwd (per cyl)", "Largest resultant left (per cyl)"]
     return headers, rows
