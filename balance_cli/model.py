@@ -302,10 +302,22 @@ class Engine:
         leave the reference axis itself."""
         if self.vertical_rad is not None:
             return self.vertical_rad
-        total = sum(complex(math.cos(a), math.sin(a)) for a in self.bank_angles_rad)
+        total = self._banks_sum()
         if abs(total) < 1e-9 * len(self.bank_angles_rad):
             return 0.0
         return math.atan2(total.imag, total.real)
+
+    @property
+    def vertical_origin(self) -> str:
+        """Where :attr:`vertical_axis_rad` comes from, in words."""
+        if self.vertical_rad is not None:
+            return "given"
+        if abs(self._banks_sum()) < 1e-9 * len(self.bank_angles_rad):
+            return "the reference axis: the banks' directions add up to nothing"
+        return "the banks' bisector" if len(self.bank_angles_rad) > 1 else "the cylinder axis"
+
+    def _banks_sum(self):
+        return sum(complex(math.cos(a), math.sin(a)) for a in self.bank_angles_rad)
 
     @property
     def n_cylinders(self) -> int:

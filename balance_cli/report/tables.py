@@ -234,6 +234,8 @@ def show_table(engine, firing):
         f"{rad_s_to_rpm(engine.speed_rad_s):g} rpm",
         f"  crank radius:  {_mm(engine.crank_radius_m)}, rod {_mm(engine.rod_length_m)}, "
         f"pin offset {_mm(engine.pin_offset_m)}",
+        f"  vertical:      {math.degrees(engine.vertical_axis_rad):g}° from the reference axis "
+        f"({engine.vertical_origin})",
         f"  masses:        reciprocating {kg_to_g(engine.mean_reciprocating_kg):g} g mean per "
         f"cylinder, rotating {kg_to_g(engine.rotating_kg):g} g and crank "
         f"{kg_to_g(engine.crank_kg):g} g per throw"
