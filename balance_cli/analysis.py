@@ -24,6 +24,9 @@ READABLE_VERSIONS = (1, 2)
 
 #: an ellipse's axis within this of the vertical or the horizontal is called so in words
 _DIRECTION_WORD_DEG = 1.0
+#: an ellipse whose min is at least this fraction of its max is called nearly rotating: its
+#: axis barely matters to the mounts
+_NEARLY_ROUND = 0.9
 
 
 @dataclass(frozen=True)
@@ -97,8 +100,10 @@ class EngineResult:
         """The order that contributes most to the counterweighted ``part`` ("force" or
         "moment"): ``order``, ``max`` (N or N·m, the ellipse's largest value, the forward first
         order left out where a counterweight takes it), ``axis_deg`` (None: it turns) and
-        ``direction`` in words ("vertical", "horizontal", "rotating" or "+30° from vertical",
-        positive with rotation; for a moment "pitching", "yawing", "+30° from pitching"). None when nothing is left."""
+        ``direction`` in words: "rotating forward" or "rotating backward" for a circle (and
+        "nearly rotating ..." when min ≥ 0.9·max), else "vertical", "horizontal" or "+30° from
+        vertical" (positive with rotation; for a moment "pitching", "yawing", "+30° from
+        pitching"). None when nothing is left."""
         if part not in ("force", "moment"):
             raise AnalysisError(f'must be "force" or "moment", got {part!r}', "part")
         engine = self.engine
@@ -112,10 +117,14 @@ class EngineResult:
                 forward = 0j
             values = part_values(forward, backward, floor, unit, engine.vertical_axis_rad)
             if values[f"max_{unit}"] > (best["max"] if best else 0.0):
-                best = {"order": o.order, "max": values[f"max_{unit}"], "axis_deg": values["axis_deg"]}
+                best = {"order": o.order, "max": values[f"max_{unit}"], "axis_deg": values["axis_deg"],
+                        "min": values[f"min_{unit}"],
+                        "sense": "forward" if values[f"forward_{unit}"] >= values[f"backward_{unit}"]
+                        else "backward"}
         if best is None:
             return None
-        best["direction"] = _direction_words(best["axis_deg"], engine.vertical_axis_rad, part)
+        best["direction"] = _direction_words(best, engine.vertical_axis_rad, part)
+        del best["min"], best["sense"]
         return best
 
     def to_dict(self, reference: "EngineResult | None" = None) -> dict:
@@ -169,10 +178,14 @@ def _main_record(main, unit):
             "direction": main["direction"]}
 
 
-def _direction_words(axis_deg, vertical_rad, part):
-    """An ellipse's axis in words, from the engine's vertical."""
+def _direction_words(main, vertical_rad, part):
+    """An order's ellipse in words: turning (and which way) when it is a circle or nearly one,
+    else its axis from the engine's vertical."""
+    axis_deg = main["axis_deg"]
     if axis_deg is None:
-        return "rotating"
+        return f"rotating {main['sense']}"
+    if main["min"] >= _NEARLY_ROUND * main["max"]:
+        return f"nearly rotating {main['sense']}"
     off = (axis_deg - math.degrees(vertical_rad)) % 180.0
     names = ("vertical", "horizontal") if part == "force" else ("pitching", "yawing")
     if min(off, 180.0 - off) <= _DIRECTION_WORD_DEG:

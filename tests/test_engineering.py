@@ -83,7 +83,7 @@ def test_twin_180_primary_couple_pitches_and_the_summary_names_it():
     assert moment["horizontal_Nm"] == 0.0
     assert_allclose([moment["forward_Nm"], moment["backward_Nm"]], [UNIT * D / 2] * 2, rtol=RTOL)
     main_moment = result.to_dict()["main_moment_order"]
-    assert main_moment["order"] == 1 and main_moment["direction"] == "rotating"
+    assert main_moment["order"] == 1 and main_moment["direction"] == "rotating backward"
     assert_allclose(main_moment["max_Nm"], UNIT * D / 2, rtol=RTOL)
     assert_allclose(result.counterweighted_moment_nm, UNIT * D / 2, rtol=1e-6)
     # without a counterweight the largest moment is the whole couple (all orders: the twin's
