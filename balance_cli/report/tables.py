@@ -153,7 +153,7 @@ def compare_parts(comparison, scale):
                                    record["counterweighted_moment_Nm"])])
     notes = ["Largest: the resultant's largest magnitude over a revolution, all orders; main "
              "order: the order with the largest ellipse, its max and direction (rotating: a "
-             "circle). A turning crank's ideal counterweight has taken the forward first order of "
+             "circle, turning with the crank (forward) or against it (backward)). A turning crank's ideal counterweight has taken the forward first order of "
              "force and moment away (a rotary's crank does not turn)."]
     if any(record["percent_of_reference"] is None for record in records):
         notes.append("n/a: the reference engine has no resultant to compare with.")
