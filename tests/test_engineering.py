@@ -263,3 +263,44 @@ def test_json_version_2_and_regress_reads_version_1(monkeypatch):
     assert json.loads(old.read_text(encoding="utf-8"))["balance_version"] == 1
     out = run("regress", old)
     assert out.exit_code == 0, out.output
+
+
+def test_every_command_that_prints_forces_takes_units(twin, tmp_path):
+    """--units kN on counterweight, torque, regress and report: headings in kN and kN·m, and
+    the figures a thousandth of the newtons (hand factor 1e3)."""
+    out = run("counterweight", twin, "--units", "kn")
+    assert out.exit_code == 0 and "(kN)" in out.output and "(kN·m)" in out.output
+    torque = run("torque", twin, "--units", "kN")
+    assert torque.exit_code == 0 and "Range ΔC (kN·m)" in torque.output
+    newtons = json.loads(run("torque", twin, "--format", "json").output)["engines"][0]
+    row = next(line for line in torque.output.splitlines() if line.startswith("inertia"))
+    shown = float(re.split(r"\s{2,}", row)[2].replace(" ", ""))
+    assert_allclose(shown * 1e3, newtons["inertia"]["max_Nm"], rtol=5e-4)
+    baseline = tmp_path / "base.json"
+    baseline.write_text(run("compare", twin, "--format", "json").output, encoding="utf-8")
+    heavier = tmp_path / "heavier.toml"
+    heavier.write_text(TWIN.replace('"500 g"', '"600 g"'), encoding="utf-8")
+    moved = run("regress", baseline, heavier, "--units", "kN")
+    assert moved.exit_code == 1 and "kN for *_N and kN·m for *_Nm" in moved.output
+    report = run("report", twin, "--output", tmp_path / "r", "--units", "kN")
+    assert report.exit_code == 0, report.output
+    assert "Mean (kN·m)" in (tmp_path / "r" / "report.md").read_text(encoding="utf-8")
+
+
+def test_search_takes_units_and_speed(tmp_path):
+    """--speed on a template: the listed arrangement's forces follow ω² (×4 at twice the
+    speed), and --write writes the speed asked for."""
+    template = "templates/inline-3-2stroke.toml"
+    slow = json.loads(run("search", template, "--top", "1", "--format", "json").output)
+    fast = run("search", template, "--top", "1", "--format", "json", "--speed", "2x")
+    assert fast.exit_code == 1 and "--speed" in fast.output
+    base = balance.load_template(template)[0].speed_rad_s * 30 / math.pi
+    fast = json.loads(run("search", template, "--top", "1", "--format", "json",
+                          "--speed", f"{2 * base} rpm", "--write", tmp_path).output)
+    a, b = slow["results"][0], fast["results"][0]
+    assert_allclose(b["orders"][0]["moment"]["max_Nm"], 4 * a["orders"][0]["moment"]["max_Nm"],
+                    rtol=1e-12)
+    assert balance.load(tmp_path / "arrangement-01.toml").speed_rad_s == pytest.approx(
+        2 * base * math.pi / 30, rel=1e-12)
+    table = run("search", template, "--top", "1", "--units", "kN")
+    assert table.exit_code == 0 and "(kN·m)" in table.output
