@@ -240,8 +240,13 @@ def spectrum(results: "Iterable[EngineResult]", units: str = "per-cylinder",
 
     data = spectrum_data(results, units)
     panels = 2 if data["has_moments"] else 1
+    # the legend below the panels, in columns across the width (beside them it took a
+    # quarter of the width whatever the names' lengths)
+    names = [e["name"] for e in data["engines"]]
+    columns = 3 if max(len(n) for n in names) <= 52 else 2
+    legend_in = 0.15 + 0.18 * math.ceil((len(names) + 2) / columns)
     if fig is None:
-        fig = _new_figure((12, 8 if panels == 2 else 4.5))
+        fig = _new_figure((12, (8 if panels == 2 else 4.5) + legend_in))
     axes = fig.subplots(panels, 1, sharex=True, squeeze=False)[:, 0]
     orders = data["orders"]
     n = len(data["engines"])
@@ -278,9 +283,12 @@ def spectrum(results: "Iterable[EngineResult]", units: str = "per-cylinder",
     if panels == 1:
         title += "\nno engine has a free moment above that floor"
     axes[0].set_title(title, y=1.0)
-    fig.legend(handles=handles, loc="center right", fontsize=8, frameon=False)
-    fig.subplots_adjust(left=0.07, right=0.72, top=0.93 if panels == 2 else 0.84,
-                        bottom=0.08 if panels == 2 else 0.14, hspace=0.08)
+    height = fig.get_size_inches()[1]
+    fig.legend(handles=handles, loc="upper center", ncol=columns, fontsize=8, frameon=False,
+               bbox_to_anchor=(0.5, legend_in / height))
+    # inches: the title above; tick labels and "order" below, then the legend
+    fig.subplots_adjust(left=0.07, right=0.98, top=1 - (0.56 if panels == 2 else 0.72) / height,
+                        bottom=(legend_in + 0.63) / height, hspace=0.08)
     return fig
 
 
@@ -303,14 +311,13 @@ def star_chains(result, order, of="force"):
     (z_i − z̄)·F_i, N·m. Shares below the noise floor are left out."""
     _quantity(of)
     _results([result], order)
-    engine = result.engine
     if of == "force":
         shares = result.shaking.cylinder_phasors(order)
         unit = result.per_cylinder_unit_n
-        floor = engine.noise_floor_n / unit
     else:
-        shares = result.shaking.cylinder_moment_phasors(order, engine.mean_z_m)
-        unit, floor = 1.0, moment_floor_nm(engine)
+        shares = result.shaking.cylinder_moment_phasors(order, result.engine.mean_z_m)
+        unit = 1.0
+    floor = _star_floor(result, of)
     chains = {}
     for part, index in (("forward", 1), ("backward", 2)):
         tip, arrows = 0j, []
@@ -322,6 +329,22 @@ def star_chains(result, order, of="force"):
             tip += phasor
         chains[part] = arrows
     return chains
+
+
+def _star_floor(result, of):
+    """The noise floor in the units of :func:`star_chains`."""
+    if of == "force":
+        return result.engine.noise_floor_n / result.per_cylinder_unit_n
+    return moment_floor_nm(result.engine)
+
+
+def _magnitude(value, unit):
+    """|Σ| of the star: four decimals of m_rec·r·ω²·n, or four significant figures of N·m
+    without an exponent above 10⁴ (a marine couple reads 4980395, not 4.98e+06)."""
+    if not unit:
+        return f"{value:.4f}"
+    text = f"{value:.0f}" if value >= 1e4 else "0" if value == 0 else f"{value:.4g}"
+    return f"{text} {unit}"
 
 
 #: font size of the star's cylinder labels (points), and their gap from their arrow (points)
@@ -445,6 +468,9 @@ def star(results: "Iterable[EngineResult]", order: int = 2, fig: "Figure | None"
         for row, (part, colour) in enumerate(parts):
             arrows = chains[part]
             end = arrows[-1][2] if arrows else 0j
+            # shares above the floor may still cancel to rounding noise
+            if abs(end) < _star_floor(r, of):
+                end = 0j
             if arrows:
                 tails = np.array([a[1] for a in arrows])
                 steps = np.array([a[2] for a in arrows]) - tails
@@ -454,8 +480,7 @@ def star(results: "Iterable[EngineResult]", order: int = 2, fig: "Figure | None"
             ax.plot([0, end.imag], [0, end.real], linestyle="--", color=colour, linewidth=1.4)
             # a text, not a legend: 17 legends cost more to lay out than the rest of the picture;
             # above the axes, where no chain runs
-            size = f"{abs(end):.4g} {unit}" if of == "moment" else f"{abs(end):.4f}"
-            ax.annotate(f"{part}: |Σ| = {size}", (0, 1), xycoords="axes fraction",
+            ax.annotate(f"{part}: |Σ| = {_magnitude(abs(end), unit)}", (0, 1), xycoords="axes fraction",
                         xytext=(0, 10 - 9 * row), textcoords="offset points", color=colour,
                         fontsize=7, va="bottom")
         ax.plot([0], [0], marker="o", color="k", markersize=3)
@@ -720,10 +745,12 @@ class _Panels:
     def label(self, x_in, y_in, text, **alignment):
         self.labels.add(*self.at(x_in, y_in), text, **alignment)
 
-    def panel(self, box_in, xlim, ylim, xticks, xlabels, yticks, ylabels, xlabel, ylabel):
+    def panel(self, box_in, xlim, ylim, xticks, xlabels, yticks, ylabels, xlabel, ylabel,
+              xminor=()):
         """A panel (``box_in``: left, bottom, width, height, inches) showing ``xlim`` × ``ylim``,
         with grid lines at the ticks, their labels (none where a label is empty) and axis
-        labels; returns the transform from its data to the figure."""
+        labels, and short tick marks below at ``xminor``; returns the transform from its data
+        to the figure."""
         from matplotlib.transforms import Bbox, BboxTransform
 
         left, bottom, width, height = box_in
@@ -741,6 +768,11 @@ class _Panels:
             if label:
                 self.label(left - 0.04, fy * self.size[1], label, ha="right", va="center")
         self.frames.append([(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)])
+        # ticks in the frame's path: inward from the bottom edge, long at labels
+        for x, length in [(x, 0.06) for x, label in zip(xticks, xlabels) if label] \
+                + [(x, 0.03) for x in xminor]:
+            fx = x0 + (x1 - x0) * (x - xlim[0]) / (xlim[1] - xlim[0])
+            self.frames.append([(fx, y0), (fx, y0 + length / self.size[1])])
         self.label(left + width / 2, bottom - 0.19, xlabel, ha="center", va="top")
         self.label(left - 0.52, bottom + height / 2, ylabel, ha="left", va="center", rotation=90)
         return to_panel + self.fig.transSubfigure
@@ -826,15 +858,15 @@ def torque(results: "Iterable[TorqueResult]", units: str = "N", fig: "Figure | N
         ylim, yticks = _span(0.0, float(heights.max()), 2, floor=0.0)
         if not heights.any():
             yticks = []
-        # grid lines at whole orders (at most about 8 of them), labels at about 4 of those
-        every = max(1, math.ceil(highest / 8))
+        # whole orders labelled, with a grid line, a round step apart (at most 10 labels);
+        # the others, and a four-stroke's half orders, get a short tick only
+        every = next(n * 10 ** p for p in range(6) for n in (1, 2, 5) if highest / (n * 10 ** p) <= 10)
         xticks = np.arange(every, highest + 0.5 * every, every)
-        labelled = 1 if highest <= 5 else every * max(1, round(highest / every / 4))
+        minor = [x for x in np.arange(step, highest + 0.5 * step, step) if x % every]
         bars = panels.panel((x0 + left, top - cell_h + foot, cell_w - left - right, order_h),
-                            (0.0, highest + step), ylim, xticks,
-                            [f"{x:g}" if round(x) % labelled == 0 else "" for x in xticks], yticks,
+                            (0.0, highest + step), ylim, xticks, [f"{x:g}" for x in xticks], yticks,
                             ["" if y == 0 else _tick_text(y) for y in yticks],   # bars stand on 0
-                            "order of the total torque", f"amplitude ({unit})")
+                            "order of the total torque", f"amplitude ({unit})", xminor=minor)
         width = 0.7 * step
         corners = [[(k - width / 2, 0.0), (k + width / 2, 0.0), (k + width / 2, h), (k - width / 2, h)]
                    for k, h in zip(orders, heights) if h > 0]
