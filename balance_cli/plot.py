@@ -6,13 +6,15 @@ otherwise a new pyplot figure is made, so figures show inline in a notebook. Imp
 module never chooses a backend: that is the application's business (the command line uses Agg).
 
 Kinds: :func:`locus` (Tanaka's Fig. 9), :func:`spectrum`, :func:`star`, :func:`firing` (of
-:func:`balance_cli.analyse`'s results) and :func:`torque` (of :func:`balance_cli.torques.torque`'s).
+:func:`balance_cli.analyse`'s results) and :func:`torque` (of :func:`balance_cli.torques.torque`'s);
+``of="moment"`` makes the locus and the star those of the free moment instead of the force.
 :func:`save` writes a figure in the format its file name's extension names.
 """
 
 import math
 import os
 import sys
+import textwrap
 from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, cast
@@ -33,9 +35,9 @@ if TYPE_CHECKING:
     from .analysis import EngineResult
     from .torques import TorqueResult
 
-__all__ = ["KINDS", "FORMATS", "locus", "spectrum", "star", "firing", "torque", "save", "format_of",
-           "grid_size", "locus_points", "spectrum_data", "star_chains", "torque_data", "colours",
-           "short"]
+__all__ = ["KINDS", "FORMATS", "QUANTITIES", "locus", "spectrum", "star", "firing", "torque", "save",
+           "format_of", "grid_size", "locus_points", "spectrum_data", "star_chains", "torque_data",
+           "colours", "short", "place_labels", "moment_floor_nm"]
 
 KINDS = ("locus", "spectrum", "star", "firing", "torque")
 #: file formats :func:`save` writes (those of matplotlib's that need neither LaTeX nor a viewer
@@ -350,6 +352,8 @@ def _magnitude(value, unit):
 #: font size of the star's cylinder labels (points), and their gap from their arrow (points)
 STAR_LABEL_PT = 6.5
 STAR_LABEL_GAP_PT = 1.5
+#: characters of a star picture's title in a line: what 9-point text fits a cell's width
+STAR_TITLE_CHARS = 44
 #: an arrow shorter than this (points) gets no label: the eye cannot tell which arrow it names
 STAR_LABEL_MIN_PT = 5.0
 
@@ -386,21 +390,20 @@ def _crosses(box, p, q):
     return True
 
 
-def place_labels(segments, sizes, gap=STAR_LABEL_GAP_PT, shortest=STAR_LABEL_MIN_PT, taken=(),
-                 crowded=0.3):
+def place_labels(segments, sizes, gap=STAR_LABEL_GAP_PT, shortest=STAR_LABEL_MIN_PT, crowded=0.3):
     """Centres for labels of line ``segments`` ((x0, y0), (x1, y1)) of ``sizes`` (width,
     height), all in one unit (points or pixels) on equal axes; None for a label left out.
 
     The longest segments are labelled first. Each label sits beside its segment, at its
     middle or a third of the way from an end, on the side away from the centre of the whole
-    drawing first; a place that overlaps a label already placed (or a box of ``taken``) is
-    refused, and among the rest the one crossing the fewest segments wins; only segments of
-    at least ``crowded`` times the longest may have a label across another segment. A segment
-    with no such place, or shorter than ``shortest``, goes unlabelled: on a crowded star the
-    short arrows are the ones whose number matters least."""
+    drawing first; a place that overlaps a label already placed is refused, and among the
+    rest the one crossing the fewest segments wins; only segments of at least ``crowded``
+    times the longest may have a label across another segment. A segment with no such place,
+    or shorter than ``shortest``, goes unlabelled: on a crowded star the short arrows are the
+    ones whose number matters least."""
     points = np.array([p for segment in segments for p in segment], float).reshape(-1, 2)
     centre = points.mean(axis=0) if len(points) else np.zeros(2)
-    placed = [tuple(box) for box in taken]
+    placed: "list[tuple[float, float, float, float]]" = []
     found: "list[tuple[float, float] | None]" = [None] * len(segments)
     lengths = [math.dist(*segment) for segment in segments]
     for i in sorted(range(len(segments)), key=lambda i: -lengths[i]):
@@ -484,7 +487,12 @@ def star(results: "Iterable[EngineResult]", order: int = 2, fig: "Figure | None"
                         xytext=(0, 10 - 9 * row), textcoords="offset points", color=colour,
                         fontsize=7, va="bottom")
         ax.plot([0], [0], marker="o", color="k", markersize=3)
-        ax.set_title(short(r.engine.name), fontsize=9, y=1.0, pad=21)
+        if not (chains["forward"] or chains["backward"]):
+            ax.text(0.5, 0.4, f"no {'free moment' if of == 'moment' else 'force'} of order {order}",
+                    transform=ax.transAxes, ha="center", fontsize=8, color="0.4")
+        # two lines rather than one running into the next picture's title
+        ax.set_title(textwrap.fill(short(r.engine.name), STAR_TITLE_CHARS), fontsize=9, y=1.0,
+                     pad=21)
         # no axes (their ticks cost more than the rest of the picture): a scale bar instead
         ax.axis("off")
         _scale_bar(ax, chains, unit)

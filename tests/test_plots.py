@@ -792,3 +792,25 @@ def test_plot_command_draws_moments(tmp_path, couples):
                      "--order", "1", "--output", out)
         assert result.exit_code == 0, result.output
         assert "free moment" in out.read_text(encoding="utf-8")
+
+
+def test_star_titles_of_long_names_stay_apart(couples, tmp_path):
+    """Names cut to 60 characters wrap onto two lines instead of running into the next
+    picture's title; an engine with no moment says so."""
+    from dataclasses import replace
+
+    results = [analyse(replace(couples[key].engine, name=couples[key].engine.name
+                               + " with a very long descriptive name for the design review"))
+               for key in ("inline-3", "twin", "v8-cross")]
+    fig = plot.star(results + [analyse(load(RADIAL))], order=1, of="moment")
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    titles = [ax.title for ax in fig.axes if ax.title.get_text()]
+    assert len(titles) == 4 and all("\n" in t.get_text() for t in titles[:3])
+    boxes = [t.get_window_extent(renderer) for t in titles]
+    for i, box in enumerate(boxes):
+        assert not any(box.overlaps(other) for other in boxes[i + 1:])
+        assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1
+        sums = [t.get_window_extent(renderer) for t in fig.axes[i].texts if "|Σ|" in t.get_text()]
+        assert len(sums) == 2 and not any(box.overlaps(s) for s in sums)
+    assert "no free moment of order 1" in [t.get_text() for t in fig.axes[3].texts]
