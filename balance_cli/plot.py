@@ -483,9 +483,9 @@ def star(results: "Iterable[EngineResult]", order: int = 2, fig: "Figure | None"
             ax.plot([0, end.imag], [0, end.real], linestyle="--", color=colour, linewidth=1.4)
             # a text, not a legend: 17 legends cost more to lay out than the rest of the picture;
             # above the axes, where no chain runs
-            ax.annotate(f"{part}: |Σ| = {_magnitude(abs(end), unit)}", (0, 1), xycoords="axes fraction",
-                        xytext=(0, 10 - 9 * row), textcoords="offset points", color=colour,
-                        fontsize=7, va="bottom")
+            ax.annotate(f"{part}: |Σ| = {_magnitude(abs(end), unit)}", (0, 1),
+                        xycoords="axes fraction", xytext=(0, 10 - 9 * row),
+                        textcoords="offset points", color=colour, fontsize=7, va="bottom")
         ax.plot([0], [0], marker="o", color="k", markersize=3)
         if not (chains["forward"] or chains["backward"]):
             ax.text(0.5, 0.4, f"no {'free moment' if of == 'moment' else 'force'} of order {order}",

@@ -621,7 +621,8 @@ def test_inline_3_moment_locus_is_all_pitching_until_the_counterweight_turns_hal
     theta = 2 * np.pi * np.arange(4 * result.samples) / (4 * result.samples)
     x, y = plot.locus_points(result, 1, of="moment", counterweight=False)
     assert_allclose(x, 0.0, atol=1e-9)
-    # Σ (z_i − z̄)·m·r·ω²·cos(θ + β_i) = m·r·ω²·d·(cos(θ + 240°) − cos θ), of amplitude √3·m·r·ω²·d
+    # Σ (z_i − z̄)·m·r·ω²·cos(θ + β_i) = m·r·ω²·d·(cos(θ + 240°) − cos θ),
+    # of amplitude √3·m·r·ω²·d
     assert_allclose(y, MRW2 * PITCH * (np.cos(theta + math.radians(240)) - np.cos(theta)),
                     rtol=0, atol=1e-9)
     assert_allclose(np.abs(y).max(), math.sqrt(3) * MRW2 * PITCH, rtol=1e-5)   # sampled peak
@@ -714,7 +715,8 @@ def test_star_labels_of_24_cylinders_do_not_overlap(couples, of, order):
     assert len(labels) >= 12
     for i, box in enumerate(boxes):
         assert not any(box.overlaps(other) for other in boxes[i + 1:]), labels[i].get_text()
-        assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1 and fig.bbox.y0 <= box.y0 <= box.y1 <= fig.bbox.y1
+        assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1
+        assert fig.bbox.y0 <= box.y0 and box.y1 <= fig.bbox.y1
         for other in fig.texts + [a.title for a in fig.axes] + [t for t in ax.texts if t.get_gid() is None]:
             if other.get_text():
                 assert not box.overlaps(other.get_window_extent(renderer))
