@@ -760,7 +760,7 @@ def test_locus_legend_of_many_engines_lies_below_the_axes(library):
     box, axes = legend.get_window_extent(renderer), fig.axes[0].get_tightbbox(renderer)
     assert box.y1 <= axes.y0 and box.y0 >= fig.bbox.y0
     assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1
-    assert len(legend.get_texts()) == len(library) == 17
+    assert len(legend.get_texts()) == len(library) > 10
 
 
 def test_spectrum_legend_lies_below_the_panels_and_leaves_them_the_width(library):
