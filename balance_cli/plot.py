@@ -342,10 +342,10 @@ def _star_floor(result, of):
 
 def _magnitude(value, unit):
     """|Σ| of the star: four decimals of m_rec·r·ω²·n, or four significant figures of N·m
-    without an exponent above 10⁴ (a marine couple reads 4980395, not 4.98e+06)."""
+    with thousands spaced above 10⁴ (a marine couple reads 4 980 395, not 4.98e+06)."""
     if not unit:
         return f"{value:.4f}"
-    text = f"{value:.0f}" if value >= 1e4 else "0" if value == 0 else f"{value:.4g}"
+    text = f"{value:,.0f}".replace(",", " ") if value >= 1e4 else "0" if value == 0 else f"{value:.4g}"
     return f"{text} {unit}"
 
 
@@ -571,8 +571,8 @@ def _scale_bar(ax, chains, unit=""):
         return
     x0, y0 = min(xs), min(ys) - 0.08 * span
     ax.plot([x0, x0 + length], [y0, y0], color="k", linewidth=1.5)
-    ax.text(x0 + length / 2, y0 - 0.02 * span, f"{length:g} {unit}".strip(), ha="center", va="top",
-            fontsize=7)
+    text = _magnitude(length, unit) if unit else f"{length:g}"
+    ax.text(x0 + length / 2, y0 - 0.02 * span, text, ha="center", va="top", fontsize=7)
 
 
 def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "Figure":

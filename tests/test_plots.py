@@ -687,6 +687,8 @@ def test_moment_star_and_locus_figures_draw_the_moment_in_n_m(couples):
     texts = [t.get_text() for t in ax.texts]
     assert f"forward: |Σ| = {math.sqrt(3) / 2 * MRW2 * PITCH:.4g} N·m" in texts
     assert "free moment" in fig._suptitle.get_text()
+    assert plot._magnitude(4980395.12, "N·m") == "4 980 395 N·m"
+    assert plot._magnitude(427.3664, "N·m") == "427.4 N·m" and plot._magnitude(0.0, "N·m") == "0 N·m"
     fig = plot.locus([result], of="moment")
     assert "free moment" in fig.axes[0].get_title() and "N·m" in fig.axes[0].get_xlabel()
     x, y = plot.locus_points(result, of="moment")
