@@ -432,12 +432,15 @@ def _drawing():
 @click.option("--of", "quantity", type=click.Choice(["force", "moment"]), default=None,
               help="locus and star: the resultant force (the default) or the free moment "
                    "about the engine's mid-length, N·m.")
-@click.option("--units", type=click.Choice(["per-cylinder", "N", "kgf"]), default=None,
-              help="spectrum: units of the forces, default per-cylinder (kgf also puts moments "
-                   "in kgf·m); torque: N (N·m, the default) or kgf (kgf·m).")
+@click.option("--units", type=click.Choice(["per-cylinder"] + list(UNIT_SYSTEMS), case_sensitive=False),
+              default=None,
+              help="spectrum: units of the forces, default per-cylinder (N, kN, MN, kgf or lbf also "
+                   "put moments in N·m, kN·m, MN·m, kgf·m or lbf·ft); torque: N (N·m, the "
+                   "default), kN, MN, kgf or lbf.")
 @_SAMPLES
 @_MAX_ORDER
-def plot(paths, kind, output, order, quantity, units, samples, max_order):
+@_SPEED
+def plot(paths, kind, output, order, quantity, units, samples, max_order, speed):
     """Draw a picture of one or more engines (headless)."""
     if units is not None and kind not in ("spectrum", "torque"):
         raise click.UsageError(f"--units applies to --kind spectrum and torque only, not {kind}")
@@ -458,7 +461,7 @@ def plot(paths, kind, output, order, quantity, units, samples, max_order):
 
     with _reported():
         drawing.format_of(output)
-    engines = _load_all(files)
+    engines = _load_all(files, speed)
     if kind == "torque":
         from .torques import torque as torque_of
 

@@ -27,6 +27,7 @@ from .errors import PlotError
 from .output import write_bytes
 from .report.display import Scale
 from .tolerances import SPECTRUM_FLOOR
+from .units import UNIT_SYSTEMS
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -37,7 +38,7 @@ if TYPE_CHECKING:
 
 __all__ = ["KINDS", "FORMATS", "QUANTITIES", "locus", "spectrum", "star", "firing", "torque", "save",
            "format_of", "grid_size", "locus_points", "spectrum_data", "star_chains", "torque_data",
-           "colours", "short", "place_labels", "moment_floor_nm"]
+           "colours", "short", "place_labels"]
 
 KINDS = ("locus", "spectrum", "star", "firing", "torque")
 #: file formats :func:`save` writes (those of matplotlib's that need neither LaTeX nor a viewer
@@ -48,9 +49,9 @@ FORMATS = ("png", "svg", "svgz", "pdf", "eps", "ps", "jpg", "jpeg", "tif", "tiff
 CELL_IN = 4.0
 MIN_WIDTH_IN = 8.0
 DPI = 100
-SPECTRUM_UNITS = ("per-cylinder", "N", "kgf")
-#: units of :func:`torque`: N·m or kgf·m
-TORQUE_UNITS = ("N", "kgf")
+SPECTRUM_UNITS = ("per-cylinder",) + tuple(UNIT_SYSTEMS)
+#: units of :func:`torque`: the moment unit of a system of units (N·m, kN·m, ..., lbf·ft)
+TORQUE_UNITS = tuple(UNIT_SYSTEMS)
 
 
 def _new_figure(size):
@@ -110,14 +111,6 @@ def _quantity(of):
     return of
 
 
-def moment_floor_nm(engine):
-    """Free moments below this (N·m) are rounding noise: the engine's force noise floor times
-    its longest lever, or its crank radius when that is longer (an engine in one plane has no
-    lever, and its moments are noise at the scale of the crank's own motion)."""
-    lever = max(abs(c.z_m - engine.mean_z_m) for c in engine.cylinders)
-    return engine.noise_floor_n * max(lever, engine.crank_radius_m)
-
-
 def locus_points(result, order=None, of="force", counterweight=True):
     """What :func:`locus` draws of one engine, as x = across, y = along the reference axis:
     ``of="force"`` the resultant force per cylinder (× m_rec·r·ω² per cylinder, Tanaka's
@@ -133,7 +126,7 @@ def locus_points(result, order=None, of="force", counterweight=True):
         values, floor = result.shaking.locus(order, cancels), engine.noise_floor_n
         unit = result.per_cylinder_unit_n
     else:
-        values, floor, unit = result.shaking.moment_locus(order, cancels), moment_floor_nm(engine), 1.0
+        values, floor, unit = result.shaking.moment_locus(order, cancels), engine.noise_floor_nm, 1.0
     if np.abs(values).max() < floor:
         values = np.zeros_like(values)
     values = values / unit
@@ -202,13 +195,13 @@ def spectrum_data(results, units="per-cylinder"):
     """What :func:`spectrum` draws: orders, per engine the forward and backward magnitudes of
     forces and moments in display units, the floors below which nothing is drawn, and labels.
 
-    ``units``: "per-cylinder" (forces × m_rec·r·ω²·n, moments N·m), "N" (N, N·m) or "kgf"
-    (kgf, kgf·m).
+    ``units``: "per-cylinder" (forces × m_rec·r·ω²·n, moments N·m), or a system of units
+    (:data:`~balance_cli.units.UNIT_SYSTEMS`: "N" for N and N·m, "kN", "MN", "kgf", "lbf").
     """
     if units not in SPECTRUM_UNITS:
         raise PlotError(f"must be one of {', '.join(SPECTRUM_UNITS)}, got {units!r}", "units")
     chosen = _results(results)
-    scale = Scale.of(absolute=units != "per-cylinder", units="kgf" if units == "kgf" else "N")
+    scale = Scale.of(absolute=units != "per-cylinder", units="N" if units == "per-cylinder" else units)
     engines = []
     for r in chosen:
         unit = r.per_cylinder_unit_n
@@ -337,7 +330,7 @@ def _star_floor(result, of):
     """The noise floor in the units of :func:`star_chains`."""
     if of == "force":
         return result.engine.noise_floor_n / result.per_cylinder_unit_n
-    return moment_floor_nm(result.engine)
+    return result.engine.noise_floor_nm
 
 
 def _magnitude(value, unit):
@@ -620,8 +613,8 @@ def torque_data(result: "TorqueResult", units: str = "N") -> dict:
     Returns ``theta_deg`` (the crank angle of throw 1 over one period, the first angle repeated
     at the end to close the curve), ``inertia``, ``gas`` (None without one) and ``total`` at
     those angles, ``mean`` and ``range`` of the total torque, and its ``orders`` (multiples of ½
-    for a four-stroke) with their ``amplitudes`` √(cos² + sin²); torques in N·m, or kgf·m
-    when ``units`` is "kgf". Also ``name``, ``period_deg``, ``cycle``, ``speed_rpm``, ``unit``.
+    for a four-stroke) with their ``amplitudes`` √(cos² + sin²); torques in the moment unit of
+    ``units`` (N·m for "N", kN·m, MN·m, kgf·m, lbf·ft). Also ``name``, ``period_deg``, ``cycle``, ``speed_rpm``, ``unit``.
     """
     from .units import rad_s_to_rpm
 
@@ -812,7 +805,7 @@ def torque(results: "Iterable[TorqueResult]", units: str = "N", fig: "Figure | N
     inertia, gas (when there is one) and total torque over one period (360°, or 720° for a
     four-stroke) against the crank angle of throw 1, and the mean total torque (dashed); below,
     the amplitude of each order of the total torque (half orders too for a four-stroke).
-    Torques in N·m, or kgf·m when ``units`` is "kgf".
+    Torques in the moment unit of ``units`` (N·m for "N", kN·m, MN·m, kgf·m or lbf·ft).
 
     The pictures are drawn on the figure itself, not in Axes: 17 engines' Axes and their ticks
     would take longer to draw than all the rest. In ``fig.artists``, each engine's lines carry

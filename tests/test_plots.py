@@ -134,8 +134,13 @@ def test_spectrum_data_is_the_orders_of_compare_in_each_unit(library):
         assert_allclose(engine["moment"][0], [abs(o.moment_forward) * moment_scale,
                                               abs(o.moment_backward) * moment_scale], rtol=1e-12)
     assert plot.spectrum_data(chosen, "kgf")["moment_label"] == "free moment (kgf·m)"
+    # 1 lbf·ft = 0.45359237 kg × 9.80665 m/s² × 0.3048 m
+    assert plot.spectrum_data(chosen, "lbf")["moment_label"] == "free moment (lbf·ft)"
+    assert_allclose(plot.spectrum_data(chosen, "lbf")["engines"][0]["moment"],
+                    plot.spectrum_data(chosen, "N")["engines"][0]["moment"]
+                    / (0.45359237 * 9.80665 * 0.3048), rtol=1e-12)
     with pytest.raises(PlotError, match="units must be one of"):
-        plot.spectrum_data(chosen, "lbf")
+        plot.spectrum_data(chosen, "dyn")
 
 
 def test_spectrum_gives_every_engine_its_own_colour_and_aligns_its_panels(library):
@@ -384,7 +389,7 @@ def test_torque_data_is_the_torque_in_each_unit(torques):
                         rtol=1e-12, atol=0)
         assert data["unit"] == ("N·m" if units == "N" else "kgf·m")
     assert plot.torque_data(torques[1])["gas"] is None
-    with pytest.raises(PlotError, match="units must be one of N, kgf"):
+    with pytest.raises(PlotError, match="units must be one of N, kN, MN, kgf, lbf"):
         plot.torque_data(result, "per-cylinder")
     with pytest.raises(PlotError, match="needs at least one"):
         plot.torque([])
@@ -657,7 +662,7 @@ def test_cross_plane_v8_primary_couple_is_all_forward_and_the_counterweight_leav
     chains = plot.star_chains(result, 1, of="moment")
     assert_allclose(abs(chains["forward"][-1][2]), math.sqrt(10) * MRW2 * PITCH, rtol=1e-12)
     backward = chains["backward"][-1][2] if chains["backward"] else 0j
-    assert abs(backward) < plot.moment_floor_nm(result.engine)
+    assert abs(backward) < result.engine.noise_floor_nm
     x, y = plot.locus_points(result, 1, of="moment")
     assert not x.any() and not y.any()
     fig = plot.locus([result], 1, of="moment")
@@ -674,7 +679,7 @@ def test_moment_star_closes_on_the_free_moment_of_compare(library, config, order
     for part, expected in (("forward", o.moment_forward), ("backward", o.moment_backward)):
         arrows = chains[part]
         end = arrows[-1][2] if arrows else 0j
-        assert_allclose(end, expected, rtol=0, atol=1e3 * plot.moment_floor_nm(result.engine))
+        assert_allclose(end, expected, rtol=0, atol=1e3 * result.engine.noise_floor_nm)
 
 
 def test_moment_star_and_locus_figures_draw_the_moment_in_n_m(couples):
