@@ -13,6 +13,7 @@ sweep agrees with those commands to the last digit.
 """
 
 import copy
+import dataclasses
 import math
 import os
 import re
@@ -145,11 +146,9 @@ _MOMENT_WORDS = {"V": "pitching (moment of the vertical forces), amplitude",
                  "H": "yawing (moment of the horizontal forces), amplitude"}
 _NAMED = {
     "largest_force": ("N", "force", "largest resultant force over a revolution, all orders, "
-                                    "after an ideal counterweight (after the counterweights "
-                                    "when balance_factor is swept)"),
+                                    "after an ideal counterweight"),
     "largest_moment": ("Nm", "moment", "largest free moment over a revolution, all orders, "
-                                       "after an ideal two-plane counterweight (after the "
-                                       "counterweights when balance_factor is swept)"),
+                                       "after an ideal two-plane counterweight"),
     "torque_mean": ("Nm", "torque", "mean of the total torque (gas and inertia) at constant speed"),
     "torque_max": ("Nm", "torque", "largest total torque over the cycle"),
     "torque_min": ("Nm", "torque", "smallest total torque over the cycle"),
@@ -455,9 +454,10 @@ def span(start, stop, steps: int) -> list:
     a, unit, dimension = _number_and_unit(start, "start")
     b, other_unit, other_dimension = _number_and_unit(stop, "stop")
     if dimension != other_dimension:
-        first = f"{dimension} ({start!r})" if dimension else f"a plain number ({start!r})"
-        second = f"{other_dimension} ({stop!r})" if other_dimension else f"a plain number ({stop!r})"
-        raise SweepError(f"is {second}, but start is {first}: give both ends alike", "stop")
+        def kind(d):
+            return f"a{'n' if d and d[0] in 'aeiou' else ''} {d}" if d else "a plain number"
+        raise SweepError(f"{stop!r} is {kind(other_dimension)}, but the first value ({start!r}) "
+                         f"is {kind(dimension)}: give both ends alike", "stop")
     if unit and other_unit != unit:
         # the far end in the unit of the near one, so every value is written in one unit
         b = parse_quantity(stop, dimension) / parse_quantity(f"1 {unit}", dimension)
@@ -568,13 +568,16 @@ def _point_error(exc, parameter, value, path):
     shown = repr(value) if isinstance(value, str) else _shown(value)
     at = f"{parameter.key} = {shown}"
     if isinstance(exc, ConfigError):
-        if exc.key == parameter.key:
-            text = f"{exc.path}: {at}: {exc.problem}"
+        # the model's sentences about a field start "of 0.01 m is ...": give them their subject
+        if exc.problem.startswith("of "):
+            problem = f"{exc.key} {exc.problem}"
+        elif exc.key and exc.key != parameter.key:
+            problem = f"{exc.key}: {exc.problem}"
         else:
-            text = f"{exc.path}: {exc.key + ': ' if exc.key else ''}{exc.problem} (with {at})"
+            problem = exc.problem
+        text = f"{exc.path}: {at}: {problem}"
     elif isinstance(exc, FiringError):
-        text = (f"{path}: firing_order: {exc} (with {at}); leave firing_order out of the file "
-                "to let each point fire in its most uniform order")
+        text = f"{path}: {at}: firing_order: {exc}"
     elif isinstance(exc, BalanceError) and exc.parameter == parameter.key:
         text = f"{path}: {at}: {exc.problem}"
     else:
@@ -645,6 +648,11 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
     base = build(data, path)
     param = parameter_of(data, parameter, path)
     wanted = quantities_of(quantities, max_order)
+    if param.kind == FRACTION:
+        # what the counterweights of each factor leave, not what an ideal one would
+        wanted = tuple(dataclasses.replace(q, meaning=q.meaning.split(", after")[0] + ", after "
+                                           "the counterweights of that balance factor")
+                       if q.name.startswith("largest_") else q for q in wanted)
     values = _normalised(param, values)
     torque_wanted = any(q.kind in ("torque", "steadiness") for q in wanted)
     steady = any(q.kind == "steadiness" for q in wanted)

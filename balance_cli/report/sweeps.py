@@ -67,7 +67,8 @@ def sweep_tables(result, fmt, units="N"):
     safe = markdown_text if fmt == "markdown" else str
     shown = ", ".join(q.name for q in result.quantities)
     title = (f"{heading}{safe(result.name)}: {shown} against {safe(result.parameter.key)} "
-             f"({safe(result.config)}, {len(result.points)} points, {result.samples} samples)")
+             f"({safe(result.config)}, {len(result.points)} point{'s' if len(result.points) != 1 else ''}, "
+             f"{result.samples} samples)")
     headers = [_parameter_heading(result.parameter)] + [
         f"{q.name} ({_label(q, units)})" if _label(q, units) else q.name
         for q in result.quantities]
