@@ -349,7 +349,8 @@ def parameter_of(data: dict, key: str, path: str = "<config>") -> Parameter:
     if not 1 <= index <= count:
         where = (f"only {head}[1]" if count == 1 else f"{head}[1] to {head}[{count}]" if count
                  else f"no [[{head}]] tables")
-        raise _refused(text, f"{path} has {where} (numbered from 1)", data, path, listing=False)
+        raise _refused(text, f"{path} has {where}" + (" (numbered from 1)" if count else ""),
+                       data, path, listing=False)
     row = rows[index - 1]
     return Parameter(text, SCHEMA[array][name], (head, index - 1, name),
                      row.get(name) if isinstance(row, dict) else None)
@@ -493,8 +494,9 @@ class SweepResult:
     points : tuple of dict
         one record per value: ``value``, ``value_SI`` and one key per quantity's ``column``
         (SI: N, N·m)
-    results : tuple of EngineResult
-        each point's analysis (before any counterweight)
+    engines : tuple of Engine
+        each point's engine, built and checked (analyse one again for more than the
+        quantities; the analyses are not kept, so that a long sweep stays small)
     samples, max_order : int
     inertia_kgm2 : float or None
         the flywheel inertia of the steadiness, kg·m²
@@ -508,7 +510,7 @@ class SweepResult:
     values_si: tuple
     quantities: tuple
     points: tuple
-    results: tuple
+    engines: tuple
     samples: int
     max_order: int
     inertia_kgm2: float | None = None
@@ -685,11 +687,17 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
             raise _point_error(exc, param, value, path) from None
         engines.append(engine)
 
+    if param.kind != FRACTION and len(set(values_si)) > 1 and all(e == engines[0] for e in engines):
+        raise SweepError(
+            f"{param.key!r} changes nothing in the engine {path} describes: another key sets "
+            "what it would (a cylinder's own value overrides [links] and [masses], [parts] "
+            "derive the lumped masses); vary that key instead", "parameter")
+
     torque_of = None
     if torque_wanted:
         from .torques import torque as torque_of   # the torques load scipy for the steadiness
 
-    points, results = [], []
+    points = []
     for i, (engine, value, value_si) in enumerate(zip(engines, values, values_si)):
         try:
             result = analyse(engine, samples, max_order)
@@ -698,11 +706,10 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
         except BalanceError as exc:
             raise _point_error(exc, param, value, path) from None
         points.append({"value": value, "value_SI": value_si, **record})
-        results.append(result)
         if progress is not None:
             progress(i + 1, len(values))
     return SweepResult(base.name, path, param, tuple(values), tuple(values_si), wanted,
-                       tuple(points), tuple(results), samples, max_order, inertia_kgm2, load)
+                       tuple(points), tuple(engines), samples, max_order, inertia_kgm2, load)
 
 
 def _measure(result, wanted, param, value, samples, max_order, torque_of, inertia, load):

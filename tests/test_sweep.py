@@ -9,6 +9,7 @@ import csv
 import io
 import json
 import math
+import re
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -20,7 +21,7 @@ import balance_cli as balance
 from balance_cli import config as config_module
 from balance_cli.cli import main
 from balance_cli.sweeps import SCHEMA, span
-from conftest import CONFIGS, TWIN
+from conftest import CONFIGS, ROOT, TWIN
 
 SINGLE = """\
 name = "test single"
@@ -352,3 +353,28 @@ def test_steadiness_sweep_over_the_flywheel_file(tmp_path):
     reference = balance.torque(balance.load(CONFIGS / "abc-dragonfly.toml"), inertia_kgm2=3.0)
     assert result.points[1]["torque_mean_Nm"] == reference.total.mean
     assert_allclose(result.points[1]["steadiness"], reference.steadiness.factor, rtol=1e-12)
+
+
+def test_a_key_that_changes_nothing_is_refused():
+    # the BRAMO's cylinders each give their own knuckle radius: [links]' default is never used
+    with pytest.raises(balance.SweepError, match="changes nothing") as caught:
+        balance.sweep(CONFIGS / "bramo-323.toml", "links.knuckle_radius", ["60 mm", "70 mm"])
+    assert caught.value.parameter == "parameter"
+
+
+def test_progress_is_reported_point_by_point(tmp_path):
+    path = write(tmp_path, TWIN)
+    calls = []
+    balance.sweep(path, "speed", span("1000 rpm", "2000 rpm", 3), progress=lambda *a: calls.append(a))
+    assert calls == [(1, 3), (2, 3), (3, 3)]
+
+
+def test_the_readme_example_runs_as_written(monkeypatch):
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    section = text[text.index("## Parameter sweeps"):text.index("## Python API")]
+    blocks = re.findall(r"```python\n(.*?)```", section, flags=re.S)
+    assert len(blocks) == 1
+    monkeypatch.chdir(ROOT)
+    exec(compile(blocks[0], "README.md", "exec"), {})
+    # and the picture the README shows is there
+    assert (ROOT / "docs" / "sweep-rod-length.png").read_bytes().startswith(b"\x89PNG")
