@@ -838,8 +838,10 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
                    "--inertia and a [gas] table). Default: largest_force,largest_moment.")
 @click.option("--inertia", metavar="I", help="Flywheel inertia for steadiness, e.g. '2.5 kg*m^2'.")
 @_LOAD
-@click.option("--units", type=click.Choice(["N", "kN", "MN", "kgf", "lbf"]), default="N",
-              show_default=True,
+@click.option("--speed", metavar="SPEED", help="Speed of every point instead of the file's, e.g. "
+                                               "'3000 rpm' (not with --vary speed).")
+@click.option("--units", type=click.Choice(["N", "kN", "MN", "kgf", "lbf"], case_sensitive=False),
+              default="N", show_default=True,
               help="Table and picture units: N, kN, MN, kgf or lbf for forces, and N·m, kN·m, MN·m, "
                    "kgf·m or lbf·ft for moments and torques; JSON and CSV stay SI.")
 @_SAMPLES
@@ -848,8 +850,8 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
 @_OUTPUT
 @click.option("--plot", "picture", metavar="FILE.png|svg|pdf",
               help="Also draw the quantities against the parameter into this picture.")
-def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load, units, samples,
-          max_order, fmt, output, picture):
+def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load, speed, units,
+          samples, max_order, fmt, output, picture):
     """Analyse one engine again and again with one value of its configuration changed.
 
     Each value is set in the file's TOML and the engine rebuilt and checked exactly as a file
@@ -866,13 +868,17 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
         raise click.UsageError(f"give --values, or --from, --to and --steps ({', '.join(missing)} "
                                "missing)")
     flags = {"parameter": "--vary", "values": "--values", "quantities": "--quantity",
-             "start": "--from", "stop": "--to", "steps": "--steps", "inertia_kgm2": "--inertia"}
+             "start": "--from", "stop": "--to", "steps": "--steps", "inertia_kgm2": "--inertia",
+             "overrides": "--speed"}
+    if speed is not None and parameter.strip() == "speed":
+        raise click.UsageError("--speed fixes the speed that --vary speed varies; give one of them")
     outputs = [output] + ([picture] if picture else [])
     _guard(outputs, [Path(path)])
     if picture is not None and output not in (None, "-") and _same_path(output, picture):
         raise click.ClickException(f"--plot and --output both name {picture!r}; give two files")
     _settings(samples, max_order)
     inertia_kgm2 = _quantity_option(inertia, "--inertia", "moment of inertia")
+    _quantity_option(speed, "--speed", "angular speed")   # its unit, in the option's words
     drawing = None
     if picture is not None:
         _use_agg()
@@ -897,7 +903,8 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
         try:
             with _reported(flags=flags):
                 result = sweep_of(path, parameter, values, quantities, samples, max_order,
-                                  inertia_kgm2=inertia_kgm2, load=load, progress=progress)
+                                  inertia_kgm2=inertia_kgm2, load=load, progress=progress,
+                                  overrides=None if speed is None else {"speed": speed})
         finally:
             if "bar" in state:
                 state["bar"].__exit__(None, None, None)

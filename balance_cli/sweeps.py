@@ -28,7 +28,7 @@ from .config import _parse, _read_text, build
 from .counterweight import check_options, counterweights
 from .errors import BalanceError, ConfigError, FiringError, SweepError
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings
-from .units import DIMENSIONS, parse_quantity
+from .units import DIMENSIONS, parse_quantity, rad_s_to_rpm
 
 __all__ = ["SweepResult", "Parameter", "Quantity", "sweep", "span", "parameter_of",
            "quantities_of", "QUANTITY_NAMES", "DEFAULT_QUANTITIES", "BALANCE_FACTOR"]
@@ -501,6 +501,8 @@ class SweepResult:
     inertia_kgm2 : float or None
         the flywheel inertia of the steadiness, kg·m²
     load : str
+    overrides : tuple of (key, value)
+        the keys set at every point besides the parameter
     """
 
     name: str
@@ -515,6 +517,14 @@ class SweepResult:
     max_order: int
     inertia_kgm2: float | None = None
     load: str = "propeller"
+    overrides: tuple = ()
+
+    @property
+    def speed_rpm(self) -> float | None:
+        """The speed of every point, rpm; None when the speed is what varies."""
+        if self.parameter.key == "speed":
+            return None
+        return rad_s_to_rpm(self.engines[0].speed_rad_s)
 
     def series(self, quantity: str) -> np.ndarray:
         """One quantity at every point, SI, by name (``"F2"``) or column (``"F2_N"``)."""
@@ -538,6 +548,8 @@ class SweepResult:
             "config": self.config,
             "samples": self.samples,
             "max_order": self.max_order,
+            "speed_rpm": self.speed_rpm,
+            "overrides": dict(self.overrides),
             "parameter": {"key": p.key, "kind": p.kind, "unit_SI": p.unit_si,
                           "file_value": p.file_value, "values": list(self.values),
                           "values_SI": list(self.values_si)},
@@ -602,6 +614,7 @@ def _load(config, name):
 def sweep(config, parameter: str, values: Sequence, quantities=None,
           samples: int = DEFAULT_SAMPLES, max_order: int = DEFAULT_MAX_ORDER, *,
           inertia_kgm2: float | None = None, load: str = "propeller", name: str | None = None,
+          overrides: "dict | None" = None,
           progress: "Callable[[int, int], None] | None" = None) -> SweepResult:
     """Analyse the configuration ``config`` once per value of ``parameter``.
 
@@ -630,6 +643,9 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
         "propeller" or "constant", for the steadiness
     name : str, optional
         what a dict ``config`` is called in messages (default "<config>")
+    overrides : dict, optional
+        other keys to set at every point, as written in the file (``{"speed": "3000 rpm"}``:
+        the command line's ``--speed``); checked like the file's own values
     progress : callable, optional
         ``progress(done, total)`` after each point
 
@@ -647,8 +663,23 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
     """
     check_settings(samples, max_order)
     data, path = _load(config, name)
-    base = build(data, path)
+    build(data, path)   # the file as it is first: its own errors are the file's, not the sweep's
     param = parameter_of(data, parameter, path)
+    for key, value in (overrides or {}).items():
+        try:
+            fixed = parameter_of(data, key, path)
+        except SweepError as exc:
+            raise SweepError(exc.problem, "overrides") from None
+        if fixed.key == param.key or fixed.kind == FRACTION:
+            raise SweepError(f"sets {key!r}, which the sweep varies or which is no key of the "
+                             "file; leave it out", "overrides")
+        data = _with_value(data, fixed, _normalised(fixed, [value])[0])
+    try:
+        base = build(data, path)
+    except ConfigError as exc:
+        if exc.key not in (overrides or {}):
+            raise
+        raise SweepError(f"{exc.key} = {overrides[exc.key]!r}: {exc.problem}", "overrides") from None
     wanted = quantities_of(quantities, max_order)
     if param.kind == FRACTION:
         # what the counterweights of each factor leave, not what an ideal one would
@@ -709,7 +740,8 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
         if progress is not None:
             progress(i + 1, len(values))
     return SweepResult(base.name, path, param, tuple(values), tuple(values_si), wanted,
-                       tuple(points), tuple(engines), samples, max_order, inertia_kgm2, load)
+                       tuple(points), tuple(engines), samples, max_order, inertia_kgm2, load,
+                       tuple((overrides or {}).items()))
 
 
 def _measure(result, wanted, param, value, samples, max_order, torque_of, inertia, load):

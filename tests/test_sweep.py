@@ -190,7 +190,9 @@ def test_records_and_json_keys(tmp_path):
                                             "largest_force_N"]] * 4
     document = result.to_dict()
     assert set(document) == {"balance_version", "name", "config", "samples", "max_order",
-                             "parameter", "quantities", "inertia_kgm2", "load", "points"}
+                             "speed_rpm", "overrides", "parameter", "quantities", "inertia_kgm2",
+                             "load", "points"}
+    assert document["overrides"] == {} and document["speed_rpm"] == pytest.approx(3000, rel=1e-12)
     assert document["parameter"] == {"key": "rod_length", "kind": "length", "unit_SI": "m",
                                      "file_value": "140 mm", "values": list(result.values),
                                      "values_SI": list(result.values_si)}
@@ -378,3 +380,31 @@ def test_the_readme_example_runs_as_written(monkeypatch):
     exec(compile(blocks[0], "README.md", "exec"), {})
     # and the picture the README shows is there
     assert (ROOT / "docs" / "sweep-rod-length.png").read_bytes().startswith(b"\x89PNG")
+
+
+def test_overrides_set_other_keys_at_every_point(tmp_path):
+    # --speed: the same sweep at another speed is the file's sweep times the speed ratio squared
+    path = write(tmp_path, TWIN)
+    at_file = balance.sweep(path, "rod_length", ["140 mm", "180 mm"], "F2,M1")
+    at_half = balance.sweep(path, "rod_length", ["140 mm", "180 mm"], "F2,M1",
+                            overrides={"speed": "1500 rpm"})
+    assert at_half.speed_rpm == pytest.approx(1500, rel=1e-12)
+    assert at_file.speed_rpm == pytest.approx(3000, rel=1e-12)
+    for name in ("F2", "M1"):
+        assert_allclose(at_half.series(name), at_file.series(name) / 4, rtol=1e-12, atol=0)
+    assert at_half.to_dict()["overrides"] == {"speed": "1500 rpm"}
+    for overrides in ({"sped": "1 rpm"}, {"speed": "-1 rpm"}, {"rod_length": "150 mm"}):
+        with pytest.raises(balance.SweepError) as caught:
+            balance.sweep(path, "rod_length", ["140 mm"], overrides=overrides)
+        assert caught.value.parameter == "overrides"
+
+
+def test_cli_speed_fixes_the_speed(tmp_path):
+    path = write(tmp_path, TWIN)
+    result = run("sweep", path, "--vary", "rod_length", "--values", "140 mm", "--speed", "1500 rpm",
+                 "--format", "json")
+    assert json.loads(result.output)["overrides"] == {"speed": "1500 rpm"}
+    bad = run("sweep", path, "--vary", "rod_length", "--values", "140 mm", "--speed", "3 kg")
+    assert bad.exit_code == 1 and bad.output.startswith("Error: --speed: '3 kg' is a mass")
+    both = run("sweep", path, "--vary", "speed", "--values", "140 rpm", "--speed", "1500 rpm")
+    assert both.exit_code == 2

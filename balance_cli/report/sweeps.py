@@ -66,7 +66,8 @@ def sweep_tables(result, fmt, units="N"):
     heading = "#### " if fmt == "markdown" else ""
     safe = markdown_text if fmt == "markdown" else str
     shown = ", ".join(q.name for q in result.quantities)
-    title = (f"{heading}{safe(result.name)}: {shown} against {safe(result.parameter.key)} "
+    at = "" if result.speed_rpm is None else f" at {result.speed_rpm:g} rpm"
+    title = (f"{heading}{safe(result.name)}{at}: {shown} against {safe(result.parameter.key)} "
              f"({safe(result.config)}, {len(result.points)} point{'s' if len(result.points) != 1 else ''}, "
              f"{result.samples} samples)")
     headers = [_parameter_heading(result.parameter)] + [
@@ -158,6 +159,7 @@ def sweep_figure(result, units="N", fig=None):
         ax.set_ylim(*_from_zero(drawn))
         ax.legend(fontsize=8, frameon=False, loc="best")
     axes[-1].set_xlabel(xlabel)
-    fig.suptitle(f"{result.name}: against {result.parameter.key}", fontsize=10)
+    at = "" if result.speed_rpm is None else f" at {result.speed_rpm:g} rpm"
+    fig.suptitle(f"{result.name}{at}: against {result.parameter.key}", fontsize=10)
     fig.tight_layout()
     return fig
