@@ -908,10 +908,13 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
         finally:
             if "bar" in state:
                 state["bar"].__exit__(None, None, None)
-            # one line per distinct warning, not one per point
+            # one line per distinct sampling warning, not one per point; others as they came
             for text in dict.fromkeys(str(w.message) for w in caught
                                       if issubclass(w.category, SamplingWarning)):
                 click.echo(f"warning: {text} (--samples)", err=True)
+            for w in caught:
+                if not issubclass(w.category, SamplingWarning):
+                    warnings.showwarning(w.message, w.category, w.filename, w.lineno)
     if fmt == "json":
         text = to_json(result.to_dict())
     elif fmt == "csv":

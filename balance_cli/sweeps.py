@@ -428,11 +428,14 @@ def _number_and_unit(text, what):
     unit = match.group(2)
     for dimension in DIMENSIONS:
         try:
+            # one of the unit is inside every dimension's limits: this finds the unit's dimension
+            parse_quantity(f"1 {unit}", dimension)
+        except BalanceError:
+            continue
+        try:
             parse_quantity(text, dimension)
         except BalanceError as exc:
-            if "is outside" in str(exc) or "not a finite" in str(exc):
-                raise SweepError(str(exc), what) from None
-            continue
+            raise SweepError(str(exc), what) from None
         return float(match.group(1)), unit, dimension
     raise SweepError(f"cannot read {text!r}: unknown unit {unit!r}", what)
 
@@ -463,7 +466,8 @@ def span(start, stop, steps: int) -> list:
         # the far end in the unit of the near one, so every value is written in one unit
         b = parse_quantity(stop, dimension) / parse_quantity(f"1 {unit}", dimension)
     if a == b:
-        raise SweepError(f"equals start ({start!r}): a sweep needs two different ends", "stop")
+        raise SweepError(f"equals the first value ({start!r}): a sweep needs two different ends",
+                         "stop")
     numbers = np.linspace(a, b, int(steps))
     # twelve digits hide linspace's rounding (0.30000000000000004) and keep every real step
     written = [float(f"{x:.12g}") + 0.0 for x in numbers]
