@@ -408,3 +408,13 @@ def test_cli_speed_fixes_the_speed(tmp_path):
     assert bad.exit_code == 1 and bad.output.startswith("Error: --speed: '3 kg' is a mass")
     both = run("sweep", path, "--vary", "speed", "--values", "140 rpm", "--speed", "1500 rpm")
     assert both.exit_code == 2
+
+
+def test_cli_markdown_and_one_sampling_warning_for_the_whole_sweep():
+    # 37 samples leave the Dragonfly's orders above 8 aliasing at every speed: one line says so
+    result = run("sweep", CONFIGS / "abc-dragonfly.toml", "--vary", "speed", "--from", "1500 rpm",
+                 "--to", "1800 rpm", "--steps", "4", "--samples", "37", "--quantity", "F1,F2",
+                 "--format", "markdown")
+    assert result.exit_code == 0, result.output
+    assert result.output.count("warning: ") == 1 and "(--samples)" in result.output
+    assert "| speed" in result.output and "#### ABC Dragonfly" in result.output

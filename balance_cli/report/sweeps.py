@@ -145,12 +145,16 @@ def sweep_figure(result, units="N", fig=None):
 
         fig = plt.figure(figsize=(8.0, 1.0 + 2.8 * len(groups)), dpi=100)
     x, xlabel = axis_values(result)
+    # values listed out of order are drawn along the axis, not zigzagging back and forth
+    order = sorted(range(len(x)), key=x.__getitem__)
+    x = [x[i] for i in order]
+    points = [result.points[i] for i in order]
     axes = fig.subplots(len(groups), 1, sharex=True, squeeze=False)[:, 0]
     marker = "o" if len(x) <= 30 else None
     for ax, (kind, title, quantities) in zip(axes, groups):
         drawn = []
         for q in quantities:
-            y = [_shown(q, p[q.column], units) for p in result.points]
+            y = [_shown(q, p[q.column], units) for p in points]
             ax.plot(x, y, marker=marker, markersize=4, label=q.name)
             drawn += [v for v in y if math.isfinite(v)]
         unit = _label(quantities[0], units)
