@@ -189,8 +189,8 @@ def quantities_of(names, max_order: int = DEFAULT_MAX_ORDER) -> tuple:
             letter, order, part = match.group(1).upper(), int(match.group(2)), (match.group(3) or "").upper()
             if not 1 <= order <= max_order:
                 raise SweepError(f"names {name!r}, order {order}, outside the orders analysed "
-                                 f"(1 to max_order {max_order}); raise max_order or ask for a "
-                                 "lower order", "quantities")
+                                 f"(1 to {max_order}); analyse more orders or ask for a lower "
+                                 "one", "quantities")
             key, words = _PARTS[part]
             what = "force" if letter == "F" else "moment"
             if letter == "M" and part in _MOMENT_WORDS:

@@ -240,7 +240,7 @@ def test_schema_covers_every_key_of_the_configuration_format():
     ("throws[1].phase", ["10 deg"], None, "values", "without a unit"),
     ("rod_length", [], None, "values", "at least one"),
     ("speed", ["3000 rpm"], "F2X", "quantities", "not a quantity"),
-    ("speed", ["3000 rpm"], "F9", "quantities", "max_order"),
+    ("speed", ["3000 rpm"], "F9", "quantities", "orders analysed (1 to 8)"),
     ("speed", ["3000 rpm"], "steadiness", "inertia_kgm2", "steadiness"),
 ])
 def test_library_errors_name_the_parameter(tmp_path, parameter, values, quantities,

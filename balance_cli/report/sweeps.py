@@ -10,7 +10,7 @@ import io
 import math
 import re
 
-from .display import markdown_text
+from .display import markdown_text, plain_text
 from .tables import render
 
 __all__ = ["SWEEP_UNITS", "sweep_tables", "sweep_csv", "sweep_figure", "axis_values"]
@@ -64,7 +64,7 @@ def _parameter_heading(parameter):
 def sweep_tables(result, fmt, units="N"):
     """The sweep as text ("table") or Markdown: a title, one row per point, what each column is."""
     heading = "#### " if fmt == "markdown" else ""
-    safe = markdown_text if fmt == "markdown" else str
+    safe = markdown_text if fmt == "markdown" else plain_text
     shown = ", ".join(q.name for q in result.quantities)
     at = "" if result.speed_rpm is None else f" at {result.speed_rpm:g} rpm"
     title = (f"{heading}{safe(result.name)}{at}: {shown} against {safe(result.parameter.key)} "
