@@ -96,10 +96,11 @@ class SamplingWarning(UserWarning):
 class SweepError(BalanceError, ValueError):
     """A sweep that cannot be run: a parameter the configuration has no key for, values or
     quantities that cannot be used, or a point whose configuration is invalid (then ``key`` and
-    ``value`` say which, and the message names the file, the key and the value)."""
+    ``value`` say which, ``cause`` is the error the configuration gave, and the message names
+    the file, the key and the value)."""
 
-    def __init__(self, problem, parameter=None, key=None, value=None):
-        self.key, self.value = key, value
+    def __init__(self, problem, parameter=None, key=None, value=None, cause=None):
+        self.key, self.value, self.cause = key, value, cause
         super().__init__(problem, parameter)
 
 
