@@ -50,6 +50,11 @@ _LAZY = {"plot": (".plot", None), "search": (".cranksearch", "search"),
          "SearchResult": (".cranksearch", "SearchResult"),
          "Arrangement": (".cranksearch", "Arrangement"), "Term": (".cranksearch", "Term")}
 
+# the sweep loads on first use too; a statement of its own keeps merges of the lists above simple
+_LAZY.update({"sweep": (".sweeps", "sweep"), "SweepResult": (".sweeps", "SweepResult")})
+__all__ += ["sweep", "SweepResult", "SweepError"]
+from .errors import SweepError  # noqa: E402
+
 
 def __getattr__(name):
     # balance.plot imports matplotlib, which the commands that do not draw never load

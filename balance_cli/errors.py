@@ -91,3 +91,18 @@ class OutputError(BalanceError, OSError):
 
 class SamplingWarning(UserWarning):
     """The sampling is too coarse for the orders asked for."""
+
+
+class SweepError(BalanceError, ValueError):
+    """A sweep that cannot be run: a parameter the configuration has no key for, values or
+    quantities that cannot be used, or a point whose configuration is invalid (then ``key`` and
+    ``value`` say which, ``cause`` is the error the configuration gave, and the message names
+    the file, the key and the value)."""
+
+    def __init__(self, problem, parameter=None, key=None, value=None, cause=None):
+        self.key, self.value, self.cause = key, value, cause
+        super().__init__(problem, parameter)
+
+
+# appended here rather than in the list above, so that merging other changes to it stays simple
+__all__.append("SweepError")
