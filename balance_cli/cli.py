@@ -915,7 +915,7 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
 @_LOAD
 @click.option("--speed", metavar="SPEED", help="Speed of every point instead of the file's, e.g. "
                                                "'3000 rpm' (not with --vary speed).")
-@click.option("--units", type=click.Choice(["N", "kN", "MN", "kgf", "lbf"], case_sensitive=False),
+@click.option("--units", type=_UNIT_CHOICE,
               default="N", show_default=True,
               help="Table and picture units: N, kN, MN, kgf or lbf for forces, and N·m, kN·m, MN·m, "
                    "kgf·m or lbf·ft for moments and torques; JSON and CSV stay SI.")

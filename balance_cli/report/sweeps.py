@@ -1,8 +1,7 @@
 """A sweep as a table, CSV or picture, rendered from :meth:`SweepResult.records`.
 
 JSON and CSV stay SI; the table and the picture show forces, moments and torques in one
-system of units (``--units``). :data:`SWEEP_UNITS` converts them here until the package has
-one set of display-unit helpers for every command.
+system of units (``--units``, :data:`~balance_cli.units.UNIT_SYSTEMS`).
 """
 
 import csv
@@ -10,21 +9,11 @@ import io
 import math
 import re
 
-from .display import markdown_text, plain_text
+from .display import Scale, figure, markdown_text, plain_text
 from .tables import render
 
-__all__ = ["SWEEP_UNITS", "sweep_tables", "sweep_csv", "sweep_figure", "axis_values"]
+__all__ = ["sweep_tables", "sweep_csv", "sweep_figure", "axis_values"]
 
-#: display units of the sweep only (to be merged with the package's display units): a choice
-#: -> (force unit, newtons per unit, moment and torque unit, newton-metres per unit)
-_LBF = 0.45359237 * 9.80665
-SWEEP_UNITS = {
-    "N": ("N", 1.0, "N·m", 1.0),
-    "kN": ("kN", 1e3, "kN·m", 1e3),
-    "MN": ("MN", 1e6, "MN·m", 1e6),
-    "kgf": ("kgf", 9.80665, "kgf·m", 9.80665),
-    "lbf": ("lbf", _LBF, "lbf·ft", _LBF * 0.3048),
-}
 #: kinds of quantity drawn on one axes each, in this order, and their axis titles
 _GROUPS = (("force", "Force"), ("moment", "Free moment"), ("torque", "Torque"),
            ("steadiness", "Steadiness"))
@@ -32,24 +21,15 @@ _GROUPS = (("force", "Force"), ("moment", "Free moment"), ("torque", "Torque"),
 
 def _label(quantity, units):
     """The unit a quantity is shown in, "" for a pure number."""
-    force, _, moment, _ = SWEEP_UNITS[units]
-    return {"N": force, "Nm": moment}.get(quantity.unit, "")
+    scale = Scale.of(True, units)
+    return {"N": scale.force_label, "Nm": scale.moment_label}.get(quantity.unit, "")
 
 
 def _shown(quantity, value_si, units):
-    _, per_force, _, per_moment = SWEEP_UNITS[units]
-    return value_si / {"N": per_force, "Nm": per_moment}.get(quantity.unit, 1.0)
-
-
-def _figure(value):
-    """Four significant figures without an exponent (13840, 0.1234); whole numbers from 10 000."""
-    if value == 0.0:
-        return "0"
-    if not math.isfinite(value):
-        return "∞" if value > 0 else str(value)
-    digits = max(0, 3 - math.floor(math.log10(abs(value))))
-    text = f"{value:.{digits}f}"
-    return "0" if re.fullmatch(r"-?0(\.0*)?", text) else text
+    scale = Scale.of(True, units)
+    if quantity.unit == "N":
+        return scale.force(value_si, 1.0)
+    return scale.moment(value_si) if quantity.unit == "Nm" else value_si
 
 
 def _value_text(value):
@@ -73,7 +53,7 @@ def sweep_tables(result, fmt, units="N"):
     headers = [_parameter_heading(result.parameter)] + [
         f"{q.name} ({_label(q, units)})" if _label(q, units) else q.name
         for q in result.quantities]
-    rows = [[_value_text(p["value"])] + [_figure(_shown(q, p[q.column], units))
+    rows = [[_value_text(p["value"])] + [figure(_shown(q, p[q.column], units))
                                          for q in result.quantities]
             for p in result.points]
     notes = [f"- {q.name}: {q.meaning}" for q in result.quantities]
