@@ -3,12 +3,14 @@ permissions. For every one: the exit status, exactly one error line, no tracebac
 ended in SystemExit, not an exception), the input files unchanged and no output file left."""
 
 import json
+import math
 import os
 import shutil
 import stat
 import tempfile
 from pathlib import Path
 
+import numpy as np
 import pytest
 from click.testing import CliRunner
 
@@ -576,3 +578,200 @@ def test_standard_output_errors_are_one_line(tmp_path):
     ascii_only = subprocess.run([sys.executable, "-c", code, "compare", str(config)],
                                 capture_output=True, env={**os.environ, "PYTHONIOENCODING": "ascii"})
     assert ascii_only.returncode == 0 and "m_rec·r·ω²·n" in ascii_only.stdout.decode("utf-8")
+
+
+# --- issue 16: torque, steadiness, search and the API under hostile input ---------------
+
+TEMPLATES = Path(__file__).resolve().parent.parent / "templates"
+
+
+def inline_template_text(n, pitch_mm=500):
+    """An in-line two-stroke template of ``n`` throws, as a user would write it."""
+    throws = "".join(f'[[throws]]\nz = "{j * pitch_mm} mm"\n' for j in range(n))
+    return (f'name = "In-line {n}"\ncycle = 2\nspeed = "300 rpm"\ncrank_radius = "150 mm"\n'
+            f'rod_length = "600 mm"\n[masses]\nreciprocating = "120 kg"\n[[banks]]\nangle = 0\n'
+            + throws)
+
+
+def search_api(template, objective, **kwargs):
+    from balance_cli.cranksearch import search
+
+    return search(template, objective, workers=1, **kwargs)
+
+
+@pytest.mark.parametrize("objective", ["M1:1e300", "M1:1e308,M2:1e308", "M1:1e-300"])
+def test_search_weights_beyond_their_range_are_refused_with_it(tmp_path, objective):
+    """Item 2: these weights ended in an OverflowError traceback."""
+    template = tmp_path / "t.toml"
+    shutil.copy(TEMPLATES / "inline-6-2stroke.toml", template)
+    before = snapshot(tmp_path)
+    result = invoke("search", template, "--objective", objective, "--workers", "1")
+    check_refused(result, 1, "must be a positive number from 1e-100 to 1e+100", before, tmp_path)
+
+
+def test_search_scores_scale_with_the_weights():
+    """Weights of 1e100 and 1e-10 rank exactly as weights of 1 do (the score is linear in the
+    weights); the scores are the same multiples."""
+    import balance_cli as balance
+
+    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    plain = search_api(template, "M1,M2", top=6)
+    for scale in (1e100, 1e-10):
+        scaled = search_api(template, f"M1:{scale:g},M2:{scale:g}", top=6)
+        assert [a.firing_order for a in scaled.arrangements] == \
+            [a.firing_order for a in plain.arrangements]
+        np.testing.assert_allclose([a.score for a in scaled.arrangements],
+                                   [scale * a.score for a in plain.arrangements], rtol=1e-12)
+
+
+def test_a_tiny_weight_still_ranks_the_smaller_coefficient_first():
+    """Rough edge: with ties absolute at 1e-9, M1:1e-10 ranked M1 = 5 above M1 = 0. The
+    in-line 6 two-stroke has two cranks free of primary couple (1-5-3-6-2-4 and its mirror
+    image, Den Hartog's table), so the first two listed have M1 = 0."""
+    import balance_cli as balance
+
+    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    found = search_api(template, "M1:1e-10", top=4)
+    m1 = [a.coefficients["M1"] for a in found.arrangements]
+    np.testing.assert_allclose(m1[:2], 0.0, atol=1e-9)
+    assert min(m1[2:]) > 0.5
+    scores = np.array([a.score for a in found.arrangements])
+    assert np.all(np.diff(scores) >= -1e-9 * scores.max())   # ranked by score, to its rounding
+
+
+def test_huge_weights_print_a_readable_score(tmp_path):
+    result = invoke("search", TEMPLATES / "inline-6-2stroke.toml", "--objective", "M1:1e100",
+                    "--top", "3", "--workers", "1")
+    assert result.exit_code == 0, result.output
+    row = next(line for line in result.stdout.splitlines() if line.startswith("3 "))
+    score = row.split()[1]
+    assert len(score) <= 12 and float(score) > 1e99, row
+
+
+@pytest.mark.parametrize("n", [20, 21, 22, 23])
+def test_a_template_too_large_is_refused_at_once_with_its_count(tmp_path, n):
+    """Item 3: an in-line 20 to 22 took 38 to 253 s (1.7 GB) to count before the refusal, and
+    an in-line 23 quoted 23^22/4 ≈ 2.3e29 cranks. Even firing leaves (n − 1)! cranks
+    (Den Hartog), counted once with their reversal and evaluated once with their mirror:
+    (n − 1)!/4 to evaluate."""
+    import time
+
+    import balance_cli as balance
+    from balance_cli.errors import AnalysisError
+
+    path = tmp_path / f"i{n}.toml"
+    path.write_text(inline_template_text(n), encoding="utf-8")
+    template, _ = balance.load_template(path)
+    started = time.perf_counter()
+    with pytest.raises(AnalysisError) as caught:
+        search_api(template, "M1")
+    assert time.perf_counter() - started < 1.0
+    assert caught.value.parameter == "limit"
+    assert f"evaluates about {math.factorial(n - 1) // 4:,};" in str(caught.value)
+
+
+def test_the_closed_form_count_is_the_dynamic_programmes():
+    """The multinomial count of one-cylinder throws, (n − 1)!/((c − 1)!·c!^(P − 1)), against the
+    count over lattice occupancies: in-line 10 two-stroke 9!, in-line 8 four-stroke 7!/2³."""
+    from balance_cli import cranksearch
+
+    for n, P, cap, expected in ((10, 10, 1, math.factorial(9)), (8, 4, 2, 630)):
+        problem = cranksearch._Problem(n, P, 360.0 / P, np.zeros(n), cap, [[0]] * n, None,
+                                       None, False, False, 1 + (n - 1) // 2)
+        assert cranksearch._count_cranks(problem) == expected
+        assert cranksearch._count_by_occupancy(problem) == expected
+
+
+def test_a_top_beyond_what_can_be_held_is_refused(tmp_path):
+    """Item 4: --top 100000 on an in-line 10 reached 100 % and then grew past 7 GB."""
+    template = tmp_path / "i10.toml"
+    template.write_text(inline_template_text(10), encoding="utf-8")
+    before = snapshot(tmp_path)
+    result = invoke("search", template, "--objective", "M1", "--top", "100000")
+    check_refused(result, 1, "--top must be a whole number from 1 to 1,000, got 100000", before,
+                  tmp_path)
+
+
+def test_the_pool_of_best_scores_is_linear_in_its_size():
+    """Item 4's other half: the pool sorted every score at every offer, quadratic in --top.
+    Offering 200 000 distinct scores to a pool of 1000 now takes well under a second, and its
+    threshold is the 1000th smallest score offered."""
+    import time
+
+    from balance_cli import cranksearch
+
+    class Plain:
+        def orbit_key(self, crank):
+            return crank
+
+    scores = np.random.default_rng(1).permutation(200_000) / 200_000
+    pool = cranksearch._Pool(Plain(), 1000)
+    started = time.perf_counter()
+    for i, score in enumerate(scores):
+        pool.offer(float(score), (i,))
+    assert time.perf_counter() - started < 2.0
+    kept = sorted(pool.best.values())[:1000]
+    np.testing.assert_allclose(kept, np.arange(1000) / 200_000, rtol=0, atol=1e-15)
+
+
+@pytest.mark.parametrize("weight", [math.nan, math.inf, -1.0, 0.0, "1", True])
+def test_search_terms_with_a_weight_that_is_no_bound_are_refused(weight):
+    """Items 6 and 7: NaN or inf returned nothing and claimed exhaustive; a negative weight
+    returned 7.0 where √52 exists (the bound assumes positive weights)."""
+    import balance_cli as balance
+    from balance_cli.cranksearch import Term
+    from balance_cli.errors import AnalysisError
+
+    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    with pytest.raises(AnalysisError) as caught:
+        search_api(template, [Term("M", 1), Term("M", 2, weight=weight)])
+    assert caught.value.parameter == "objective"
+    assert "M2: the weight must be a positive number" in str(caught.value)
+
+
+def test_workers_are_capped_at_what_helps_and_reported_as_run():
+    """Rough edge: --workers 1000 reported 1000 workers while about 460 processes ran, and
+    took 4.5 s instead of 1 s."""
+    import balance_cli as balance
+    from balance_cli.cranksearch import _cores, search
+
+    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    found = search(template, "M1", top=2, workers=1000)
+    assert 1 <= found.workers <= _cores()
+    assert [a.firing_order for a in found.arrangements] == \
+        [a.firing_order for a in search_api(template, "M1", top=2).arrangements]
+
+
+def test_heuristic_with_a_scheduler_names_the_flags():
+    result = invoke("search", TEMPLATES / "inline-6-2stroke.toml", "--heuristic", "--scheduler",
+                    "tcp://127.0.0.1:1")
+    assert result.exit_code == 1
+    assert result.stderr.endswith(": --scheduler applies to the exhaustive search, but the "
+                                  "heuristic search (--heuristic) runs in this process: leave "
+                                  "out one of the two\n")
+
+
+def test_ctrl_c_in_a_multi_process_search_prints_no_worker_traceback(tmp_path):
+    """Rough edge: Ctrl-C (SIGINT to the whole process group, as a terminal sends it) printed
+    stray 'Process ForkPoolWorker-N:' tracebacks. Now one 'Aborted!' from the command."""
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    template = tmp_path / "i13.toml"
+    template.write_text(inline_template_text(13), encoding="utf-8")
+    code = ("import sys; from balance_cli import cranksearch as c; "
+            "c._cores = lambda: 2; "   # two processes even on a one-core machine
+            "from balance_cli.cli import main; sys.exit(main())")
+    process = subprocess.Popen([sys.executable, "-c", code, "search", str(template),
+                                "--objective", "M1", "--workers", "2"],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               start_new_session=True)
+    # interrupt once the workers run: the search of an in-line 13 takes seconds
+    time.sleep(2.5)
+    os.killpg(process.pid, signal.SIGINT)
+    out, err = process.communicate(timeout=60)
+    assert process.returncode == 1, (out, err)
+    assert "Traceback" not in err and "ForkPoolWorker" not in err, err
+    assert err.strip() == "Aborted!", err

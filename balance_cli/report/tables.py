@@ -462,13 +462,19 @@ def search_summary(result):
     return lines
 
 
+def _score_text(score):
+    # four decimals read best at the usual sizes; a weight of 1e100 or 1e-10 makes a score
+    # that they would print with 100 digits, or as 0.0000
+    return f"{score:.4f}" if score == 0 or 1e-3 <= abs(score) < 1e6 else f"{score:.6g}"
+
+
 def search_rows(result):
     """Ranking rows: rank, score, phases, firing order, intervals, coefficients, mirror."""
     names, _ = _coefficient_names(result)
     rows = []
     for a in result.arrangements:
         record = a.to_dict()
-        rows.append([str(a.rank), f"{a.score:.4f}",
+        rows.append([str(a.rank), _score_text(a.score),
                      " ".join(f"{round_degrees(p, 3):g}" for p in a.phases_deg),
                      "-".join(map(str, record["firing"]["order"])),
                      _intervals(record["firing"])]
