@@ -15,7 +15,7 @@ import numpy as np
 from .errors import AnalysisError, UnitError
 from .units import check_finite_range
 
-__all__ = ["is_real", "positive", "whole", "curve", "instance", "path"]
+__all__ = ["is_real", "positive", "whole", "curve", "instance", "path", "items"]
 
 
 def is_real(value) -> bool:
@@ -65,8 +65,9 @@ def curve(values, name, error=AnalysisError) -> np.ndarray:
 def instance(value, kind, name, error=AnalysisError, hint=""):
     """``value`` unchanged if it is a ``kind``."""
     if not isinstance(value, kind):
-        raise error(f"must be {'an' if kind.__name__[0] in 'AEIOU' else 'a'} {kind.__name__}"
-                    f"{hint}, got {type(value).__name__}", name)
+        names = " or ".join(k.__name__ for k in (kind if isinstance(kind, tuple) else (kind,)))
+        raise error(f"must be {'an' if names[0] in 'AEIOU' else 'a'} {names}{hint}, got "
+                    f"{type(value).__name__}", name)
     return value
 
 
@@ -80,3 +81,18 @@ def path(value, name="path"):
                                          f"got {value!r}")
     error.parameter = name
     raise error
+
+
+def items(values, kind, name, error=AnalysisError, what="analysed engine") -> list:
+    """``values`` as a non-empty list of ``kind`` (one ``kind`` alone is taken as a list of one)."""
+    if isinstance(values, kind):
+        return [values]
+    if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+        raise error(f"must be a list of {kind.__name__}s, got {type(values).__name__}", name)
+    chosen = list(values)
+    if not chosen:
+        raise error(f"needs at least one {what}", name)
+    for value in chosen:
+        if not isinstance(value, kind):
+            raise error(f"must hold {kind.__name__}s only, got {type(value).__name__}", name)
+    return chosen

@@ -1149,6 +1149,10 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
             raise AnalysisError(f"must be a whole number from {low:,} to {high:,}, got {value!r}",
                                 name)
     top, restarts, limit, seed, workers = map(int, (top, restarts, limit, seed, workers))
+    if scheduler is not None and not isinstance(scheduler, str) \
+            and not all(hasattr(scheduler, a) for a in ("scatter", "submit", "nthreads")):
+        raise AnalysisError(f"must be a scheduler address such as tcp://host:8786 or a "
+                            f"distributed.Client, got {scheduler!r}", "scheduler")
     if heuristic and scheduler is not None:
         raise AnalysisError("applies to the exhaustive search, but the heuristic search runs in "
                             "this process: leave out one of the two", "scheduler")

@@ -10,6 +10,7 @@ calls first.
 import math
 from dataclasses import dataclass, field
 
+from .checks import is_real
 from .errors import ModelError, UnitError
 from .tolerances import NOISE_FLOOR, SAME_DIRECTION_RAD, SAME_POSITION_M
 from .units import check_finite_range
@@ -248,6 +249,9 @@ class Engine:
             value = getattr(self, name)
             if isinstance(value, list):
                 object.__setattr__(self, name, tuple(value))
+            elif not isinstance(value, tuple) and (name != "firing_order" or value is not None):
+                # a number here failed later with "not iterable"
+                raise ModelError(f"must be a list or tuple, got {value!r}", name)
         object.__setattr__(self, "_by_number", {c.number: c for c in self.cylinders
                                                 if isinstance(c, Cylinder)})
         _check(self)
@@ -309,7 +313,7 @@ def _quantity(value, dimension, parameter, sign="positive", cylinder=None):
     """A finite SI value within the accepted range; ``sign`` "positive", "non-negative" or "any"."""
     prefix = f"cylinder {cylinder}: {parameter} " if cylinder is not None else ""
     name = None if prefix else parameter
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
+    if not is_real(value):
         raise ModelError(f"{prefix}must be a number, got {value!r}", name, cylinder)
     try:
         # a value that may be zero may also be tiny (rounding noise of a computed position)
@@ -322,8 +326,7 @@ def _quantity(value, dimension, parameter, sign="positive", cylinder=None):
 
 
 def _angle(value, parameter, cylinder=None):
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
-            or abs(value) > 2 * math.pi:
+    if not is_real(value) or not math.isfinite(value) or abs(value) > 2 * math.pi:
         where = f"cylinder {cylinder}: {parameter} " if cylinder is not None else ""
         raise ModelError(f"{where}must be a finite angle between -2π and 2π rad, got {value!r}",
                          None if where else parameter, cylinder)

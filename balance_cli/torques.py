@@ -28,8 +28,8 @@ from functools import cached_property
 import numpy as np
 
 from .analysis import DOCUMENT_VERSION
-from .checks import instance, is_real, positive
-from .errors import AnalysisError, SamplingWarning
+from .checks import instance, is_real, items, positive
+from .errors import AnalysisError, OrderError, SamplingWarning
 from .gas import PressureCurve, cycle_pressure
 from .harmonics import orders_of
 from .firing import firing_sequence
@@ -103,11 +103,15 @@ class Series:
         return self.max - self.min
 
     def order(self, k) -> tuple:
-        """(cos, sin) of order ``k`` (a multiple of ½ for a four-stroke); KeyError otherwise."""
-        for order, cos, sin in self.orders:
-            if abs(order - k) < 1e-9:
-                return cos, sin
-        raise KeyError(f"order {k!r} is not among the orders of this torque")
+        """(cos, sin) of order ``k`` (a multiple of ½ for a four-stroke); OrderError (a
+        KeyError) otherwise."""
+        if is_real(k):
+            for order, cos, sin in self.orders:
+                if abs(order - k) < 1e-9:
+                    return cos, sin
+        highest = self.orders[-1][0] if self.orders else 0
+        raise OrderError(f"order {k!r} is not among the orders of this series (multiples of "
+                         f"{360 / self.period_deg:g} up to {highest:g})")
 
     def to_dict(self) -> dict:
         """``mean_<unit>``, ``max_``, ``min_``, ``range_`` and ``orders[]`` (``order``, ``cos_``,
@@ -168,9 +172,16 @@ class PinForce:
         return np.fft.fft(self.force_n) / self.force_n.shape[-1]
 
     def order(self, k):
-        """Forward and backward phasors of order ``k``, N: F = F⁺·e^{ikθ} + F⁻·e^{−ikθ}."""
+        """Forward and backward phasors of order ``k``, N: F = F⁺·e^{ikθ} + F⁻·e^{−ikθ}; k
+        from 0 to below half the samples a period, a multiple of ½ for a four-stroke with gas
+        (OrderError, a KeyError, otherwise)."""
         n = self.force_n.shape[-1]
-        j = int(round(k * self.period_deg / 360.0))
+        steps = k * self.period_deg / 360.0 if is_real(k) and math.isfinite(k) else math.nan
+        # order(1e300) once wrapped round the samples and answered
+        if not (0 <= steps < n / 2 and abs(steps - round(steps)) < 1e-9):
+            raise OrderError(f"order {k!r} is not among the orders of these forces (multiples of "
+                             f"{360 / self.period_deg:g} below {n / 2 * 360 / self.period_deg:g})")
+        j = int(round(steps))
         c = self._spectrum
         return complex(c[j % n]), complex(c[-j % n])
 
@@ -259,6 +270,11 @@ class TorqueSet:
     """The torques of several engines, analysed alike."""
 
     results: tuple
+
+    def __post_init__(self):
+        # TorqueSet(()) failed later, in to_dict, with an IndexError
+        object.__setattr__(self, "results", tuple(items(self.results, TorqueResult, "results",
+                                                         what="engine's torques")))
 
     def to_dict(self) -> dict:
         """What ``torque --format json`` writes: one :meth:`TorqueResult.to_dict` per engine."""
