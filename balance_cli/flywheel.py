@@ -319,11 +319,11 @@ def flywheel_for(target, torque_nm, period_deg, speed_rad_s, load="propeller",
     target = float(target)
     # every other argument checked once, as steadiness checks it, before the root finder
     # turns an error about them into "the engine stops"
-    torque = _curve(torque_nm, "torque_nm")
-    _reduced_mass(reduced_mass_kgm2, len(torque), _period(period_deg))
-    _positive(speed_rad_s, "speed_rad_s", "angular speed")
-    if not isinstance(load, str) or load not in LOADS:
-        raise AnalysisError(f"must be one of {', '.join(LOADS)}, got {load!r}", "load")
+    try:
+        steadiness(torque_nm, period_deg, 1.0, speed_rad_s, load, reduced_mass_kgm2)
+    except AnalysisError as error:
+        if error.parameter != "inertia_kgm2":   # that one is the root finder's to vary
+            raise
 
     def factor_at(inertia):
         try:

@@ -8,6 +8,7 @@ calls first.
 """
 
 import math
+import numbers
 from dataclasses import dataclass, field
 
 from .checks import is_real
@@ -38,6 +39,11 @@ class Throw:
 
     phase_rad: float
     z_m: float = 0.0
+
+    def __post_init__(self):
+        # checked here too, not only in the Engine: a Throw of NaN once built without a word
+        _angle(self.phase_rad, "phase_rad")
+        _quantity(self.z_m, "length", "z_m", sign="any")
 
 
 @dataclass(frozen=True)
@@ -87,6 +93,21 @@ class Cylinder:
     knuckle_angle_rad: float = 0.0
     knuckle_kg: float = 0.0
     rod_inertia_kgm2: float = 0.0
+
+    def __post_init__(self):
+        # the types here, the ranges and references in the Engine that holds the cylinder
+        n = self.number
+        if not isinstance(n, numbers.Integral) or isinstance(n, bool) or n < 1:
+            raise ModelError(f"must be a whole number from 1, got {n!r}", "number")
+        object.__setattr__(self, "number", int(n))   # numpy's whole numbers as Python's
+        for name in ("z_m", "reciprocating_kg", "link_length_m", "knuckle_radius_m",
+                     "knuckle_angle_rad", "knuckle_kg", "rod_inertia_kgm2"):
+            value = getattr(self, name)
+            if not is_real(value) or not math.isfinite(value):
+                raise ModelError(f"cylinder {n}: {name} must be a finite number, got {value!r}",
+                                 cylinder=n)
+        _quantity(self.reciprocating_kg, "mass", "reciprocating_kg", cylinder=n)
+        _quantity(self.knuckle_kg, "mass", "knuckle_kg", sign="non-negative", cylinder=n)
 
     @property
     def is_link(self) -> bool:

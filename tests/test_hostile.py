@@ -900,3 +900,22 @@ def test_a_target_just_above_one_half_gives_the_least_steadiness():
     inertia = flywheel_for(least * 1.01, torque, 720.0, omega)
     np.testing.assert_allclose(steadiness(torque, 720.0, inertia, omega).factor, least * 1.01,
                                rtol=1e-3)
+
+
+def test_a_configuration_with_a_byte_order_mark_is_read(tmp_path):
+    """Rough edge: a UTF-8 byte-order mark was refused as "Invalid statement (line 1,
+    column 1)"; CSV files accepted it. The same engine with and without the mark compares
+    alike, from a file and from a string."""
+    import balance_cli as balance
+
+    plain = twin(tmp_path, name="plain.toml")
+    marked = tmp_path / "marked.toml"
+    marked.write_bytes(b"\xef\xbb\xbf" + GOOD.encode("utf-8"))
+    before = snapshot(tmp_path)
+    result = invoke("compare", marked, "--format", "json")
+    assert result.exit_code == 0, result.output
+    assert json.loads(result.stdout)["engines"][0]["orders"] == \
+        json.loads(invoke("compare", plain, "--format", "json").stdout)["engines"][0]["orders"]
+    assert snapshot(tmp_path) == before
+    assert balance.loads("\ufeff" + GOOD).name == "test twin"
+    assert balance.load_template(marked)[0].name == "test twin"
