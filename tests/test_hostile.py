@@ -918,4 +918,6 @@ def test_a_configuration_with_a_byte_order_mark_is_read(tmp_path):
         json.loads(invoke("compare", plain, "--format", "json").stdout)["engines"][0]["orders"]
     assert snapshot(tmp_path) == before
     assert balance.loads("\ufeff" + GOOD).name == "test twin"
-    assert balance.load_template(marked)[0].name == "test twin"
+    template = tmp_path / "template.toml"
+    template.write_bytes(b"\xef\xbb\xbf" + (TEMPLATES / "inline-6-2stroke.toml").read_bytes())
+    assert balance.load_template(template)[0].n_cylinders == 6
