@@ -921,3 +921,22 @@ def test_a_configuration_with_a_byte_order_mark_is_read(tmp_path):
     template = tmp_path / "template.toml"
     template.write_bytes(b"\xef\xbb\xbf" + (TEMPLATES / "inline-6-2stroke.toml").read_bytes())
     assert balance.load_template(template)[0].n_cylinders == 6
+
+
+def test_progress_covers_the_listed_arrangements_analyses():
+    """Item 4's silence: progress reached 100 % before the listed arrangements were analysed
+    (minutes with a large --top). Now the analyses are counted, and progress ends at its
+    total only when the result is ready."""
+    import balance_cli as balance
+
+    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    calls = []
+    found = search_api(template, "M1", top=5, progress=lambda done, total: calls.append((done, total)))
+    totals = {total for _, total in calls}
+    assert len(totals) == 1
+    total = totals.pop()
+    assert calls[-1][0] == total
+    assert [done for done, _ in calls] == sorted(done for done, _ in calls)
+    # the last five calls are the five analyses, one each
+    assert [done for done, _ in calls[-5:]] == list(range(total - 4, total + 1))
+    assert len(found.arrangements) == 5
