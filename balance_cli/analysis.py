@@ -1,5 +1,6 @@
 """The analysis of one engine (shaking, firing, largest resultant) and the comparison of several."""
 
+import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
@@ -10,13 +11,23 @@ from .errors import AnalysisError
 from .firing import Firing, firing_sequence
 from .kinematics import check_assembly
 from .model import Engine
-from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, OrderComponents, Shaking, shaking_forces
+from .shaking import (DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, OrderComponents, Shaking, part_values,
+                      shaking_forces)
 from .units import rad_s_to_rpm
 
 __all__ = ["EngineResult", "Comparison", "analyse", "compare", "find_reference"]
 
-#: version of the JSON documents balance writes
-DOCUMENT_VERSION = 1
+#: version of the JSON documents balance writes. 2 added the vertical and horizontal
+#: components, the free moments' summary and an axis of None for circles; balance regress
+#: still reads baselines of version 1 (their keys are a subset)
+DOCUMENT_VERSION = 2
+READABLE_VERSIONS = (1, 2)
+
+#: an ellipse's axis within this of the vertical or the horizontal is called so in words
+_DIRECTION_WORD_DEG = 1.0
+#: an ellipse whose min is at least this fraction of its max is called nearly rotating: its
+#: axis barely matters to the mounts
+_NEARLY_ROUND = 0.9
 
 
 @dataclass(frozen=True)
@@ -37,6 +48,9 @@ class EngineResult:
         the same once an ideal crankshaft counterweight has cancelled the forward first order
         (what Tanaka's Part III compares), N; a rotary's crank does not turn, so nothing is
         cancelled there. Both are exact zeros below the engine's noise floor.
+    largest_moment_nm, counterweighted_moment_nm : float
+        the same for the free moment, N·m: an ideal two-plane counterweight cancels the
+        forward first-order moment too
     """
 
     engine: Engine
@@ -45,6 +59,8 @@ class EngineResult:
     samples: int
     largest_force_n: float
     counterweighted_force_n: float
+    largest_moment_nm: float = 0.0
+    counterweighted_moment_nm: float = 0.0
 
     @property
     def max_order(self) -> int:
@@ -81,6 +97,37 @@ class EngineResult:
             return None
         return 100.0 * self.counterweighted_per_cylinder / reference.counterweighted_per_cylinder
 
+    def main_order(self, part: str = "force") -> dict | None:
+        """The order that contributes most to the counterweighted ``part`` ("force" or
+        "moment"): ``order``, ``max`` (N or N·m, the ellipse's largest value, the forward first
+        order left out where a counterweight takes it), ``axis_deg`` (None: it turns) and
+        ``direction`` in words: "rotating forward" or "rotating backward" for a circle (and
+        "nearly rotating ..." when min ≥ 0.9·max), else "vertical", "horizontal" or "+30° from
+        vertical" (positive with rotation; for a moment "pitching", "yawing", "+30° from
+        pitching"). None when nothing is left."""
+        if part not in ("force", "moment"):
+            raise AnalysisError(f'must be "force" or "moment", got {part!r}', "part")
+        engine = self.engine
+        unit = "N" if part == "force" else "Nm"
+        floor = engine.noise_floor_n if part == "force" else engine.noise_floor_nm
+        best = None
+        for o in self.shaking.orders:
+            forward = o.force_forward if part == "force" else o.moment_forward
+            backward = o.force_backward if part == "force" else o.moment_backward
+            if o.order == 1 and self.counterweight_cancels_first_order:
+                forward = 0j
+            values = part_values(forward, backward, floor, unit, engine.vertical_axis_rad)
+            if values[f"max_{unit}"] > (best["max"] if best else 0.0):
+                best = {"order": o.order, "max": values[f"max_{unit}"], "axis_deg": values["axis_deg"],
+                        "min": values[f"min_{unit}"],
+                        "sense": "forward" if values[f"forward_{unit}"] >= values[f"backward_{unit}"]
+                        else "backward"}
+        if best is None:
+            return None
+        best["direction"] = _direction_words(best, engine.vertical_axis_rad, part)
+        del best["min"], best["sense"]
+        return best
+
     def to_dict(self, reference: "EngineResult | None" = None) -> dict:
         """This engine's entry of ``compare --format json`` (SI units; see the README).
 
@@ -88,7 +135,6 @@ class EngineResult:
         comparison of a single engine).
         """
         engine = self.engine
-        floor = engine.noise_floor_n
         return {
             "name": engine.name,
             "config": engine.config_path,
@@ -103,8 +149,15 @@ class EngineResult:
             "counterweighted_resultant_N": self.counterweighted_force_n,
             "counterweighted_resultant_per_cylinder": self.counterweighted_per_cylinder,
             "percent_of_reference": self.percent_of(reference or self),
+            "vertical_deg": math.degrees(engine.vertical_axis_rad),
+            "noise_floor_N": engine.noise_floor_n,
+            "noise_floor_Nm": engine.noise_floor_nm,
+            "largest_moment_Nm": self.largest_moment_nm,
+            "counterweighted_moment_Nm": self.counterweighted_moment_nm,
+            "main_force_order": _main_record(self.main_order("force"), "N"),
+            "main_moment_order": _main_record(self.main_order("moment"), "Nm"),
             "sampling_ok": self.shaking.sampling_ok,
-            "orders": [o.to_dict(floor) for o in self.shaking.orders],
+            "orders": self.shaking.records(engine),
         }
 
 
@@ -114,8 +167,35 @@ def _counterweight_cancels_first_order(engine):
     return not engine.is_rotary
 
 
-def _above_floor(value, engine):
-    return value if value >= engine.noise_floor_n else 0.0
+def _above_floor(value, floor):
+    return value if value >= floor else 0.0
+
+
+def _main_record(main, unit):
+    """``main_order``'s entry in JSON: its ``max`` with the unit in the key."""
+    if main is None:
+        return None
+    return {"order": main["order"], f"max_{unit}": main["max"], "axis_deg": main["axis_deg"],
+            "direction": main["direction"]}
+
+
+def _direction_words(main, vertical_rad, part):
+    """An order's ellipse in words: turning (and which way) when it is a circle or nearly one,
+    else its axis from the engine's vertical."""
+    axis_deg = main["axis_deg"]
+    if axis_deg is None:
+        return f"rotating {main['sense']}"
+    if main["min"] >= _NEARLY_ROUND * main["max"]:
+        return f"nearly rotating {main['sense']}"
+    off = (axis_deg - math.degrees(vertical_rad)) % 180.0
+    names = ("vertical", "horizontal") if part == "force" else ("pitching", "yawing")
+    if min(off, 180.0 - off) <= _DIRECTION_WORD_DEG:
+        return names[0]
+    if abs(off - 90.0) <= _DIRECTION_WORD_DEG:
+        return names[1]
+    # the axis measured from the vertical the short way, positive with rotation
+    signed = off if off <= 90.0 else off - 180.0
+    return f"{signed:+.0f}° from {names[0]}"
 
 
 def analyse(engine: Engine, samples: int = DEFAULT_SAMPLES,
@@ -147,15 +227,18 @@ def analyse(engine: Engine, samples: int = DEFAULT_SAMPLES,
     instance(engine, Engine, "engine", hint=" (balance.load gives one)")
     check_assembly(engine)
     shaking = shaking_forces(engine, samples, max_order)
+    cancels = _counterweight_cancels_first_order(engine)
     return EngineResult(
         engine=engine,
         shaking=shaking,
         firing=firing_sequence(engine),
         samples=samples,
-        largest_force_n=_above_floor(shaking.largest_force(), engine),
-        counterweighted_force_n=_above_floor(
-            shaking.largest_force(skip_forward_first=_counterweight_cancels_first_order(engine)),
-            engine),
+        largest_force_n=_above_floor(shaking.largest_force(), engine.noise_floor_n),
+        counterweighted_force_n=_above_floor(shaking.largest_force(skip_forward_first=cancels),
+                                             engine.noise_floor_n),
+        largest_moment_nm=_above_floor(shaking.largest_moment(), engine.noise_floor_nm),
+        counterweighted_moment_nm=_above_floor(shaking.largest_moment(skip_forward_first=cancels),
+                                               engine.noise_floor_nm),
     )
 
 

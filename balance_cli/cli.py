@@ -31,7 +31,7 @@ from .report.junit import junit_xml
 from .report.tables import (balance_tables, compare_tables, list_table, regression_tables,
                             search_tables, show_table, steadiness_text, torque_tables)
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings
-from .units import parse_quantity
+from .units import UNIT_SYSTEMS, parse_quantity
 
 __all__ = ["main"]
 
@@ -57,8 +57,13 @@ _OUTPUT = click.option("--output", "-o", default="-", metavar="FILE", show_defau
                        help="Write here (atomically) instead of standard output.")
 _ABSOLUTE = click.option("--absolute", is_flag=True,
                          help="Forces in newtons (or --units) instead of per cylinder (× m_rec·r·ω²·n).")
-_UNITS = click.option("--units", type=click.Choice(["N", "kgf"]), default="N", show_default=True,
-                      help="Units of absolute forces and of moments; kgf implies --absolute.")
+_UNIT_CHOICE = click.Choice(list(UNIT_SYSTEMS), case_sensitive=False)
+_UNITS = click.option("--units", type=_UNIT_CHOICE, default="N", show_default=True,
+                      help="Units of absolute forces and of moments, one system: N and N·m, kN and "
+                           "kN·m, MN and MN·m, kgf and kgf·m, lbf and lbf·ft; any but N implies "
+                           "--absolute. JSON stays SI.")
+_SPEED = click.option("--speed", "speed", default=None, metavar="SPEED",
+                      help="Analyse at this speed instead of the files' (e.g. '3000 rpm').")
 
 
 def _message(exc, engine=None, flags=None):
@@ -115,9 +120,18 @@ def _inputs(paths):
         return find_configs(paths)
 
 
-def _load_all(files):
+def _load_all(files, speed=None):
+    """The engines of ``files``, at ``speed`` (the --speed text) when given."""
+    speed_rad_s = _quantity_option(speed, "--speed", "angular speed")
     with _reported():
-        return [load(f) for f in files]
+        engines = [load(f) for f in files]
+    if speed_rad_s is None:
+        return engines
+    out = []
+    for engine in engines:
+        with _reported(engine):
+            out.append(engine.replace(speed_rad_s=speed_rad_s))
+    return out
 
 
 def _guard(outputs, files):
@@ -220,11 +234,12 @@ def show(path):
 @_MAX_ORDER
 @_ABSOLUTE
 @_UNITS
+@_SPEED
 @click.option("--reference", default=None, metavar="NAME",
               help="Engine the percentages refer to (name or unique prefix); default the first.")
 @_FORMAT
 @_OUTPUT
-def compare(paths, samples, max_order, absolute, units, reference, fmt, output):
+def compare(paths, samples, max_order, absolute, units, speed, reference, fmt, output):
     """Compare engines order by order, in the style of Tanaka's Part III.
 
     FILE|DIR...: configuration files, or folders searched recursively for .toml files,
@@ -233,7 +248,7 @@ def compare(paths, samples, max_order, absolute, units, reference, fmt, output):
     files = _inputs(paths)
     _guard([output], files)
     _settings(samples, max_order)
-    engines = _load_all(files)
+    engines = _load_all(files, speed)
     results = _analyse_all(engines, samples, max_order)
     with _reported():
         comparison = comparison_of(results, reference)
@@ -277,6 +292,31 @@ def _orders_option(text):
                                  param_hint="--shafts") from None
 
 
+def _shaft_offsets_option(texts):
+    """``--shaft-offset [RATIO:]LATERAL,VERTICAL`` (repeatable) as the library's mapping:
+    without RATIO the offset of every shaft not named."""
+    offsets = {}
+    for text in texts:
+        ratio, _, lengths = text.rpartition(":")
+        key = None
+        if ratio.strip():
+            try:
+                key = int(ratio)
+            except ValueError:
+                raise click.BadParameter(f"{text!r}: the speed ratio before ':' must be a whole "
+                                         "number such as +2 or -2", param_hint="--shaft-offset") from None
+        parts = lengths.split(",")
+        if len(parts) != 2:
+            raise click.BadParameter(f"{text!r}: give LATERAL,VERTICAL such as '120 mm,-80 mm', "
+                                     "optionally after a speed ratio ('-2:120 mm,-80 mm')",
+                                     param_hint="--shaft-offset")
+        if key in offsets:
+            which = "every shaft" if key is None else f"speed ratio {key:+d}"
+            raise click.BadParameter(f"{which} is placed twice", param_hint="--shaft-offset")
+        offsets[key] = tuple(_length_option(p.strip(), "--shaft-offset") for p in parts)
+    return offsets or None
+
+
 def _length_option(text, flag):
     if text is None:
         return None
@@ -298,6 +338,10 @@ def _length_option(text, flag):
                    "throw (0.5 is the classic single's), instead of cancelling the forward first order.")
 @click.option("--shafts", metavar="K[,K...]",
               help="Cancel these residual orders with balancer shafts (k× speed, with or against the crank).")
+@click.option("--shaft-offset", "shaft_offsets", multiple=True, metavar="[RATIO:]LATERAL,VERTICAL",
+              help="Put the shafts' axes off the crank axis, e.g. '120 mm,-80 mm' (lateral along the "
+                   "engine's horizontal, vertical along its vertical); '-2:…' places only the shaft "
+                   "of speed ratio −2. Repeatable. Reports the rolling moment the offsets leave.")
 @click.option("--antivibrateur", "antivibrateur", is_flag=True,
               help="Add Fraeys de Veubeke's rotor on the crank pin (twice crank speed), sized to "
                    "cancel the forward second order (single-throw engines with a turning crank).")
@@ -309,15 +353,17 @@ def _length_option(text, flag):
 @_MAX_ORDER
 @_ABSOLUTE
 @_UNITS
+@_SPEED
 @_FORMAT
 @_OUTPUT
-def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, antivibrateur_radius,
-                  test_masses, samples, max_order, absolute, units, fmt, output):
+def counterweight(paths, planes, radius, balance_factor, shafts, shaft_offsets, antivibrateur,
+                  antivibrateur_radius, test_masses, samples, max_order, absolute, units, speed, fmt,
+                  output):
     """Counterweights that cancel the forward first order, and what is left.
 
     Two planes cancel the forward first-order force and moment; one plane the force only.
-    Optionally: balancer shafts for residual orders, the antivibrateur of radial engines, and
-    the balancing-machine test masses.
+    Optionally: balancer shafts for residual orders (placed off the crank axis with
+    --shaft-offset), the antivibrateur of radial engines, and the balancing-machine test masses.
     """
     files = _inputs(paths)
     _guard([output], files)
@@ -326,13 +372,15 @@ def counterweight(paths, planes, radius, balance_factor, shafts, antivibrateur, 
     orders = _orders_option(shafts)
     radius_m = _length_option(radius, "--radius")
     rotor = _length_option(antivibrateur_radius, "--antivibrateur-radius") if antivibrateur else None
-    with _reported():
-        check_options(radius_m, balance_factor, orders, rotor, max_order)
-    engines = _load_all(files)
+    offsets = _shaft_offsets_option(shaft_offsets)
+    flags = {"shaft_offsets": "--shaft-offset"}
+    with _reported(flags=flags):
+        check_options(radius_m, balance_factor, orders, rotor, max_order, offsets)
+    engines = _load_all(files, speed)
 
     def work(engine):
         return counterweights(engine, plane_specs, radius_m, balance_factor, orders, rotor,
-                              test_masses, samples, max_order)
+                              test_masses, samples, max_order, offsets)
 
     balances = _run_each(engines, "Balancing", work)
     scale = Scale.of(absolute, units)
@@ -439,7 +487,11 @@ def plot(paths, kind, output, order, units, samples, max_order):
               help="Order drawn in the star diagram  [default: 2, or 1 with --max-order 1].")
 @_SAMPLES
 @_MAX_ORDER
-def report(paths, output, with_html, reference, star_order, samples, max_order):
+@click.option("--units", type=_UNIT_CHOICE, default="N", show_default=True,
+              help="Units of moments and torques (and of forces other than the per-cylinder "
+                   "comparison): N, kN, MN, kgf or lbf with N·m, kN·m, MN·m, kgf·m or lbf·ft.")
+@_SPEED
+def report(paths, output, with_html, reference, star_order, samples, max_order, units, speed):
     """Write a comparison report: tables, counterweights, torques and pictures (Markdown,
     optionally HTML).
 
@@ -458,7 +510,7 @@ def report(paths, output, with_html, reference, star_order, samples, max_order):
     star_order = min(2, max_order) if star_order is None else star_order
     if star_order > max_order:
         raise click.ClickException(f"--star-order {star_order} is above --max-order {max_order}")
-    results = _analyse_all(_load_all(files), samples, max_order)
+    results = _analyse_all(_load_all(files, speed), samples, max_order)
     with _reported():
         comparison = comparison_of(results, reference)
     balances = _run_each(results, "Balancing", counterweights)
@@ -468,7 +520,8 @@ def report(paths, output, with_html, reference, star_order, samples, max_order):
     torques = _run_each([r.engine for r in results], "Torques",
                         lambda e: torque_of(e, samples, max_order, bearings=False))
     with _reported(), _drawing():
-        written = write_report(target, comparison, balances, star_order, with_html, torques)
+        written = write_report(target, comparison, balances, star_order, with_html, torques,
+                               Scale(False, units))
     for path in written:
         click.echo(f"wrote {path}", err=True)
 
@@ -508,12 +561,15 @@ _LOAD = click.option("--load", type=click.Choice(["propeller", "constant"]), def
 @_LOAD
 @_SAMPLES
 @_MAX_ORDER
-@click.option("--units", type=click.Choice(["N", "kgf"]), default="N", show_default=True,
-              help="Units of torques (N·m or kgf·m) and forces in the tables; JSON stays SI.")
+@click.option("--units", type=_UNIT_CHOICE, default="N", show_default=True,
+              help="Units of torques (N·m, kN·m, MN·m, kgf·m or lbf·ft) and forces (N, kN, MN, "
+                   "kgf or lbf) in the tables; JSON stays SI.")
+@_SPEED
 @click.option("--format", "fmt", type=click.Choice(["table", "markdown", "csv", "json"]),
               default="table", show_default=True, help="Output format.")
 @_OUTPUT
-def torque(paths, pressure, bore, inertia, target, load, samples, max_order, units, fmt, output):
+def torque(paths, pressure, bore, inertia, target, load, samples, max_order, units, speed, fmt,
+           output):
     """Torques at constant speed: inertia, gas, total, the rods' tilting couple and the frame
     reaction, order by order; the reduced mass; the forces on the crank pins and main bearings.
 
@@ -534,7 +590,7 @@ def torque(paths, pressure, bore, inertia, target, load, samples, max_order, uni
     _settings(samples, max_order)
     bore_m = _quantity_option(bore, "--bore", "length")
     inertia_kgm2 = _quantity_option(inertia, "--inertia", "moment of inertia")
-    engines = _load_all(files)
+    engines = _load_all(files, speed)
     curve = None
     if pressure is not None:
         with _reported():
@@ -628,8 +684,11 @@ def _read_baseline(path):
 @click.option("--format", "fmt", type=click.Choice(["table", "markdown", "json", "junit"]),
               default="table", show_default=True,
               help="markdown suits a CI job summary; junit is JUnit XML for CI test reports.")
+@click.option("--units", type=_UNIT_CHOICE, default="N", show_default=True,
+              help="Units of the forces and moments in the table (N, kN, MN, kgf or lbf with "
+                   "N·m, ...); JSON and JUnit stay SI.")
 @_OUTPUT
-def regress(baseline, paths, rtol, update, fmt, output):
+def regress(baseline, paths, rtol, update, fmt, units, output):
     """Check engines against a baseline comparison: exit status 1 when anything moved.
 
     BASELINE.json is what `balance compare --format json` wrote; the engines are analysed again
@@ -655,7 +714,7 @@ def regress(baseline, paths, rtol, update, fmt, output):
     elif fmt == "junit":
         text = junit_xml(regression)
     else:
-        text = regression_tables(regression, fmt)
+        text = regression_tables(regression, fmt, Scale.of(True, units))
     _write(output, text)
     if update:
         _write(baseline, to_json(comparison.to_dict()))
@@ -743,13 +802,15 @@ def _search_progress():
                    "[default: 2e9, about a minute on two cores].")
 @_SAMPLES
 @_MAX_ORDER
+@_UNITS
+@_SPEED
 @_FORMAT
 @_OUTPUT
 @click.option("--write", "write_dir", default=None, metavar="DIR",
               help="Also write each listed arrangement as a complete configuration "
                    "(DIR/arrangement-01.toml, ...), for compare, counterweight and plot.")
 def search(template_path, objective, top, allow_uneven, step, workers, scheduler, heuristic,
-           restarts, seed, limit, samples, max_order, fmt, output, write_dir):
+           restarts, seed, limit, samples, max_order, units, speed, fmt, output, write_dir):
     """Find the crank arrangements and firing orders that leave the least of what you ask.
 
     TEMPLATE.toml is an ordinary configuration whose [[throws]] give only z (no phase) and
@@ -774,6 +835,12 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
                 raise OutputError(f"{output!r} is one of the files --write writes; write the "
                                   "table somewhere else")
     _settings(samples, max_order)
+    speed_rad_s = _quantity_option(speed, "--speed", "angular speed")
+    if speed_rad_s is not None:
+        with _reported(template):
+            template = template.replace(speed_rad_s=speed_rad_s)
+        # the configurations --write writes are at the speed analysed
+        data = {**data, "speed": speed}
     callback, bar = _search_progress()
     with _search_reported(template), bar:
         result = search_of(template, objective, top=top, allow_uneven=allow_uneven,
@@ -789,7 +856,7 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
         with _reported():
             comparison = (comparison_of([a.result for a in result.arrangements])
                           if result.arrangements else None)
-        text = search_tables(result, comparison, Scale.of(False, "N"), fmt)
+        text = search_tables(result, comparison, Scale.of(False, units), fmt)
     if write_dir is None:
         _write(output, text)
         return

@@ -4,12 +4,16 @@ Everything works on the phasors of the shaking analysis: a mass m at radius ρ t
 the crank at angle φ (measured like a throw phase) adds m·ρ·ω²·e^{iφ} to the forward
 first-order force and (z − z̄) times that to the free moment. A balancer shaft of order k adds
 m·e·(kω)²·e^{iφ} to the forward (or, counter-rotating, the backward) part of order k.
+
+A shaft whose axis sits off the crank axis, at x in the transverse plane, leaves the free
+force and the pitching and yawing moments as they are (those depend on z only), but its force
+F(θ) acting at x turns the engine about the crank axis: the rolling moment x × F = Im(x̄·F).
 """
 
 import cmath
 import math
 import numbers
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 from .analysis import DOCUMENT_VERSION, EngineResult, analyse
@@ -20,8 +24,9 @@ from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, Shaking
 from .tolerances import SAME_POSITION_M
 from .units import check_finite_range, phasor_deg, rad_s_to_rpm
 
-__all__ = ["Plane", "Counterweight", "Shaft", "Antivibrateur", "Balance", "Balances",
-           "counterweights", "check_options", "plane_at_throw", "plane_at"]
+__all__ = ["Plane", "Counterweight", "Shaft", "ShaftMass", "BalancerShaft", "RollingMoment",
+           "Antivibrateur", "Balance", "Balances", "counterweights", "check_options",
+           "plane_at_throw", "plane_at", "offset_position", "rolling_moment_phasor"]
 
 #: the balance factor is a fraction of the reciprocating masses
 _BALANCE_FACTOR_RANGE = (0.0, 1.0)
@@ -74,6 +79,95 @@ class Shaft:
 
 
 @dataclass(frozen=True)
+class ShaftMass:
+    """One unbalance on a balancer shaft: m·e (kg·m), its direction from the reference axis
+    (positive with rotation) when the crank angle is 0, and its axial position (m)."""
+
+    mass_eccentricity_kgm: float
+    phase_deg: float
+    z_m: float
+
+    def mass_kg(self, eccentricity_m: float) -> float:
+        """The mass that gives this unbalance at ``eccentricity_m``, kg."""
+        return self.mass_eccentricity_kgm / _positive_length(eccentricity_m, "eccentricity_m")
+
+    def to_dict(self) -> dict:
+        return {"mass_eccentricity_kgm": self.mass_eccentricity_kgm, "phase_deg": self.phase_deg,
+                "z_m": self.z_m}
+
+
+@dataclass(frozen=True)
+class RollingMoment:
+    """A moment about the crank axis of one order, N·m, positive with rotation (the sense of
+    ``balance torque``'s frame torque, so the two add):
+    M(θ) = cos·cos kθ + sin·sin kθ = amplitude·cos(kθ − phase).
+
+    ``speed_ratios`` names the shafts that make it.
+    """
+
+    order: int
+    cos_nm: float
+    sin_nm: float
+    speed_ratios: tuple = ()
+
+    @classmethod
+    def from_phasor(cls, order, phasor, floor_nm, speed_ratios=()):
+        """From C with M(θ) = Re(C·e^{ikθ}); parts below ``floor_nm`` are rounding noise."""
+        clean = lambda x: float(x) if abs(x) >= floor_nm else 0.0  # noqa: E731
+        return cls(int(order), clean(phasor.real), clean(-phasor.imag), tuple(speed_ratios))
+
+    @property
+    def amplitude_nm(self) -> float:
+        return math.hypot(self.cos_nm, self.sin_nm)
+
+    @property
+    def phase_deg(self) -> float:
+        return phasor_deg(complex(self.cos_nm, self.sin_nm))
+
+    def to_dict(self) -> dict:
+        entry = {"order": self.order, "cos_Nm": self.cos_nm, "sin_Nm": self.sin_nm,
+                 "amplitude_Nm": self.amplitude_nm, "phase_deg": self.phase_deg}
+        if self.speed_ratios:
+            entry["speed_ratios"] = list(self.speed_ratios)
+        return entry
+
+
+@dataclass(frozen=True)
+class BalancerShaft:
+    """A balancer shaft as built: one shaft turning at ``speed_ratio`` × crank speed (+k with
+    the crank, −k against it) with its masses, its axis at ``lateral_m`` and ``vertical_m``
+    from the crank axis (lateral along the engine's horizontal, 90° on from its vertical with
+    rotation).
+
+    ``force_n`` is the size of the rotating force of all its masses together, N, and
+    ``rolling_moment`` the moment that force makes about the crank axis (zero on the axis).
+    """
+
+    speed_ratio: int
+    masses: tuple
+    lateral_m: float = 0.0
+    vertical_m: float = 0.0
+    force_n: float = 0.0
+    rolling_moment: RollingMoment | None = None
+
+    @property
+    def order(self) -> int:
+        return abs(self.speed_ratio)
+
+    @property
+    def centred(self) -> bool:
+        return self.lateral_m == 0.0 and self.vertical_m == 0.0
+
+    def to_dict(self) -> dict:
+        moment = self.rolling_moment or RollingMoment(self.order, 0.0, 0.0)
+        return {"speed_ratio": self.speed_ratio, "order": self.order,
+                "turning": "with" if self.speed_ratio > 0 else "against",
+                "offset_m": {"lateral": self.lateral_m, "vertical": self.vertical_m},
+                "masses": [m.to_dict() for m in self.masses], "force_N": self.force_n,
+                "rolling_moment": moment.to_dict()}
+
+
+@dataclass(frozen=True)
 class Antivibrateur:
     """Fraeys de Veubeke's rotor: a mass M at eccentricity e about the crank-pin axis, turning
     at twice crank speed in the crank's sense (geared to a fixed pinion)."""
@@ -108,11 +202,19 @@ class Balance:
     residual : Shaking
         after the antivibrateur and the counterweights
     shafts : tuple of Shaft
+        one entry per mass, as in the JSON's ``shafts``
     after_shafts : Shaking or None
         after the shafts too (None when no shaft was asked for)
     test_masses_kg : tuple of float or None
         the balancing-machine mass for each crank pin, in throw order (when asked for)
     samples : int
+    balancer_shafts : tuple of BalancerShaft
+        the same shafts as built: one per speed ratio, carrying its masses
+    rolling_moments : tuple of RollingMoment
+        for each order with shafts, the rolling moment of all of that order's shafts together
+        (a Lanchester pair's couple); zero when they sit on the crank axis
+    shaft_orders : tuple of int
+        the orders shafts were asked for (an order already zero gets none)
     """
 
     engine: Engine
@@ -125,6 +227,9 @@ class Balance:
     after_shafts: Shaking | None
     test_masses_kg: tuple | None
     samples: int = DEFAULT_SAMPLES
+    balancer_shafts: tuple = ()
+    rolling_moments: tuple = ()
+    shaft_orders: tuple = ()
 
     @property
     def max_order(self) -> int:
@@ -133,11 +238,10 @@ class Balance:
     def to_dict(self) -> dict:
         """This engine's entry of ``counterweight --format json`` (SI units; see the README)."""
         engine = self.engine
-        floor = engine.noise_floor_n
 
         def stage(shaking):
             return {"largest_resultant_N": shaking.largest_force(),
-                    "orders": [o.to_dict(floor) for o in shaking.orders]}
+                    "orders": shaking.records(engine)}
 
         entry = {
             "name": engine.name,
@@ -154,6 +258,9 @@ class Balance:
         if self.after_shafts is not None:
             entry["shafts"] = [s.to_dict() for s in self.shafts]
             entry["after_shafts"] = stage(self.after_shafts)
+            entry["shaft_orders"] = list(self.shaft_orders)
+            entry["balancer_shafts"] = [s.to_dict() for s in self.balancer_shafts]
+            entry["shaft_rolling_moments"] = [m.to_dict() for m in self.rolling_moments]
         if self.test_masses_kg is not None:
             entry["test_masses_kg"] = list(self.test_masses_kg)
         return entry
@@ -261,27 +368,109 @@ def _antivibrateur(engine, shaking, eccentricity):
 
 
 def _shafts_for(order, shaking, planes, engine):
-    """Shafts cancelling order ``order``: per turning sense, one shaft at z̄ when the part has
-    no moment (with its counterpart: Lanchester's pair for a line force), else two apart."""
+    """Shafts cancelling order ``order``: per turning sense, one shaft carrying one mass at z̄
+    when the part has no moment (with its counterpart: Lanchester's pair for a line force),
+    else two masses apart, in the planes. Returns [(speed ratio, [(z, force phasor)])]."""
     o = shaking.order(order)
     floor = engine.noise_floor_n
     out = []
     for sign, force, moment in ((1, o.force_forward, o.moment_forward),
                                 (-1, o.force_backward, o.moment_backward)):
-        if abs(force) < floor and abs(moment) < floor:
+        if abs(force) < floor and abs(moment) < engine.noise_floor_nm:
             continue
-        if abs(moment) < floor or len(planes) == 1:
+        if abs(moment) < engine.noise_floor_nm or len(planes) == 1:
             where = (Plane(engine.mean_z_m),)
             phasors = (-force,)
         else:
             where = planes
             phasors = _share(-force, -moment, planes, engine.mean_z_m)
-        for plane, phasor in zip(where, phasors):
-            if abs(phasor) < floor:
-                continue
-            out.append(Shaft(order, sign * order, abs(phasor) / (order * engine.speed_rad_s) ** 2,
-                             phasor_deg(phasor), plane.z_m))
+        masses = [(plane.z_m, phasor) for plane, phasor in zip(where, phasors) if abs(phasor) >= floor]
+        if masses:
+            out.append((sign * order, masses))
     return out
+
+
+def offset_position(lateral_m, vertical_m, vertical_rad):
+    """A point of the transverse plane as a complex number (real part along the reference
+    axis), from its lateral and vertical distances to the crank axis, the vertical lying at
+    ``vertical_rad`` from the reference axis and the lateral 90° on from it with rotation."""
+    return complex(vertical_m, lateral_m) * cmath.exp(1j * vertical_rad)
+
+
+def rolling_moment_phasor(position, force, speed_ratio):
+    """C with Re(C·e^{ikθ}) the moment about the crank axis of a force F(θ) = force·e^{±ikθ}
+    (the sign of ``speed_ratio``) acting at ``position``: M = Im(x̄·F), the plane's x × F.
+
+    Turning with the crank, Im(x̄·P·e^{ikθ}) = Re(−i·x̄·P·e^{ikθ}); against it,
+    Im(x̄·P·e^{−ikθ}) = −Im(x·P̄·e^{ikθ}) = Re(i·x·P̄·e^{ikθ}).
+    """
+    if speed_ratio > 0:
+        return -1j * position.conjugate() * force
+    return 1j * position * force.conjugate()
+
+
+def _offset_for(speed_ratio, offsets):
+    return offsets.get(speed_ratio, offsets.get(None, (0.0, 0.0)))
+
+
+def _checked_offsets(shaft_offsets, orders):
+    """{speed ratio or None (every other shaft): (lateral, vertical) m} from a pair or a
+    mapping; ratios must belong to the orders asked for."""
+    if shaft_offsets is None:
+        return {}
+    if not orders:
+        raise CounterweightError("places balancer shafts, but no shaft order was asked for",
+                                 "shaft_offsets")
+    items = shaft_offsets.items() if isinstance(shaft_offsets, Mapping) else [(None, shaft_offsets)]
+    checked = {}
+    for ratio, pair in items:
+        if ratio is not None:
+            if isinstance(ratio, bool) or not isinstance(ratio, numbers.Integral) \
+                    or abs(int(ratio)) not in orders:
+                raise CounterweightError(
+                    f"names speed ratio {ratio!r}, but shafts are made for orders "
+                    f"{', '.join(map(str, orders))} only (ratios ±k, + with the crank)",
+                    "shaft_offsets")
+            ratio = int(ratio)
+        if isinstance(pair, (str, bytes)) or not isinstance(pair, Sequence) or len(pair) != 2:
+            raise CounterweightError(f"takes (lateral, vertical) pairs in metres, got {pair!r}",
+                                     "shaft_offsets")
+        values = []
+        for value in pair:
+            if isinstance(value, bool) or not isinstance(value, numbers.Real):
+                raise CounterweightError(f"takes lengths in metres, got {value!r}", "shaft_offsets")
+            try:
+                check_finite_range(float(value), "length", smallest=False)
+            except UnitError as exc:
+                raise CounterweightError(f"has an offset that is invalid: {exc}",
+                                         "shaft_offsets") from None
+            values.append(float(value) + 0.0)   # not -0
+        checked[ratio] = tuple(values)
+    return checked
+
+
+def _build_shaft(engine, speed_ratio, masses, offset):
+    """A BalancerShaft of force phasors at axial positions, with its rolling moment; and that
+    moment's phasor before the noise is cut, for the totals."""
+    order = abs(speed_ratio)
+    spin = (order * engine.speed_rad_s) ** 2
+    parts = tuple(ShaftMass(abs(p) / spin, phasor_deg(p), z) for z, p in masses)
+    force = sum((p for _, p in masses), 0j)
+    position = offset_position(*offset, engine.vertical_axis_rad)
+    phasor = rolling_moment_phasor(position, force, speed_ratio)
+    moment = RollingMoment.from_phasor(order, phasor, engine.noise_floor_nm)
+    return BalancerShaft(speed_ratio, parts, offset[0], offset[1], abs(force), moment), phasor
+
+
+def _rolling_totals(engine, shafts, phasors):
+    """Per order, the rolling moment of all its shafts together (a pair's couple)."""
+    totals = []
+    for order in sorted({s.order for s in shafts}):
+        mine = [(s, p) for s, p in zip(shafts, phasors) if s.order == order]
+        totals.append(RollingMoment.from_phasor(order, sum((p for _, p in mine), 0j),
+                                                engine.noise_floor_nm,
+                                                tuple(s.speed_ratio for s, _ in mine)))
+    return tuple(totals)
 
 
 def _test_masses(engine, shaking):
@@ -314,7 +503,8 @@ def counterweights(engine: "Engine | EngineResult",
                    radius_m: float | None = None, balance_factor: float | None = None,
                    shaft_orders: "Sequence[int]" = (), antivibrateur_radius_m: float | None = None,
                    test_masses: bool = False, samples: int = DEFAULT_SAMPLES,
-                   max_order: int = DEFAULT_MAX_ORDER) -> Balance:
+                   max_order: int = DEFAULT_MAX_ORDER,
+                   shaft_offsets: "tuple[float, float] | Mapping | None" = None) -> Balance:
     """Counterweights (and optionally antivibrateur, shafts, test masses) for ``engine``.
 
     Parameters
@@ -332,7 +522,9 @@ def counterweights(engine: "Engine | EngineResult",
         size for the rotating masses plus this fraction (0 to 1) of the reciprocating ones
         per throw, instead of cancelling the forward first order exactly
     shaft_orders : sequence of int
-        residual orders to cancel with balancer shafts
+        residual orders to cancel with balancer shafts: per order and turning sense one shaft
+        (speed ratio +k with the crank, −k against it) carrying one mass at z̄, or two in the
+        planes (default the end throws) where the part has a moment
     antivibrateur_radius_m : float, optional
         add Fraeys de Veubeke's rotor of this eccentricity, m, sized to cancel the forward
         second order (single-throw engines with a turning crank)
@@ -340,6 +532,12 @@ def counterweights(engine: "Engine | EngineResult",
         also give the balancing-machine mass for each crank pin (not for a rotary)
     samples, max_order : int
         as for :func:`~balance_cli.analyse`
+    shaft_offsets : (lateral, vertical) or mapping, optional
+        where the shafts' axes sit, m from the crank axis (vertical along the engine's
+        vertical, lateral 90° on from it with rotation): one pair for every shaft, or a mapping
+        from speed ratio (+k, −k) to a pair, the key None for every shaft not named; default
+        on the crank axis. The offset changes no force and no pitching or yawing moment, only
+        the rolling moment about the crank axis
 
     Raises
     ------
@@ -357,11 +555,13 @@ def counterweights(engine: "Engine | EngineResult",
     else:
         shaking = analyse(engine, samples, max_order).shaking
     max_order = shaking.max_order
-    check_options(radius_m, balance_factor, shaft_orders, antivibrateur_radius_m, max_order)
+    check_options(radius_m, balance_factor, shaft_orders, antivibrateur_radius_m, max_order,
+                  shaft_offsets)
     planes = _checked_planes(engine, planes)
     radius = engine.crank_radius_m if radius_m is None else float(radius_m)
     balance_factor = None if balance_factor is None else float(balance_factor) + 0.0  # not -0
     orders = _checked_orders(shaft_orders, max_order)
+    offsets = _checked_offsets(shaft_offsets, orders)
     if antivibrateur_radius_m is not None and (engine.is_rotary or len(engine.throws) != 1):
         raise CounterweightError(
             "needs a single-throw engine with a turning crank: the rotor turns on the crank pin "
@@ -398,26 +598,29 @@ def counterweights(engine: "Engine | EngineResult",
         current = current.plus(1, forward=phasor, forward_moment=(plane.z_m - z_mean) * phasor)
     residual = current
 
-    shafts = []
+    shafts, built, rolling = [], [], []
     shaft_planes = planes if len(planes) == 2 else default_planes(engine)
     for order in orders:
-        for shaft in _shafts_for(order, residual, shaft_planes, engine):
-            shafts.append(shaft)
-            phasor = shaft.mass_eccentricity_kgm * (order * omega) ** 2 * cmath.exp(
-                1j * math.radians(shaft.phase_deg))
-            lever = (shaft.z_m - z_mean) * phasor
-            if shaft.speed_ratio > 0:
-                current = current.plus(order, forward=phasor, forward_moment=lever)
-            else:
-                current = current.plus(order, backward=phasor, backward_moment=lever)
+        for ratio, masses in _shafts_for(order, residual, shaft_planes, engine):
+            shaft, turning = _build_shaft(engine, ratio, masses, _offset_for(ratio, offsets))
+            built.append(shaft)
+            rolling.append(turning)
+            for (z, phasor), mass in zip(masses, shaft.masses):
+                shafts.append(Shaft(order, ratio, mass.mass_eccentricity_kgm, mass.phase_deg, z))
+                lever = (z - z_mean) * phasor
+                if ratio > 0:
+                    current = current.plus(order, forward=phasor, forward_moment=lever)
+                else:
+                    current = current.plus(order, backward=phasor, backward_moment=lever)
 
     masses = _test_masses(engine, shaking) if test_masses else None
     return Balance(engine, shaking, rotor, tuple(weights), balance_factor, residual,
-                   tuple(shafts), current if orders else None, masses, samples)
+                   tuple(shafts), current if orders else None, masses, samples, tuple(built),
+                   _rolling_totals(engine, built, rolling), tuple(orders))
 
 
 def check_options(radius_m=None, balance_factor=None, shaft_orders=(),
-                  antivibrateur_radius_m=None, max_order=DEFAULT_MAX_ORDER):
+                  antivibrateur_radius_m=None, max_order=DEFAULT_MAX_ORDER, shaft_offsets=None):
     """Raise CounterweightError for options that no engine could use (the ones that depend on
     the engine are checked by :func:`counterweights`); a front end calls it before analysing."""
     if radius_m is not None:
@@ -430,7 +633,7 @@ def check_options(radius_m=None, balance_factor=None, shaft_orders=(),
                 or not low <= balance_factor <= high:
             raise CounterweightError(f"must be a fraction of the reciprocating masses from "
                                      f"{low:g} to {high:g}, got {balance_factor!r}", "balance_factor")
-    _checked_orders(shaft_orders, max_order)
+    _checked_offsets(shaft_offsets, _checked_orders(shaft_orders, max_order))
     if antivibrateur_radius_m is not None and max_order < 2:
         raise CounterweightError("needs max_order of at least 2: the rotor cancels the second "
                                  "order", "antivibrateur_radius_m")

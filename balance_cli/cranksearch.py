@@ -1376,11 +1376,12 @@ def _reversal_class(problem, crank):
 def _coefficients_of(result, units, pitch, terms):
     """Every F_k, M_k by name (and the forward/backward parts the objective names)."""
     orders = result.shaking.orders
-    floor = result.engine.noise_floor_n
-    # the same noise floor as compare's: what it prints as zero is zero here too
-    parts = [np.array([z if abs(z) >= floor else 0.0 for z in values]) for values in
-             zip(*((o.force_forward, o.force_backward, o.moment_forward, o.moment_backward)
-                   for o in orders))]
+    engine = result.engine
+    floors = (engine.noise_floor_n,) * 2 + (engine.noise_floor_nm,) * 2
+    # the same noise floors as compare's: what it prints as zero is zero here too
+    parts = [np.array([z if abs(z) >= floor else 0.0 for z in values]) for values, floor in
+             zip(zip(*((o.force_forward, o.force_backward, o.moment_forward, o.moment_backward)
+                       for o in orders)), floors)]
     c = coefficients(*parts, units, pitch)
     values = {}
     for k in range(1, len(orders) + 1):

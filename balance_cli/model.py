@@ -7,9 +7,10 @@ a revolution is checked by :func:`balance_cli.kinematics.check_assembly`, which 
 calls first.
 """
 
+import dataclasses
 import math
 import numbers
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 from .checks import is_real
 from .errors import ModelError, UnitError
@@ -237,6 +238,9 @@ class Engine:
         the part data the masses and inertias were derived from, if given
     gas : GasCycle or None
         the gas cycle, if given
+    vertical_rad : float or None
+        the engine's vertical, from the reference axis, positive with rotation, rad; None
+        (the default) takes the banks' bisector (see :attr:`vertical_axis_rad`)
 
     Raises
     ------
@@ -262,6 +266,7 @@ class Engine:
     shaft_inertia_kgm2: float = 0.0
     parts: Parts | None = None
     gas: GasCycle | None = None
+    vertical_rad: float | None = None
     _by_number: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
@@ -277,6 +282,30 @@ class Engine:
                                                 if isinstance(c, Cylinder)})
         _check(self)
 
+    def replace(self, **changes) -> "Engine":
+        """A copy with ``changes`` (field names and SI values, as the constructor takes them),
+        checked like any new engine, the linkage's assembly included::
+
+            faster = engine.replace(speed_rad_s=2 * engine.speed_rad_s)
+
+        Raises
+        ------
+        ModelError
+            a name that is not a field, or a value the engine cannot have
+        """
+        names = [f.name for f in fields(self) if f.init]
+        unknown = sorted(set(changes) - set(names))
+        if unknown:
+            raise ModelError(f"Engine.replace: {', '.join(map(repr, unknown))} is not a field of "
+                             f"Engine; choose from {', '.join(names)}")
+        engine = dataclasses.replace(self, **changes)
+        # the model is the package's ground floor; the assembly check lives above it, and a
+        # replaced engine must be checked as fully as one read from a file
+        from .kinematics import check_assembly
+
+        check_assembly(engine)
+        return engine
+
     def cylinder(self, number):
         """The cylinder with this number."""
         return self._by_number[number]
@@ -289,6 +318,31 @@ class Engine:
         if cylinder.is_link:
             return "link"
         return "master" if self.is_master(cylinder) else "plain"
+
+    @property
+    def vertical_axis_rad(self) -> float:
+        """The direction called vertical, rad from the reference axis: ``vertical_rad`` when
+        given; else the bisector of the banks (the cylinder axis of an in-line engine, the
+        middle of a V or W); banks whose directions add up to nothing (a radial, a boxer)
+        leave the reference axis itself."""
+        if self.vertical_rad is not None:
+            return self.vertical_rad
+        total = self._banks_sum()
+        if abs(total) < 1e-9 * len(self.bank_angles_rad):
+            return 0.0
+        return math.atan2(total.imag, total.real)
+
+    @property
+    def vertical_origin(self) -> str:
+        """Where :attr:`vertical_axis_rad` comes from, in words."""
+        if self.vertical_rad is not None:
+            return "given"
+        if abs(self._banks_sum()) < 1e-9 * len(self.bank_angles_rad):
+            return "the reference axis: the banks' directions add up to nothing"
+        return "the banks' bisector" if len(self.bank_angles_rad) > 1 else "the cylinder axis"
+
+    def _banks_sum(self):
+        return sum(complex(math.cos(a), math.sin(a)) for a in self.bank_angles_rad)
 
     @property
     def n_cylinders(self) -> int:
@@ -325,9 +379,23 @@ class Engine:
 
     @property
     def noise_floor_n(self) -> float:
-        """Forces below this (N), and moments below it times one metre (N·m), are rounding
-        noise: :data:`~balance_cli.tolerances.NOISE_FLOOR` of m_rec·r·ω²·n."""
+        """Forces below this (N) are rounding noise: :data:`~balance_cli.tolerances.NOISE_FLOOR`
+        of m_rec·r·ω²·n."""
         return NOISE_FLOOR * self.per_cylinder_unit_n
+
+    @property
+    def length_scale_m(self) -> float:
+        """The lever arm of the engine's moments, m: the farthest cylinder from z̄, or the
+        crank radius when the cylinders are closer together than that."""
+        mean = self.mean_z_m
+        return max(self.crank_radius_m, max(abs(c.z_m - mean) for c in self.cylinders))
+
+    @property
+    def noise_floor_nm(self) -> float:
+        """Moments below this (N·m) are rounding noise: the force floor times the engine's
+        own lever arm (:attr:`length_scale_m`), not one metre, so that a small engine's real
+        couples are not taken for noise."""
+        return self.noise_floor_n * self.length_scale_m
 
 
 def _quantity(value, dimension, parameter, sign="positive", cylinder=None):
@@ -372,6 +440,8 @@ def _check(engine):
     _quantity(engine.crank_kg, "mass", "crank_kg", sign="non-negative")
     _quantity(engine.shaft_inertia_kgm2, "moment of inertia", "shaft_inertia_kgm2",
               sign="non-negative")
+    if engine.vertical_rad is not None:
+        _angle(engine.vertical_rad, "vertical_rad")
     if engine.rod_length_m <= engine.crank_radius_m + abs(engine.pin_offset_m):
         raise ModelError(
             f"of {engine.rod_length_m:g} m is not longer than the crank radius plus |pin offset| "

@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .analysis import DOCUMENT_VERSION, Comparison, analyse, compare
+from .analysis import DOCUMENT_VERSION, READABLE_VERSIONS, Comparison, analyse, compare
 from .errors import AnalysisError, BalanceError
 from .shaking import check_settings
 from .tolerances import FIRING_CHANGE_DEG, NOISE_FLOOR, PHASE_CHANGE_DEG, PHASE_FLOOR
@@ -121,10 +121,10 @@ def check_baseline(document, path="<baseline>"):
         if not isinstance(document, dict) or key not in document:
             _fail(path, f"not a `balance compare --format json` document (no {key!r})")
     version = document["balance_version"]
-    if type(version) is not int or version != DOCUMENT_VERSION:
+    if type(version) is not int or version not in READABLE_VERSIONS:
         raise RegressError(f"{path}: written by balance_version {version!r}, but this balance "
-                           f"reads version {DOCUMENT_VERSION}; write the baseline again with this "
-                           "version")
+                           f"reads versions {', '.join(map(str, READABLE_VERSIONS))}; write the "
+                           "baseline again with this version")
     for key in ("samples", "max_order"):
         if isinstance(document.get(key), bool) or not isinstance(document.get(key), int):
             _fail(path, f"has no whole number {key!r}")
@@ -159,10 +159,11 @@ def check_baseline(document, path="<baseline>"):
         for o in orders:
             parts = [o.get(part) for part in ("force", "moment")] if isinstance(o, dict) else []
             if not isinstance(o, dict) or not _number(o.get("order")) \
-                    or not all(isinstance(p, dict) and all(_number(v) for v in p.values())
+                    or not all(isinstance(p, dict) and all(_number(v) or k == "axis_deg" and v is None
+                                                           for k, v in p.items())
                                for p in parts) or len(parts) != 2:
                 _fail(where, "has an order that is not {order, force: {...}, moment: {...}} of "
-                             "finite numbers")
+                             "finite numbers (an axis may be null)")
         listed = [o["order"] for o in orders]
         if len(set(listed)) != len(listed):
             _fail(where, "lists an order twice")

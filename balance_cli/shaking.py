@@ -16,7 +16,7 @@ if TYPE_CHECKING:
     from .model import Engine
 
 __all__ = ["DEFAULT_SAMPLES", "DEFAULT_MAX_ORDER", "MAX_SAMPLES", "OrderComponents", "Shaking",
-           "shaking_forces", "ellipse", "check_settings", "part_values"]
+           "shaking_forces", "ellipse", "check_settings", "part_values", "directional"]
 
 DEFAULT_SAMPLES = 256
 DEFAULT_MAX_ORDER = 8
@@ -54,17 +54,47 @@ def ellipse(forward, backward):
     return a + b, abs(a - b), axis
 
 
-def part_values(forward, backward, floor, unit):
+def directional(forward, backward, vertical_rad=0.0):
+    """The vertical and horizontal components of an order, as complex amplitudes.
+
+    With X(θ) = X⁺·e^{ikθ} + X⁻·e^{−ikθ} and the vertical at ``vertical_rad`` from the
+    reference axis, the vertical component is Re(X·e^{−iv}) = Re(A·e^{ikθ}) with
+    A = X⁺·e^{−iv} + conj(X⁻·e^{−iv}), and the horizontal one (90° on from the vertical, with
+    rotation) is Im(X·e^{−iv}) = Re(B·e^{ikθ}) with B = −i·(X⁺·e^{−iv} − conj(X⁻·e^{−iv})).
+    Returns (A, B): each component is |A|·cos(kθ + arg A). Applied to a free moment, A is the
+    moment of the vertical forces (pitching) and B that of the horizontal ones (yawing).
+    """
+    turn = complex(math.cos(vertical_rad), -math.sin(vertical_rad))
+    ahead, behind = forward * turn, (backward * turn).conjugate()
+    return ahead + behind, -1j * (ahead - behind)
+
+
+def _component(amplitude, floor):
+    """Size and phase of a scalar component Re(c·e^{ikθ}) = size·cos(kθ − phase), phase in
+    degrees of kθ at the positive peak; noise as exact zeros."""
+    if abs(amplitude) < floor:
+        return 0.0, 0.0
+    return abs(amplitude), phasor_deg(amplitude.conjugate())
+
+
+def part_values(forward, backward, floor, unit, vertical_rad=0.0):
     """One quantity's entry of an order (the ``force`` or ``moment`` of ``compare``'s JSON):
-    magnitudes, phases and ellipse of forward and backward phasors, noise as exact zeros."""
+    magnitudes, phases and ellipse of forward and backward phasors, the vertical and
+    horizontal components, noise as exact zeros. ``axis_deg`` is None where the ellipse is a
+    circle (one of the phasors is zero) or nothing is left: there is no axis."""
     clean = lambda z: z if abs(z) >= floor else 0j  # noqa: E731
     forward, backward = clean(forward), clean(backward)
     largest, smallest, axis = ellipse(forward, backward)
+    vertical, horizontal = directional(forward, backward, vertical_rad)
+    v_size, v_phase = _component(vertical, floor)
+    h_size, h_phase = _component(horizontal, floor)
     return {
         f"forward_{unit}": abs(forward), "forward_deg": phasor_deg(forward),
         f"backward_{unit}": abs(backward), "backward_deg": phasor_deg(backward),
         f"max_{unit}": largest, f"min_{unit}": smallest if smallest >= floor else 0.0,
-        "axis_deg": math.degrees(axis),
+        "axis_deg": math.degrees(axis) if forward and backward else None,
+        f"vertical_{unit}": v_size, "vertical_deg": v_phase,
+        f"horizontal_{unit}": h_size, "horizontal_deg": h_phase,
     }
 
 
@@ -81,13 +111,18 @@ class OrderComponents:
     moment_forward: complex
     moment_backward: complex
 
-    def to_dict(self, noise_floor_n: float = 0.0) -> dict:
-        """The order as ``compare --format json`` writes it (SI). Parts below
-        ``noise_floor_n`` (N, or N·m for moments) are rounding noise: exact zeros, phase 0."""
+    def to_dict(self, noise_floor_n: float = 0.0, noise_floor_nm: float | None = None,
+                vertical_rad: float = 0.0) -> dict:
+        """The order as ``compare --format json`` writes it (SI). Forces below
+        ``noise_floor_n`` (N) and moments below ``noise_floor_nm`` (N·m; default the same
+        number) are rounding noise: exact zeros, phase 0. ``vertical_rad`` is the engine's
+        vertical (:attr:`Engine.vertical_axis_rad`), from the reference axis."""
+        floor_nm = noise_floor_n if noise_floor_nm is None else noise_floor_nm
         return {"order": self.order,
-                "force": part_values(self.force_forward, self.force_backward, noise_floor_n, "N"),
-                "moment": part_values(self.moment_forward, self.moment_backward, noise_floor_n,
-                                       "Nm")}
+                "force": part_values(self.force_forward, self.force_backward, noise_floor_n, "N",
+                                     vertical_rad),
+                "moment": part_values(self.moment_forward, self.moment_backward, floor_nm, "Nm",
+                                      vertical_rad)}
 
 
 @dataclass(frozen=True)
@@ -119,6 +154,12 @@ class Shaking:
     def max_order(self) -> int:
         return len(self.orders)
 
+    def records(self, engine: "Engine") -> list:
+        """Every order's JSON record (:meth:`OrderComponents.to_dict`) with ``engine``'s noise
+        floors and vertical: the one place orders become records."""
+        return [o.to_dict(engine.noise_floor_n, engine.noise_floor_nm, engine.vertical_axis_rad)
+                for o in self.orders]
+
     def order(self, k: int) -> OrderComponents:
         """Order ``k`` (1-based); KeyError outside 1..max_order."""
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 1 <= k <= self.max_order:
@@ -135,6 +176,17 @@ class Shaking:
     def largest_force(self, skip_forward_first=False) -> float:
         """Largest magnitude of the resultant force over a revolution, N."""
         return float(np.abs(self.force(16, skip_forward_first)).max())
+
+    def moment(self, upsample=1, skip_forward_first=False):
+        """The free moment over one revolution (all orders), N·m, on a grid N·upsample."""
+        c = self.moment_coefficients.copy()
+        if skip_forward_first:
+            c[1] = 0.0
+        return synthesize(c, upsample)
+
+    def largest_moment(self, skip_forward_first=False) -> float:
+        """Largest magnitude of the free moment over a revolution, N·m."""
+        return float(np.abs(self.moment(16, skip_forward_first)).max())
 
     def locus(self, order=None, skip_forward_first=False, points=None):
         """The resultant force over one revolution at ``points`` angles (default four times

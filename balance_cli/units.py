@@ -15,7 +15,7 @@ from .tolerances import ANGLE_TOLERANCE_DEG
 __all__ = [
     "DIMENSIONS", "LIMITS", "STANDARD_GRAVITY", "parse_quantity", "check_finite_range",
     "rad_s_to_rpm", "m_to_mm", "kg_to_g", "n_to_kgf", "wrap_degrees", "round_degrees",
-    "phasor_deg", "angle_change",
+    "phasor_deg", "angle_change", "UNIT_SYSTEMS", "unit_system", "significant",
 ]
 
 #: m/s², the conventional value used to turn kilogram-force into newtons
@@ -39,6 +39,17 @@ DIMENSIONS = {
                  "atm": 101325.0, "kgf/cm^2": _KGF_CM2, "at": _KGF_CM2},
     "torque": {"N*m": 1.0, "Nm": 1.0, "kN*m": 1e3, "kgf*m": STANDARD_GRAVITY,
                "lbf*ft": 1.3558179483314004},
+}
+
+#: one choice of display units: force unit -> (N per force unit, moment unit, N·m per moment
+#: unit). Each system pairs a force with the moment people write beside it.
+_LBF = 0.45359237 * STANDARD_GRAVITY
+UNIT_SYSTEMS = {
+    "N": (1.0, "N·m", 1.0),
+    "kN": (1e3, "kN·m", 1e3),
+    "MN": (1e6, "MN·m", 1e6),
+    "kgf": (STANDARD_GRAVITY, "kgf·m", STANDARD_GRAVITY),
+    "lbf": (_LBF, "lbf·ft", _LBF * 0.3048),
 }
 
 #: smallest and largest magnitude (SI) of a non-zero value, per dimension, with the unit the
@@ -94,6 +105,8 @@ def parse_quantity(text, dimension):
     unit = _spelling(written)
     factors = DIMENSIONS[dimension]
     if unit not in factors:
+        unit = _any_case(unit, factors, text)
+    if unit not in factors:
         for other, table in DIMENSIONS.items():
             if unit in table:
                 raise UnitError(f"{text!r} is {_article(other)} {other}, but {_article(dimension)} "
@@ -103,6 +116,48 @@ def parse_quantity(text, dimension):
     value = number * factors[unit]
     check_finite_range(value, dimension, shown=repr(text))
     return value
+
+
+def _any_case(unit, factors, text):
+    """The unit of ``factors`` written in other letter cases ("RPM", "Kg"), when that reading is
+    the only one: a capital M or P against a small one (or the reverse) is mega against milli
+    (pico against peta) and is refused naming both readings."""
+    matches = [u for u in factors if u.lower() == unit.lower()]
+    if len(matches) != 1:
+        return unit
+    match = matches[0]
+    if match[0] != unit[0] and match[0] in "mMpP":
+        prefixes = {"m": "milli", "M": "mega", "p": "pico", "P": "peta"}
+        other = match[0].swapcase() + match[1:]
+        raise UnitError(f"{unit!r} in {text!r} could be {match} ({prefixes[match[0]]}) or {other} "
+                        f"({prefixes[other[0]]}); write {match!r} if that is meant")
+    return match
+
+
+def unit_system(name):
+    """The display units named ``name``, in any letter case ("kn" is kN): the canonical name,
+    a key of :data:`UNIT_SYSTEMS`."""
+    if isinstance(name, str):
+        matches = [u for u in UNIT_SYSTEMS if u.lower() == name.strip().lower()]
+        if matches:
+            return matches[0]
+    raise UnitError(f"must be one of {', '.join(UNIT_SYSTEMS)} (with moments in "
+                    f"{', '.join(m for _, m, _ in UNIT_SYSTEMS.values())}), got {name!r}", "units")
+
+
+def significant(value, digits=4):
+    """``value`` as text to ``digits`` significant figures, in the notation that fits its size:
+    plain from 1e-4 to below 1e9, thousands set apart by spaces ("4 980", "0.2147",
+    "12 300 000"); powers of ten outside (3.142e-07); an exact zero is "0"."""
+    if value == 0 or not math.isfinite(value):
+        return "0" if value == 0 else str(value)
+    rounded = float(f"{value:.{digits - 1}e}")
+    exponent = math.floor(math.log10(abs(rounded)))
+    if not -4 <= exponent < 9:
+        return f"{rounded:.{digits - 1}e}"
+    decimals = max(digits - 1 - exponent, 0)
+    text = f"{rounded:,.{decimals}f}".replace(",", " ")
+    return text
 
 
 def _spelling(unit):

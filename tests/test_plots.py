@@ -143,7 +143,7 @@ def test_spectrum_gives_every_engine_its_own_colour_and_aligns_its_panels(librar
     force, moment = fig.axes
     assert force.get_xlim() == moment.get_xlim() == (0.5, 8.5)
     faces = {tuple(np.round(c.get_facecolor()[0][:3], 6)) for c in force.collections}
-    assert len(faces) == len(library) == 17
+    assert len(faces) == len(library) == len(balance.find_configs([CONFIGS]))
     # every bar of order 1 lies inside the axis
     for ax in (force, moment):
         for collection in ax.collections:
@@ -540,11 +540,12 @@ def test_report_has_a_torque_table_picture_and_reduced_mass(tmp_path, gas_config
             series = getattr(result, name)
             if series is None:
                 continue
-            shown = [float(v) for v in table[result.engine.name, name]]
+            shown = [float(v.replace(" ", "")) for v in table[result.engine.name, name]]
+            # four significant figures: half a unit of the fourth is at most 5e-4 of the value
             assert_allclose(shown, [series.mean, series.max, series.min, series.range],
-                            rtol=0, atol=0.0051)
+                            rtol=5e-4, atol=1e-12)
     # the mean total torque of the engine with gas: imep·V/(4π), about 191 N·m
-    assert table["In-line 4, car, with gas", "total"][0] == f"{torques[0].total.mean:.2f}"
+    assert table["In-line 4, car, with gas", "total"][0] == f"{torques[0].total.mean:.4g}"
     assert 185 < torques[0].total.mean < 195
     header, rows = markdown_table(text, "Reduced mass μ")
     assert [r[0] for r in rows] == ["In-line 4, car, with gas", "90° V8, flat crank"]

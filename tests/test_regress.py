@@ -38,7 +38,7 @@ def change_mass(path, factor):
 def test_a_baseline_of_the_library_regresses_clean(project):
     result = invoke("regress", "baseline.json")
     assert result.exit_code == 0, result.output
-    assert "nothing moved beyond tolerance (17 engines checked against baseline.json)" in result.stdout
+    assert "nothing moved beyond tolerance (18 engines checked against baseline.json)" in result.stdout
 
 
 def test_one_percent_more_reciprocating_mass_fails_naming_the_engine_and_its_orders(project):
@@ -68,7 +68,7 @@ def test_added_and_removed_engines_are_listed(project):
     result = invoke("regress", "baseline.json", "configs")
     assert result.exit_code == 1
     text = result.stdout
-    assert "0 quantities moved in 0 of 16 engines; 1 added, 1 removed" in text
+    assert "0 quantities moved in 0 of 17 engines; 1 added, 1 removed" in text
     added = text.split("Engines added")[1].split("Engines removed")[0]
     removed = text.split("Engines removed")[1]
     assert "- In-line 4, my variant" in added and "- In-line 12" in removed
@@ -79,7 +79,7 @@ def test_junit_parses_and_counts_the_failure(project):
     result = invoke("regress", "baseline.json", "--format", "junit", "-o", "report.xml")
     assert result.exit_code == 1
     root = ET.parse(project / "report.xml").getroot()
-    assert root.tag == "testsuites" and root.get("tests") == "17" and root.get("failures") == "1"
+    assert root.tag == "testsuites" and root.get("tests") == "18" and root.get("failures") == "1"
     (suite,) = root
     failed = [case for case in suite if case.find("failure") is not None]
     assert [case.get("name") for case in failed] == ["ABC Dragonfly 9-cylinder radial"]
@@ -115,8 +115,8 @@ def test_the_baseline_settings_are_used(project):
 @pytest.mark.parametrize("content, words", [
     ("not json", "not JSON"),
     ('{"engines": []}', "no 'balance_version'"),
-    ('{"balance_version": 2, "engines": [], "samples": 256, "max_order": 8}',
-     "written by balance_version 2"),
+    ('{"balance_version": 3, "engines": [], "samples": 256, "max_order": 8}',
+     "written by balance_version 3"),
     ('[1, 2]', "not a `balance compare --format json` document"),
     ('{"balance_version": 1, "samples": 256, "max_order": 8, "engines": [{"name": "x"}]}',
      "engines[1]: lacks config, cylinders, firing, orders, unit_force_N"),

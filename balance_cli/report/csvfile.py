@@ -49,9 +49,28 @@ def _records(item, record, keys=None):
         yield item, quantity, record[key], unit
 
 
+def _rolling_rows(item, moment):
+    for key in ("cos_Nm", "sin_Nm", "amplitude_Nm"):
+        yield item, key[: -len("_Nm")], moment[key], "N·m"
+    yield item, "phase", moment["phase_deg"], "deg"
+
+
+def _balancer_rows(item, shaft):
+    """A shaft as built: its speed ratio, offset and force, each mass, its rolling moment (SI)."""
+    yield item, "speed_ratio", shaft["speed_ratio"], ""
+    yield item, "offset_lateral", shaft["offset_m"]["lateral"], "m"
+    yield item, "offset_vertical", shaft["offset_m"]["vertical"], "m"
+    yield item, "force", shaft["force_N"], "N"
+    for j, mass in enumerate(shaft["masses"], 1):
+        yield from _records(f"{item} mass {j}", mass)
+    yield from _rolling_rows(f"{item} rolling moment order {shaft['order']}",
+                             shaft["rolling_moment"])
+
+
 def balance_csv(balances, scale):
     """Everything of ``balance counterweight`` in long form: engine, config, item, quantity,
-    value, unit (SI, but forces and moments of the orders in ``scale``'s units)."""
+    value, unit (SI, but forces and moments of the orders in ``scale``'s units; the shafts'
+    rolling moments, which are no order of the shaking, in N·m)."""
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(["engine", "config", "item", "quantity", "value", "unit"])
@@ -71,6 +90,11 @@ def balance_csv(balances, scale):
                          for name, value, unit in zip(_ORDER_QUANTITIES, values, units)]
         for i, shaft in enumerate(record.get("shafts", []), 1):
             rows += _records(f"shaft {i}", shaft)
+        for i, shaft in enumerate(record.get("balancer_shafts", []), 1):
+            rows += _balancer_rows(f"balancer shaft {i}", shaft)
+        for total in record.get("shaft_rolling_moments", []):
+            ratios = " ".join(f"{r:+d}" for r in total["speed_ratios"])
+            rows += _rolling_rows(f"shafts {ratios} rolling moment order {total['order']}", total)
         for i, mass in enumerate(record.get("test_masses_kg") or [], 1):
             rows.append((f"test mass throw {i}", "mass", mass, "kg"))
         for item, quantity, value, unit in rows:

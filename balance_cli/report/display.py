@@ -1,18 +1,29 @@
-"""Display units and text safety: the only place where newtons become per-cylinder figures or
-kgf for a table, and where names are made safe for Markdown and plain-text tables."""
+"""Display units and text safety: the only place where newtons become per-cylinder figures,
+kN, kgf or lbf for a table, where figures get their significant digits, and where names are
+made safe for Markdown and plain-text tables."""
 
 from dataclasses import dataclass
 
-from ..units import n_to_kgf
+from ..units import UNIT_SYSTEMS, significant, unit_system
 
-__all__ = ["Scale", "markdown_text", "plain_text"]
+__all__ = ["Scale", "markdown_text", "plain_text", "figure"]
+
+#: significant figures of a force, moment or torque in a table
+DIGITS = 4
+
+
+def figure(value, digits=DIGITS):
+    """A force, moment, torque or mass as table text: ``digits`` significant figures."""
+    return significant(value, digits)
 
 
 @dataclass(frozen=True)
 class Scale:
-    """How forces and moments are shown: per cylinder (× m_rec·r·ω²·n), or in N or kgf.
+    """How forces and moments are shown: per cylinder (× m_rec·r·ω²·n), or in one system of
+    units (:data:`~balance_cli.units.UNIT_SYSTEMS`: N and N·m, kN and kN·m, MN and MN·m,
+    kgf and kgf·m, lbf and lbf·ft).
 
-    Moments are always absolute: N·m, or kgf·m when ``units`` is "kgf".
+    Moments are always absolute, in the moment unit of ``units``.
     """
 
     absolute: bool = False
@@ -20,8 +31,10 @@ class Scale:
 
     @classmethod
     def of(cls, absolute, units):
-        """The scale of the command-line options: kgf implies absolute forces."""
-        return cls(absolute=absolute or units == "kgf", units=units)
+        """The scale of the command-line options: any unit but N implies absolute forces; the
+        unit's name in any letter case."""
+        units = unit_system(units)
+        return cls(absolute=absolute or units != "N", units=units)
 
     @property
     def force_label(self) -> str:
@@ -34,25 +47,25 @@ class Scale:
 
     @property
     def moment_label(self) -> str:
-        return "kgf·m" if self.units == "kgf" else "N·m"
+        return UNIT_SYSTEMS[self.units][1]
 
     @property
     def column_force(self) -> str:
-        """The force unit in a CSV column name: per_cyl, N or kgf."""
+        """The force unit in a CSV column name: per_cyl, N, kN, MN, kgf or lbf."""
         return self.units if self.absolute else "per_cyl"
 
     @property
     def column_moment(self) -> str:
-        """The moment unit in a CSV column name: Nm or kgfm."""
+        """The moment unit in a CSV column name: Nm, kNm, MNm, kgfm or lbfft."""
         return self.moment_label.replace("·", "")
 
     def force(self, value_n, per_cylinder_unit_n):
         if not self.absolute:
             return value_n / per_cylinder_unit_n
-        return n_to_kgf(value_n) if self.units == "kgf" else value_n
+        return value_n / UNIT_SYSTEMS[self.units][0]
 
     def moment(self, value_nm):
-        return n_to_kgf(value_nm) if self.units == "kgf" else value_nm
+        return value_nm / UNIT_SYSTEMS[self.units][2]
 
 
 def plain_text(value):

@@ -33,9 +33,11 @@ PICTURES = [
 ]
 
 
-def blocks(comparison, balances, star_order, torques):
+def blocks(comparison, balances, star_order, torques, scale=None):
     """The report: engines, comparison tables, counterweights, torques (the
-    :class:`~balance_cli.torques.TorqueResult` of each engine), pictures."""
+    :class:`~balance_cli.torques.TorqueResult` of each engine), pictures; forces per cylinder,
+    moments and torques in ``scale``'s units (default N·m)."""
+    scale = Scale() if scale is None else scale
     results = comparison.results
     count = f"{len(results)} engine{'s' if len(results) != 1 else ''}"
     out = [("h", 1, "Balance report"),
@@ -52,8 +54,8 @@ def blocks(comparison, balances, star_order, torques):
                   str(r.engine.cycle), r.engine.frame, f"{rad_s_to_rpm(r.engine.speed_rad_s):g}",
                   r.engine.source] for r in results]))
     out.append(("h", 2, "Comparison"))
-    for title, headers, rows, note in compare_parts(comparison, Scale()):
-        out += [("h", 3, title), ("table", headers, rows)]
+    for title, headers, rows, note in compare_parts(comparison, scale):
+        out += [("h", 3, title)] + ([("table", headers, rows)] if rows else [])
         if note:
             out.append(("p", note))
     out.append(("h", 2, "Counterweights"))
@@ -66,10 +68,10 @@ def blocks(comparison, balances, star_order, torques):
     out.append(("p", "Torques at each engine's speed over one cycle (720° for a four-stroke), from "
                      "the exact kinetic energy: the inertia torque, the gas torque of the "
                      "configuration's [gas] cycle (— without one), their total on the crankshaft, "
-                     "positive with rotation, and the reaction on the engine frame; N·m "
+                     f"positive with rotation, and the reaction on the engine frame; {scale.moment_label} "
                      "(`balance torque` for their orders, the crank-pin forces and the "
                      "steadiness)."))
-    (headers, rows), (mass_headers, mass_rows) = torque_summary(torques)
+    (headers, rows), (mass_headers, mass_rows) = torque_summary(torques, scale)
     out.append(("table", headers, rows))
     out.append(("p", "Reduced mass μ of the moving parts (their kinetic energy is ½·μ·ω²), over "
                      "a revolution:"))

@@ -11,10 +11,11 @@ __all__ = ["write_report", "REPORT_FILES"]
 REPORT_FILES = [file for file, *_ in PICTURES] + ["report.md", "report.html"]
 
 
-def write_report(target, comparison, balances, star_order, with_html, torques):
+def write_report(target, comparison, balances, star_order, with_html, torques, scale=None):
     """Write the report of ``comparison`` (and its ``balances`` and ``torques``, one of each per
-    engine) into the folder ``target``; nothing is left behind if any part fails. Returns the
-    paths written."""
+    engine) into the folder ``target``, its moments and torques in ``scale``'s units (a
+    :class:`~balance_cli.report.display.Scale`, default N·m); nothing is left behind if any part
+    fails. Returns the paths written."""
     results = comparison.results
     figures = {
         "locus": lambda: plot.locus(results),
@@ -29,7 +30,7 @@ def write_report(target, comparison, balances, star_order, with_html, torques):
         for file, kind, _, _ in PICTURES:
             plot.save(figures[kind](), folder / file)
             names.append(file)
-        content = blocks(comparison, balances, star_order, torques)
+        content = blocks(comparison, balances, star_order, torques, scale)
         write_text(folder / "report.md", markdown(content))
         names.append("report.md")
         if with_html:

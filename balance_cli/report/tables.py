@@ -9,10 +9,10 @@ import math
 import numpy as np
 from tabulate import tabulate
 
-from ..units import kg_to_g, m_to_mm, pa_to_bar, rad_s_to_rpm, round_degrees
-from .display import markdown_text, plain_text
+from ..units import kg_to_g, m_to_mm, pa_to_bar, rad_s_to_rpm, round_degrees, significant
+from .display import Scale, figure, markdown_text, plain_text
 
-__all__ = ["render", "compare_parts", "compare_tables", "order_rows", "order_headers",
+__all__ = ["render", "compare_parts", "compare_tables", "part_rows", "part_headers", "order_parts",
            "balance_tables", "balance_summary", "list_table", "show_table", "regression_tables",
            "torque_tables", "torque_summary", "steadiness_text", "search_tables", "search_summary",
            "search_rows"]
@@ -31,37 +31,77 @@ def render(headers, rows, fmt):
                     tablefmt=_TABLEFMT[fmt], disable_numparse=True)
 
 
-def _digits(scale):
-    return 4 if not scale.absolute else 1 if scale.units == "N" else 2
+def _axis_text(axis_deg):
+    """An ellipse's axis for a table: "—" where there is none (a circle, or nothing)."""
+    return "—" if axis_deg is None else f"{round_degrees(axis_deg, 0, 180.0):.0f}"
 
 
 def order_values(record, unit_n, scale):
     """Force forward/backward/max/min, axis and moment forward/backward/max of one order's
-    record (``OrderComponents.to_dict``) in display units."""
+    record (``OrderComponents.to_dict``) in display units (the counterweight tables' columns)."""
     f, m = record["force"], record["moment"]
     return ([scale.force(f[k], unit_n) for k in ("forward_N", "backward_N", "max_N", "min_N")]
             + [f["axis_deg"]]
             + [scale.moment(m[k]) for k in ("forward_Nm", "backward_Nm", "max_Nm")])
 
 
-def order_rows(name, records, unit_n, scale):
-    """Text rows (engine, order, force fwd/bwd/max/min/axis, moment fwd/bwd/max) of the order
-    records that are not zero (the records hold noise as exact zeros)."""
-    digits = _digits(scale)
+#: the columns of a part's table: (record key without unit, heading)
+_PART_COLUMNS = {
+    "force": ("F", ("forward", "fwd"), ("backward", "bwd"), ("max", "max"), ("min", "min"),
+              ("vertical", "vertical"), ("horizontal", "horizontal")),
+    "moment": ("M", ("forward", "fwd"), ("backward", "bwd"), ("max", "max"), ("min", "min"),
+               ("vertical", "V (pitch)"), ("horizontal", "H (yaw)")),
+}
+
+
+def part_headers(scale, part):
+    """Headings of the force or moment table of the orders."""
+    symbol, *columns = _PART_COLUMNS[part]
+    label = scale.force_label if part == "force" else scale.moment_label
+    headings = [f"{symbol} {heading} ({label})" for _, heading in columns]
+    return ["Engine", "Order"] + headings[:4] + [f"{symbol} axis (°)"] + headings[4:]
+
+
+def part_rows(name, records, unit_n, scale, part):
+    """Text rows of the force (or moment) table: every order where it is not zero, with its
+    forward, backward, max, min, axis and vertical and horizontal amplitudes."""
+    unit = "N" if part == "force" else "Nm"
+    shown = (lambda v: scale.force(v, unit_n)) if part == "force" else scale.moment
+    _, *columns = _PART_COLUMNS[part]
     rows = []
     for record in records:
-        if record["force"]["max_N"] == 0.0 and record["moment"]["max_Nm"] == 0.0:
+        values = record[part]
+        if values[f"max_{unit}"] == 0.0:
             continue
-        v = order_values(record, unit_n, scale)
-        rows.append([name, str(record["order"])] + [f"{x:.{digits}f}" for x in v[:4]]
-                    + [f"{round_degrees(v[4], 0, 180.0):.0f}"] + [f"{x:.2f}" for x in v[5:]])
+        cells = [figure(shown(values[f"{key}_{unit}"])) for key, _ in columns]
+        rows.append([name, str(record["order"])] + cells[:4] + [_axis_text(values["axis_deg"])]
+                    + cells[4:])
     return rows
 
 
-def order_headers(scale):
-    fl, ml = scale.force_label, scale.moment_label
-    return ["Engine", "Order", f"F fwd ({fl})", f"F bwd ({fl})", f"F max ({fl})", f"F min ({fl})",
-            "F axis (°)", f"M fwd ({ml})", f"M bwd ({ml})", f"M max ({ml})"]
+def order_parts(entries, scale, samples):
+    """The force and moment tables of the orders, as (title, headers, rows, note), for
+    ``entries`` of (name, order records, m_rec·r·ω²·n)."""
+    unit = ("per cylinder, in units of m_rec·r·ω²·n" if not scale.absolute
+            else f"in {scale.units}")
+    forces = [row for name, records, unit_n in entries
+              for row in part_rows(name, records, unit_n, scale, "force")]
+    moments = [row for name, records, unit_n in entries
+               for row in part_rows(name, records, unit_n, scale, "moment")]
+    top = entries and len(entries[0][1])
+    return [
+        (f"Free forces by order ({unit})", part_headers(scale, "force"), forces,
+         f"No free force in any order up to {top}." if not forces else
+         "Orders not listed are zero. fwd turns with the crank, bwd against it; max and min are "
+         "the semi-axes of the order's ellipse, axis the direction of max from the reference axis "
+         "(— where the ellipse is a circle); vertical and horizontal are the amplitudes of the "
+         f"components along the engine's vertical and across it ({samples} samples a "
+         "revolution)."),
+        (f"Free moments by order (in {scale.moment_label})", part_headers(scale, "moment"), moments,
+         "V (pitch) is the moment of the vertical forces, about the horizontal axis across the "
+         "crankshaft (marine M1V, M2V); H (yaw) the moment of the horizontal forces, about the "
+         "vertical (M1H, M2H)." if moments else f"No free moment in any order up to {top}."),
+    ]
 
 
 def _intervals(firing):
@@ -71,37 +111,63 @@ def _intervals(firing):
     return f"{min(firing['intervals_deg']):.1f} to {max(firing['intervals_deg']):.1f}"
 
 
-def _summary_row(record, unit_n, scale):
-    largest = (f"{record['counterweighted_resultant_per_cylinder']:.4f}" if not scale.absolute
-               else f"{scale.force(record['counterweighted_resultant_N'], unit_n):.1f}")
-    percent = record["percent_of_reference"]
-    return [record["name"], str(record["cylinders"]), str(record["cycle"]), record["frame"],
-            "-".join(map(str, record["firing"]["order"])), _intervals(record["firing"]), largest,
-            "n/a" if percent is None else f"{percent:.1f}"]
+#: a share of the reference above this many per cent is shown as a ratio (×62, not 6200 %)
+PERCENT_LIMIT = 1000.0
+
+
+def _share_text(percent):
+    if percent is None:
+        return "n/a"
+    if percent > PERCENT_LIMIT:
+        return f"×{significant(percent / 100.0, 3)}"
+    return f"{percent:.1f}"
+
+
+def _main_text(main, shown, largest):
+    """The main order of a part in words: "2: 0.2147, vertical"."""
+    if main is None:
+        # what is left lies in orders above those analysed
+        return "— (above the orders analysed)" if largest else "—"
+    value = main.get("max_N", main.get("max_Nm"))
+    return f"{main['order']}: {figure(shown(value))}, {main['direction']}"
 
 
 def compare_parts(comparison, scale):
     """The comparison as (title, headers, rows, note) tables, for any renderer; rendered from
     the records of ``Comparison.to_dict``."""
-    unit = ("per cylinder, in units of m_rec·r·ω²·n" if not scale.absolute
-            else f"in {scale.units}")
     records = comparison.to_dict()["engines"]
     units = [r.per_cylinder_unit_n for r in comparison.results]
-    rows = [row for record, unit_n in zip(records, units)
-            for row in order_rows(record["name"], record["orders"], unit_n, scale)]
-    summary = [_summary_row(record, unit_n, scale) for record, unit_n in zip(records, units)]
-    return [
-        (f"Free forces and moments by order (forces {unit}; moments in {scale.moment_label})",
-         order_headers(scale), rows,
-         "Orders not listed are zero. fwd turns with the crank, bwd against it; max and min are "
-         "the semi-axes of the order's ellipse, axis the direction of max from the reference axis "
-         f"({comparison.samples} samples a revolution)."),
-        ("Firing and largest resultant (after an ideal crankshaft counterweight)",
-         ["Engine", "Cyl", "Cycle", "Frame", "Firing order", "Intervals (°)",
-          f"Largest ({scale.force_label})", f"% of {comparison.reference.engine.name}"],
-         summary,
-         "n/a: the reference engine has no resultant to compare with." if any(
-             record["percent_of_reference"] is None for record in records) else ""),
+    entries = [(record["name"], record["orders"], unit_n) for record, unit_n in zip(records, units)]
+    firing = [[record["name"], str(record["cylinders"]), str(record["cycle"]), record["frame"],
+               "-".join(map(str, record["firing"]["order"])), _intervals(record["firing"])]
+              for record in records]
+    summary = []
+    for record, unit_n in zip(records, units):
+        force = lambda v, u=unit_n: scale.force(v, u)  # noqa: E731
+        summary.append([record["name"], figure(force(record["counterweighted_resultant_N"])),
+                        _share_text(record["percent_of_reference"]),
+                        _main_text(record["main_force_order"], force,
+                                   record["counterweighted_resultant_N"]),
+                        figure(scale.moment(record["counterweighted_moment_Nm"])),
+                        _main_text(record["main_moment_order"], scale.moment,
+                                   record["counterweighted_moment_Nm"])])
+    notes = ["Largest: the resultant's largest magnitude over a revolution, all orders; main "
+             "order: the order with the largest ellipse, its max and direction (rotating: a "
+             "circle, turning with the crank (forward) or against it (backward)). A turning crank's ideal counterweight has taken the forward first order of "
+             "force and moment away (a rotary's crank does not turn)."]
+    if any(record["percent_of_reference"] is None for record in records):
+        notes.append("n/a: the reference engine has no resultant to compare with.")
+    if any((record["percent_of_reference"] or 0.0) > PERCENT_LIMIT for record in records):
+        notes.append(f"×: a multiple of the reference's resultant, where it is above "
+                     f"{PERCENT_LIMIT:.0f} %.")
+    fl, ml = scale.force_label, scale.moment_label
+    return order_parts(entries, scale, comparison.samples) + [
+        ("Firing", ["Engine", "Cyl", "Cycle", "Frame", "Firing order", "Intervals (°)"], firing, ""),
+        ("Largest free force and moment (after an ideal crankshaft counterweight)",
+         ["Engine", f"Largest F ({fl})", f"% of {comparison.reference.engine.name}",
+          f"Main F order: max ({fl}), direction", f"Largest M ({ml})",
+          f"Main M order: max ({ml}), direction"],
+         summary, " ".join(notes)),
     ]
 
 
@@ -111,7 +177,7 @@ def compare_tables(comparison, scale, fmt):
     safe = _safe(fmt)
     out = []
     for title, headers, rows, note in compare_parts(comparison, scale):
-        out += [f"{heading}{safe(title)}", "", render(headers, rows, fmt), ""]
+        out += [f"{heading}{safe(title)}", ""] + ([render(headers, rows, fmt), ""] if rows else [])
         if note:
             out += [note, ""]
     return "\n".join(out)
@@ -168,6 +234,8 @@ def show_table(engine, firing):
         f"{rad_s_to_rpm(engine.speed_rad_s):g} rpm",
         f"  crank radius:  {_mm(engine.crank_radius_m)}, rod {_mm(engine.rod_length_m)}, "
         f"pin offset {_mm(engine.pin_offset_m)}",
+        f"  vertical:      {math.degrees(engine.vertical_axis_rad):g}° from the reference axis "
+        f"({engine.vertical_origin})",
         f"  masses:        reciprocating {kg_to_g(engine.mean_reciprocating_kg):g} g mean per "
         f"cylinder, rotating {kg_to_g(engine.rotating_kg):g} g and crank "
         f"{kg_to_g(engine.crank_kg):g} g per throw"
@@ -199,18 +267,79 @@ def show_table(engine, firing):
 WEIGHT_COLUMNS = [
     ("throw", "Throw", lambda v: "-" if v is None else str(v)),
     ("z_m", "z (mm)", lambda v: f"{m_to_mm(v):g}"),
-    ("mass_kg", "Mass (kg)", lambda v: f"{v:.4f}"),
+    ("mass_kg", "Mass (kg)", figure),
     ("radius_m", "Radius (mm)", lambda v: f"{m_to_mm(v):g}"),
     ("angle_deg", "Angle (° from throw 1)", lambda v: f"{round_degrees(v, 2):.2f}"),
 ]
+#: one row per mass of a balancer shaft (``Balance.to_dict``'s ``balancer_shafts``, each mass
+#: record with its shaft's ``shaft`` number, ``speed_ratio`` and ``offset_m``; None on the
+#: shaft's second mass and after, so that a shaft reads as one block)
 SHAFT_COLUMNS = [
-    ("order", "Order", str),
-    ("speed_ratio", "Speed ratio", lambda v: f"{v:+d}"),
-    ("speed_ratio", "Turning", lambda v: "with the crank" if v > 0 else "against the crank"),
-    ("mass_eccentricity_kgm", "m·e (kg·mm)", lambda v: f"{m_to_mm(v):.3f}"),
-    ("phase_deg", "Phase at θ = 0 (°)", lambda v: f"{round_degrees(v, 2):.2f}"),
+    ("shaft", "Shaft", lambda v: "" if v is None else str(v)),
+    ("speed_ratio", "Speed ratio", lambda v: "" if v is None else f"{v:+d}"),
+    ("speed_ratio", "Turning",
+     lambda v: "" if v is None else "with the crank" if v > 0 else "against the crank"),
+    ("offset_m", "Offset lateral, vertical (mm)",
+     lambda v: "" if v is None else f"{m_to_mm(v['lateral']):g}, {m_to_mm(v['vertical']):g}"),
+    ("mass_eccentricity_kgm", "m·e (kg·m)", figure),
+    ("phase_deg", "Angle at θ = 0 (°)", lambda v: f"{round_degrees(v, 2):.2f}"),
     ("z_m", "z (mm)", lambda v: f"{m_to_mm(v):g}"),
 ]
+
+
+def _shaft_rows(shafts):
+    """The mass records of ``balancer_shafts``, each with its shaft's columns on its first."""
+    rows = []
+    for number, shaft in enumerate(shafts, 1):
+        for i, mass in enumerate(shaft["masses"]):
+            first = i == 0
+            rows.append({**mass, "shaft": number if first else None,
+                         "speed_ratio": shaft["speed_ratio"] if first else None,
+                         "offset_m": shaft["offset_m"] if first else None})
+    return rows
+
+
+def _rolling_lines(record, scale, fmt):
+    """The rolling moment the shafts' offsets leave, or why there is none."""
+    shafts = record["balancer_shafts"]
+    if all(s["offset_m"]["lateral"] == 0 and s["offset_m"]["vertical"] == 0 for s in shafts):
+        return ["Rolling moment about the crank axis: none; the shafts sit on the crank axis, and "
+                "a centred shaft's force passes through it.", ""]
+    rows = []
+    for total in record["shaft_rolling_moments"]:
+        mine = [(n, s) for n, s in enumerate(shafts, 1) if s["order"] == total["order"]]
+        if all(s["offset_m"]["lateral"] == 0 and s["offset_m"]["vertical"] == 0 for _, s in mine):
+            continue
+        for number, shaft in mine:
+            m = shaft["rolling_moment"]
+            rows.append([str(total["order"]), f"{number} ({shaft['speed_ratio']:+d})",
+                         figure(scale.moment(m["amplitude_Nm"])),
+                         f"{round_degrees(m['phase_deg'], 2):.2f}"])
+        if len(mine) > 1:
+            rows.append([str(total["order"]),
+                         " and ".join(f"{n}" for n, _ in mine) + " together",
+                         figure(scale.moment(total["amplitude_Nm"])),
+                         f"{round_degrees(total['phase_deg'], 2):.2f}"])
+    return ["Rolling moment about the crank axis from the shafts' forces at their offsets "
+            "(M = amplitude·cos(kθ − phase), positive with rotation, as the frame torque of "
+            "balance torque; a centred shaft makes none, and orders whose shafts are all "
+            "centred are left out):", "",
+            render(["Order", "Shaft", f"Amplitude ({scale.moment_label})", "Phase (°)"], rows, fmt),
+            ""]
+
+
+def _left(name, stage, records, n_unit, scale, fmt):
+    """The orders left after ``stage`` (forces, then moments), or the words that nothing is."""
+    forces = part_rows(name, records, n_unit, scale, "force")
+    moments = part_rows(name, records, n_unit, scale, "moment")
+    if not forces and not moments:
+        return [f"After the {stage}, nothing is left up to order {len(records)}: every force and "
+                "moment is zero.", ""]
+    out = [f"Left after the {stage}:", ""]
+    for rows, part, none in ((forces, "force", "no force"), (moments, "moment", "no moment")):
+        out += ([render(part_headers(scale, part), rows, fmt), ""] if rows
+                else [f"({none} in any order up to {len(records)})", ""])
+    return out
 
 
 def _record_table(records, columns, fmt):
@@ -245,31 +374,35 @@ def balance_tables(balances, scale, fmt):
         a = record["antivibrateur"]
         if a is not None:
             out += [f"Antivibrateur on the crank pin, turning at twice crank speed with the crank: "
-                    f"M·e = {m_to_mm(a['mass_eccentricity_kgm']):.2f} kg·mm (M = {a['mass_kg']:.4f} "
+                    f"M·e = {figure(a['mass_eccentricity_kgm'])} kg·m (M = {figure(a['mass_kg'])} "
                     f"kg at e = {m_to_mm(a['eccentricity_m']):g} mm), at "
                     f"{round_degrees(a['phase_deg'], 2):.2f}° when θ = 0; the counterweights above "
                     "include its mass.", ""]
         first = record["residual"]["orders"][0]
         f, m = first["force"], first["moment"]
-        out += [f"First order left: forward {scale.force(f['forward_N'], n_unit):.4g}, "
-                f"backward {scale.force(f['backward_N'], n_unit):.4g} ({unit}; no counterweight "
-                f"touches the backward part); moment {scale.moment(m['forward_Nm']):.4g} forward, "
-                f"{scale.moment(m['backward_Nm']):.4g} backward ({scale.moment_label}).", ""]
-        out += ["Left after the counterweights:", "",
-                render(order_headers(scale),
-                       order_rows(record["name"], record["residual"]["orders"], n_unit, scale), fmt),
-                ""]
-        if "after_shafts" in record and not record["shafts"]:
+        out += [f"First order left: forward {figure(scale.force(f['forward_N'], n_unit))}, "
+                f"backward {figure(scale.force(f['backward_N'], n_unit))} ({unit}; no counterweight "
+                f"touches the backward part); moment {figure(scale.moment(m['forward_Nm']))} "
+                f"forward, {figure(scale.moment(m['backward_Nm']))} backward "
+                f"({scale.moment_label}).", ""]
+        out += _left(record["name"], "counterweights", record["residual"]["orders"], n_unit,
+                     scale, fmt)
+        if "after_shafts" in record and not record["balancer_shafts"]:
             out += ["Balancer shafts: none needed; the orders asked for are already zero.", ""]
         elif "after_shafts" in record:
-            out += ["Balancer shafts:", "",
-                    _record_table(record["shafts"], SHAFT_COLUMNS, fmt), "",
-                    "Left after the shafts:", "",
-                    render(order_headers(scale),
-                           order_rows(record["name"], record["after_shafts"]["orders"], n_unit, scale),
-                           fmt), ""]
+            out += ["Balancer shafts as built (each mass's m·e, its angle from the reference axis "
+                    "when θ = 0, positive with rotation, and its axial position):", "",
+                    _record_table(_shaft_rows(record["balancer_shafts"]), SHAFT_COLUMNS, fmt), ""]
+            built = {s["order"] for s in record["balancer_shafts"]}
+            idle = [k for k in record.get("shaft_orders", []) if k not in built]
+            if idle:
+                out += [f"Order{'s' if len(idle) > 1 else ''} {', '.join(map(str, idle))}: no "
+                        "shaft needed, already zero.", ""]
+            out += _rolling_lines(record, scale, fmt)
+            out += _left(record["name"], "shafts", record["after_shafts"]["orders"], n_unit,
+                         scale, fmt)
         if "test_masses_kg" in record:
-            rows = [[str(i + 1), f"{m:.4f}"] for i, m in enumerate(record["test_masses_kg"])]
+            rows = [[str(i + 1), figure(m)] for i, m in enumerate(record["test_masses_kg"])]
             out += ["Balancing-machine test masses (hang on each crank pin; the crankshaft's own "
                     "unbalance excluded):", "",
                     render(["Throw", "Mass (kg)"], rows, fmt), ""]
@@ -284,35 +417,35 @@ def balance_summary(balances):
         n_unit = b.engine.per_cylinder_unit_n
         first = record["residual"]["orders"][0]["force"]
         weights = "; ".join(
-            f"{c['mass_kg']:.4g} kg at {round_degrees(c['angle_deg'], 1):.1f}° ({_plane_text(c)})"
+            f"{figure(c['mass_kg'])} kg at {round_degrees(c['angle_deg'], 1):.1f}° ({_plane_text(c)})"
             for c in record["counterweights"])
-        rows.append([record["name"], weights, f"{first['forward_N'] / n_unit:.4f}",
-                     f"{first['backward_N'] / n_unit:.4f}",
-                     f"{record['residual']['largest_resultant_N'] / n_unit:.4f}"])
+        rows.append([record["name"], weights, figure(first['forward_N'] / n_unit),
+                     figure(first['backward_N'] / n_unit),
+                     figure(record['residual']['largest_resultant_N'] / n_unit)])
     headers = ["Engine", "Counterweights at crank radius", "1st order left fwd (per cyl)",
                "1st order bwd (per cyl)", "Largest resultant left (per cyl)"]
     return headers, rows
 
 
-def _torque_text(value_nm):
-    text = f"{value_nm:.2f}"
-    return "0.00" if text == "-0.00" else text
-
-
-def torque_summary(results):
+def torque_summary(results, scale=None):
     """The report's torques: per engine the mean, largest, smallest and range of the inertia,
-    gas ("—" without one), total and frame torques, N·m, one row each; and a second table of
-    the reduced mass. Returns ((headers, rows), (headers, rows))."""
+    gas ("—" without one), total and frame torques, in ``scale``'s moment unit (default N·m),
+    one row each; and a second table of the reduced mass. Returns ((headers, rows), (headers,
+    rows))."""
+    scale = Scale() if scale is None else scale
     rows, masses = [], []
     for r in results:
         for i, (name, series) in enumerate((("inertia", r.inertia), ("gas", r.gas),
                                             ("total", r.total), ("frame", r.frame))):
             values = (["—"] * 4 if series is None else
-                      [_torque_text(v) for v in (series.mean, series.max, series.min, series.range)])
+                      [figure(scale.moment(v)) for v in (series.mean, series.max, series.min,
+                                                         series.range)])
             rows.append([r.engine.name if i == 0 else "", name] + values)
         mu = r.reduced_mass
         masses.append([r.engine.name, f"{mu.mean_kgm2:.5g}", f"{mu.min_kgm2:.5g}", f"{mu.max_kgm2:.5g}"])
-    return ((["Engine", "Torque", "Mean (N·m)", "Max (N·m)", "Min (N·m)", "Range ΔC (N·m)"], rows),
+    ml = scale.moment_label
+    return ((["Engine", "Torque", f"Mean ({ml})", f"Max ({ml})", f"Min ({ml})", f"Range ΔC ({ml})"],
+             rows),
             (["Engine", "Mean μ (kg·m²)", "Min μ (kg·m²)", "Max μ (kg·m²)"], masses))
 
 
@@ -324,8 +457,21 @@ def _value_text(value):
     return str(value)
 
 
-def regression_tables(regression, fmt):
-    """The regression table as text or Markdown: what moved, then engines added and removed."""
+def _in_units(quantity, value, scale):
+    """A regression value in ``scale``'s units: forces (``*_N``) and moments (``*_Nm``) only."""
+    if not isinstance(value, float):
+        return value
+    if quantity.endswith("_Nm"):
+        return scale.moment(value)
+    if quantity.endswith("_N"):
+        return scale.force(value, 1.0)
+    return value
+
+
+def regression_tables(regression, fmt, scale=None):
+    """The regression table as text or Markdown: what moved, then engines added and removed;
+    forces and moments in ``scale``'s units (default N and N·m)."""
+    scale = Scale(True, "N") if scale is None else scale
     heading = "### " if fmt == "markdown" else ""
     safe = _safe(fmt)
     checked = len(regression.checked)
@@ -340,19 +486,20 @@ def regression_tables(regression, fmt):
         rows = []
         for row in regression.rows:
             change, relative = row.change, row.relative_change
+            shown = lambda v, q=row.quantity: _in_units(q, v, scale)  # noqa: E731
             rows.append([row.engine, "-" if row.order is None else str(row.order), row.quantity,
-                         _value_text(row.baseline), _value_text(row.now),
-                         "-" if change is None else f"{change:+.3g}",
+                         _value_text(shown(row.baseline)), _value_text(shown(row.now)),
+                         "-" if change is None else f"{shown(change):+.3g}",
                          "-" if relative is None else f"{100 * relative:+.3g} %",
-                         "-" if row.tolerance is None else f"{row.tolerance:.3g}"])
+                         "-" if row.tolerance is None else f"{shown(row.tolerance):.3g}"])
         out += [render(["Engine", "Order", "Quantity", "Baseline", "Now", "Change", "Relative",
                         "Tolerance"], rows, fmt), ""]
     for title, names in (("Engines added (not in the baseline)", regression.added),
                          ("Engines removed (in the baseline, not now)", regression.removed)):
         if names:
             out += [f"{title}:", ""] + [f"- {safe(n)}" for n in names] + [""]
-    out.append("Units: N and N·m (SI), degrees for *_deg; change is now − baseline. Update the "
-               "baseline on purpose with --update.")
+    out.append(f"Units: {scale.units} for *_N and {scale.moment_label} for *_Nm, degrees for "
+               "*_deg; change is now − baseline. Update the baseline on purpose with --update.")
     return "\n".join(out) + "\n"
 
 
@@ -362,15 +509,15 @@ def _torque_rows(result, scale):
                          ("tilting", result.tilting), ("frame", result.frame)):
         if series is None:
             continue
-        rows.append([name] + [f"{scale.moment(v):.2f}" for v in (series.mean, series.max,
-                                                                  series.min, series.range)])
+        rows.append([name] + [figure(scale.moment(v)) for v in (series.mean, series.max,
+                                                                 series.min, series.range)])
     return rows
 
 
 def _order_table(series, scale, fmt, largest):
     """The orders of a torque above a thousandth of its largest one."""
-    rows = [[f"{k:g}", f"{scale.moment(c):.3f}", f"{scale.moment(s):.3f}",
-             f"{scale.moment(math.hypot(c, s)):.3f}", f"{round_degrees(d['phase_deg'], 1):.1f}"]
+    rows = [[f"{k:g}", figure(scale.moment(c)), figure(scale.moment(s)),
+             figure(scale.moment(math.hypot(c, s))), f"{round_degrees(d['phase_deg'], 1):.1f}"]
             for (k, c, s), d in zip(series.orders, series.to_dict()["orders"])
             if math.hypot(c, s) >= 1e-3 * largest and largest > 0]
     ml = scale.moment_label
@@ -399,14 +546,12 @@ def torque_tables(results, scale, fmt):
         rows = []
         for pin in r.pins:
             magnitude = np.abs(pin.force_n)
-            rows.append([str(pin.throw), f"{scale.force(pin.radial.mean, 1.0):.1f}",
-                         f"{scale.force(pin.tangential.mean, 1.0):.1f}",
-                         f"{scale.force(float(magnitude.max()), 1.0):.1f}",
-                         f"{scale.force(float(magnitude.min()), 1.0):.1f}"])
+            rows.append([str(pin.throw)] + [figure(scale.force(v, 1.0)) for v in (
+                pin.radial.mean, pin.tangential.mean, float(magnitude.max()), float(magnitude.min()))])
         if r.main_bearings is not None:
             magnitude = np.abs(r.main_bearings.force_n)
-            rows.append(["main bearings", "-", "-", f"{scale.force(float(magnitude.max()), 1.0):.1f}",
-                         f"{scale.force(float(magnitude.min()), 1.0):.1f}"])
+            rows.append(["main bearings", "-", "-", figure(scale.force(float(magnitude.max()), 1.0)),
+                         figure(scale.force(float(magnitude.min()), 1.0))])
         out += ["Forces of the rods on the crank pins, and of the crankshaft on its main bearings "
                 "together:", "",
                 render(["Throw", f"Radial mean ({fl})", f"Tangential mean ({fl})", f"Largest ({fl})",
