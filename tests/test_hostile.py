@@ -768,8 +768,15 @@ def test_ctrl_c_in_a_multi_process_search_prints_no_worker_traceback(tmp_path):
                                 "--objective", "M1", "--workers", "2"],
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                                start_new_session=True)
-    # interrupt once the workers run: the search of an in-line 13 takes seconds
-    time.sleep(2.5)
+    # interrupt once the workers run (the search of an in-line 13 takes seconds after they
+    # start): the parent's children, as Linux lists them
+    children = Path(f"/proc/{process.pid}/task/{process.pid}/children")
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and process.poll() is None:
+        if children.exists() and len(children.read_text().split()) >= 2:
+            break
+        time.sleep(0.05)
+    time.sleep(0.3)
     os.killpg(process.pid, signal.SIGINT)
     out, err = process.communicate(timeout=60)
     assert process.returncode == 1, (out, err)
