@@ -420,21 +420,24 @@ def _drawing():
 @_INPUTS
 @click.option("--kind", type=click.Choice(["locus", "spectrum", "star", "firing", "torque"]),
               required=True,
-              help="locus: resultant force per cylinder over a revolution (Tanaka's Fig. 9); "
-                   "spectrum: forward and backward parts by order; star: each cylinder's phasor "
-                   "of one order, chained; firing: firing angles on a dial; torque: inertia, gas "
+              help="locus: resultant force per cylinder (or free moment: --of moment) over a "
+                   "revolution (Tanaka's Fig. 9); spectrum: forward and backward parts by order; "
+                   "star: each cylinder's phasor of one order (of force or moment), chained; firing: firing angles on a dial; torque: inertia, gas "
                    "(from a [gas] table) and total torque over a cycle, and the orders of the total.")
 @click.option("--output", "-o", required=True, metavar="PATH",
               help="Picture file; its extension gives the format: .png, .svg, .svgz, .pdf, .eps, "
                    ".ps, .jpg, .jpeg, .tif, .tiff, .webp. Folders are created.")
 @click.option("--order", type=click.IntRange(1), default=None,
               help="locus: one order only (default all); star: the order drawn (default 2).")
+@click.option("--of", "quantity", type=click.Choice(["force", "moment"]), default=None,
+              help="locus and star: the resultant force (the default) or the free moment "
+                   "about the engine's mid-length, N·m.")
 @click.option("--units", type=click.Choice(["per-cylinder", "N", "kgf"]), default=None,
               help="spectrum: units of the forces, default per-cylinder (kgf also puts moments "
                    "in kgf·m); torque: N (N·m, the default) or kgf (kgf·m).")
 @_SAMPLES
 @_MAX_ORDER
-def plot(paths, kind, output, order, units, samples, max_order):
+def plot(paths, kind, output, order, quantity, units, samples, max_order):
     """Draw a picture of one or more engines (headless)."""
     if units is not None and kind not in ("spectrum", "torque"):
         raise click.UsageError(f"--units applies to --kind spectrum and torque only, not {kind}")
@@ -443,6 +446,8 @@ def plot(paths, kind, output, order, units, samples, max_order):
                                "are drawn in N·m (N) or kgf·m (kgf)")
     if order is not None and kind not in ("locus", "star"):
         raise click.UsageError(f"--order applies to --kind locus and star only, not {kind}")
+    if quantity is not None and kind not in ("locus", "star"):
+        raise click.UsageError(f"--of applies to --kind locus and star only, not {kind}")
     files = _inputs(paths)
     _guard([output], files)
     _settings(samples, max_order)
@@ -462,11 +467,11 @@ def plot(paths, kind, output, order, units, samples, max_order):
         results = _analyse_all(engines, samples, max_order)
     with _reported(), _drawing():
         if kind == "locus":
-            figure = drawing.locus(results, order)
+            figure = drawing.locus(results, order, of=quantity or "force")
         elif kind == "spectrum":
             figure = drawing.spectrum(results, units or "per-cylinder")
         elif kind == "star":
-            figure = drawing.star(results, order or min(2, max_order))
+            figure = drawing.star(results, order or min(2, max_order), of=quantity or "force")
         elif kind == "torque":
             figure = drawing.torque(results, units or "N")
         else:

@@ -6,13 +6,15 @@ otherwise a new pyplot figure is made, so figures show inline in a notebook. Imp
 module never chooses a backend: that is the application's business (the command line uses Agg).
 
 Kinds: :func:`locus` (Tanaka's Fig. 9), :func:`spectrum`, :func:`star`, :func:`firing` (of
-:func:`balance_cli.analyse`'s results) and :func:`torque` (of :func:`balance_cli.torques.torque`'s).
+:func:`balance_cli.analyse`'s results) and :func:`torque` (of :func:`balance_cli.torques.torque`'s);
+``of="moment"`` makes the locus and the star those of the free moment instead of the force.
 :func:`save` writes a figure in the format its file name's extension names.
 """
 
 import math
 import os
 import sys
+import textwrap
 from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, cast
@@ -34,9 +36,9 @@ if TYPE_CHECKING:
     from .analysis import EngineResult
     from .torques import TorqueResult
 
-__all__ = ["KINDS", "FORMATS", "locus", "spectrum", "star", "firing", "torque", "save", "format_of",
-           "grid_size", "locus_points", "spectrum_data", "star_chains", "torque_data", "colours",
-           "short"]
+__all__ = ["KINDS", "FORMATS", "QUANTITIES", "locus", "spectrum", "star", "firing", "torque", "save",
+           "format_of", "grid_size", "locus_points", "spectrum_data", "star_chains", "torque_data",
+           "colours", "short", "place_labels", "moment_floor_nm"]
 
 KINDS = ("locus", "spectrum", "star", "firing", "torque")
 #: file formats :func:`save` writes (those of matplotlib's that need neither LaTeX nor a viewer
@@ -99,33 +101,100 @@ def colours(count):
     return [matplotlib.colormaps["turbo"](x) for x in np.linspace(0.05, 0.95, count)]
 
 
-def locus_points(result, order=None):
-    """Per-cylinder resultant force over a revolution after an ideal crankshaft counterweight
-    (none on a rotary), as x = across, y = along the reference axis (Tanaka's Fig. 9)."""
-    force = result.counterweighted_locus(order) / result.per_cylinder_unit_n
-    return force.imag, force.real
+#: what :func:`locus` and :func:`star` draw: the shaking force or the free moment
+QUANTITIES = ("force", "moment")
 
 
-def locus(results: "Iterable[EngineResult]", order: int | None = None, ax: "Axes | None" = None) -> "Figure":
-    """Locus of the resultant shaking force per cylinder over one revolution, every engine on
-    one set of equal-scaled axes; ``order`` draws one order only."""
+def _quantity(of):
+    if of not in QUANTITIES:
+        raise PlotError(f"must be one of {', '.join(QUANTITIES)}, got {of!r}", "of")
+    return of
+
+
+def moment_floor_nm(engine):
+    """Free moments below this (N·m) are rounding noise: the engine's force noise floor times
+    its longest lever, or its crank radius when that is longer (an engine in one plane has no
+    lever, and its moments are noise at the scale of the crank's own motion)."""
+    lever = max(abs(c.z_m - engine.mean_z_m) for c in engine.cylinders)
+    return engine.noise_floor_n * max(lever, engine.crank_radius_m)
+
+
+def locus_points(result, order=None, of="force", counterweight=True):
+    """What :func:`locus` draws of one engine, as x = across, y = along the reference axis:
+    ``of="force"`` the resultant force per cylinder (× m_rec·r·ω² per cylinder, Tanaka's
+    Fig. 9), ``of="moment"`` the free moment about the engine's mid-length (z̄), N·m, over a
+    revolution; all orders, or ``order`` only. With ``counterweight`` (the default) an ideal
+    crankshaft counterweight has taken the forward first order away, in two planes for the
+    moment (none on a rotary, whose crank does not turn). A locus below the noise floor all
+    round is exact zeros."""
+    _quantity(of)
+    cancels = counterweight and result.counterweight_cancels_first_order
+    engine = result.engine
+    if of == "force":
+        values, floor = result.shaking.locus(order, cancels), engine.noise_floor_n
+        unit = result.per_cylinder_unit_n
+    else:
+        values, floor, unit = result.shaking.moment_locus(order, cancels), moment_floor_nm(engine), 1.0
+    if np.abs(values).max() < floor:
+        values = np.zeros_like(values)
+    values = values / unit
+    return values.imag, values.real
+
+
+def _legend_rows(names):
+    """Columns and rows of a legend of ``names`` below a picture 8 in wide."""
+    columns = 1 if len(names) <= 3 or max(len(n) for n in names) > 48 else 2
+    return columns, math.ceil(len(names) / columns)
+
+
+def locus(results: "Iterable[EngineResult]", order: int | None = None, ax: "Axes | None" = None,
+          of: str = "force") -> "Figure":
+    """Locus over one revolution of the resultant shaking force per cylinder (``of="force"``,
+    Tanaka's Fig. 9) or of the free moment in N·m (``of="moment"``), every engine on one set
+    of equal-scaled axes; ``order`` draws one order only. See :func:`locus_points`.
+
+    In a figure of its own the legend goes below the axes, in as many rows as the engines
+    need; drawn into ``ax``, the legend is the axes'."""
+    _quantity(of)
     chosen = _results(results, order)
+    points = [locus_points(r, order, of) for r in chosen]
+    # an engine with nothing left is a dot at the origin, hidden under the others
+    names = [short(r.engine.name) + ("" if x.any() or y.any() else f" (no free {of})")
+             for r, (x, y) in zip(chosen, points)]
+    columns, rows = _legend_rows(names)
+    own = ax is None
+    legend_in = 0.25 + 0.19 * rows      # a legend row of 8-point text, and the frame's padding
     if ax is None:
-        ax = _new_figure((8, 8)).add_subplot()
+        height = 8.0 + legend_in
+        # inches: title above, tick and axis labels then the legend below
+        ax = _new_figure((8, height)).add_axes((0.11, (legend_in + 0.75) / height, 0.84,
+                                                1 - (legend_in + 0.75 + 0.85) / height))
     fig = cast("Figure", ax.figure)
-    for r, colour in zip(chosen, colours(len(chosen))):
-        x, y = locus_points(r, order)
-        ax.plot(np.append(x, x[0]), np.append(y, y[0]), label=short(r.engine.name), linewidth=1.6,
-                color=colour)
+    for (x, y), name, colour in zip(points, names, colours(len(chosen))):
+        ax.plot(np.append(x, x[0]), np.append(y, y[0]), label=name, linewidth=1.6, color=colour)
     ax.axhline(0, color="0.6", linewidth=0.6)
     ax.axvline(0, color="0.6", linewidth=0.6)
     ax.set_aspect("equal", adjustable="datalim")
     what = f"order {order}" if order else "all orders"
-    ax.set_title(f"Locus of the resultant shaking force per cylinder ({what}),\n"
-                 "after an ideal crankshaft counterweight (none on a rotary)")
-    ax.set_xlabel("across the reference axis (× m_rec·r·ω² per cylinder)")
-    ax.set_ylabel("along the reference axis (× m_rec·r·ω² per cylinder)")
-    ax.legend(fontsize=8, loc="upper right")
+    rotary = "none on a rotary"
+    if of == "force":
+        title = f"Locus of the resultant shaking force per cylinder ({what})"
+        counterweight = f"after an ideal crankshaft counterweight ({rotary})"
+        unit = "× m_rec·r·ω² per cylinder"
+        ax.set_xlabel(f"across the reference axis ({unit})")
+        ax.set_ylabel(f"along the reference axis ({unit})")
+    else:
+        title = f"Locus of the free moment about the engine's mid-length, N·m ({what})"
+        counterweight = f"after an ideal two-plane crankshaft counterweight ({rotary})"
+        ax.set_xlabel("moment of the forces across the reference axis (yawing), N·m")
+        ax.set_ylabel("moment of the forces along the reference axis (pitching), N·m")
+    # the counterweight turns at crank speed: it changes the first order only
+    ax.set_title(title + (f",\n{counterweight}" if order in (None, 1) else ""))
+    if own:
+        fig.legend(*ax.get_legend_handles_labels(), loc="upper center", ncol=columns, fontsize=8,
+                   frameon=False, bbox_to_anchor=(0.5, legend_in / (fig.bbox.height / fig.dpi)))
+    else:
+        ax.legend(fontsize=8, loc="upper right")
     ax.grid(True, linewidth=0.3)
     return fig
 
@@ -174,8 +243,13 @@ def spectrum(results: "Iterable[EngineResult]", units: str = "per-cylinder",
 
     data = spectrum_data(results, units)
     panels = 2 if data["has_moments"] else 1
+    # the legend below the panels, in columns across the width (beside them it took a
+    # quarter of the width whatever the names' lengths)
+    names = [e["name"] for e in data["engines"]]
+    columns = 3 if max(len(n) for n in names) <= 52 else 2
+    legend_in = 0.15 + 0.18 * math.ceil((len(names) + 2) / columns)
     if fig is None:
-        fig = _new_figure((12, 8 if panels == 2 else 4.5))
+        fig = _new_figure((12, (8 if panels == 2 else 4.5) + legend_in))
     axes = fig.subplots(panels, 1, sharex=True, squeeze=False)[:, 0]
     orders = data["orders"]
     n = len(data["engines"])
@@ -212,9 +286,12 @@ def spectrum(results: "Iterable[EngineResult]", units: str = "per-cylinder",
     if panels == 1:
         title += "\nno engine has a free moment above that floor"
     axes[0].set_title(title, y=1.0)
-    fig.legend(handles=handles, loc="center right", fontsize=8, frameon=False)
-    fig.subplots_adjust(left=0.07, right=0.72, top=0.93 if panels == 2 else 0.84,
-                        bottom=0.08 if panels == 2 else 0.14, hspace=0.08)
+    height = fig.get_size_inches()[1]
+    fig.legend(handles=handles, loc="upper center", ncol=columns, fontsize=8, frameon=False,
+               bbox_to_anchor=(0.5, legend_in / height))
+    # inches: the title above; tick labels and "order" below, then the legend
+    fig.subplots_adjust(left=0.07, right=0.98, top=1 - (0.56 if panels == 2 else 0.72) / height,
+                        bottom=(legend_in + 0.63) / height, hspace=0.08)
     return fig
 
 
@@ -229,14 +306,21 @@ def _bars(ax, left, top, bottom, width, **style):
     ax.add_collection(PolyCollection(corners, linewidth=0, **style), autolim=False)
 
 
-def star_chains(result, order):
+def star_chains(result, order, of="force"):
     """For :func:`star`: each part ("forward", "backward") of order ``order`` as a list of
-    (label, tail, head) arrows per cylinder, chained tip to tail, in units of m_rec·r·ω²·n
-    (complex: real along the reference axis); the last head is the engine's resultant."""
+    (label, tail, head) arrows per cylinder, chained tip to tail (complex: real along the
+    reference axis); the last head is the engine's resultant. ``of="force"``: each cylinder's
+    force, in units of m_rec·r·ω²·n; ``of="moment"``: its share of the free moment,
+    (z_i − z̄)·F_i, N·m. Shares below the noise floor are left out."""
+    _quantity(of)
     _results([result], order)
-    shares = result.shaking.cylinder_phasors(order)
-    unit = result.per_cylinder_unit_n
-    floor = result.engine.noise_floor_n / unit
+    if of == "force":
+        shares = result.shaking.cylinder_phasors(order)
+        unit = result.per_cylinder_unit_n
+    else:
+        shares = result.shaking.cylinder_moment_phasors(order, result.engine.mean_z_m)
+        unit = 1.0
+    floor = _star_floor(result, of)
     chains = {}
     for part, index in (("forward", 1), ("backward", 2)):
         tip, arrows = 0j, []
@@ -250,46 +334,225 @@ def star_chains(result, order):
     return chains
 
 
-def star(results: "Iterable[EngineResult]", order: int = 2, fig: "Figure | None" = None) -> "Figure":
+def _star_floor(result, of):
+    """The noise floor in the units of :func:`star_chains`."""
+    if of == "force":
+        return result.engine.noise_floor_n / result.per_cylinder_unit_n
+    return moment_floor_nm(result.engine)
+
+
+def _magnitude(value, unit):
+    """|Σ| of the star: four decimals of m_rec·r·ω²·n, or four significant figures of N·m
+    with thousands spaced above 10⁴ (a marine couple reads 4 980 395, not 4.98e+06)."""
+    if not unit:
+        return f"{value:.4f}"
+    text = f"{value:,.0f}".replace(",", " ") if value >= 1e4 else "0" if value == 0 else f"{value:.4g}"
+    return f"{text} {unit}"
+
+
+#: font size of the star's cylinder labels (points), and their gap from their arrow (points)
+STAR_LABEL_PT = 6.5
+STAR_LABEL_GAP_PT = 1.5
+#: characters of a star picture's title in a line: what 9-point text fits a cell's width
+STAR_TITLE_CHARS = 44
+#: an arrow shorter than this (points) gets no label: the eye cannot tell which arrow it names
+STAR_LABEL_MIN_PT = 5.0
+
+
+def _text_size_pt(text, fontsize):
+    """Width and height (points) of one line of ``text``, as a Text artist lays it out."""
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import text_to_path
+
+    prop = FontProperties(size=fontsize)
+    width, _, _ = text_to_path.get_text_width_height_descent(text, prop, ismath=False)
+    _, height, descent = text_to_path.get_text_width_height_descent("lp", prop, ismath=False)
+    return width, height + descent
+
+
+def _boxes_overlap(a, b):
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _crosses(box, p, q):
+    """Whether the segment ``p``–``q`` passes through ``box`` (x0, y0, x1, y1)."""
+    # clip the segment's parameter range to the box on each axis (Liang–Barsky)
+    low, high = 0.0, 1.0
+    for start, step, lower, upper in ((p[0], q[0] - p[0], box[0], box[2]),
+                                      (p[1], q[1] - p[1], box[1], box[3])):
+        if step == 0:
+            if not lower < start < upper:
+                return False
+            continue
+        t0, t1 = sorted(((lower - start) / step, (upper - start) / step))
+        low, high = max(low, t0), min(high, t1)
+        if low >= high:
+            return False
+    return True
+
+
+def place_labels(segments, sizes, gap=STAR_LABEL_GAP_PT, shortest=STAR_LABEL_MIN_PT, crowded=0.3):
+    """Centres for labels of line ``segments`` ((x0, y0), (x1, y1)) of ``sizes`` (width,
+    height), all in one unit (points or pixels) on equal axes; None for a label left out.
+
+    The longest segments are labelled first. Each label sits beside its segment, at its
+    middle or a third of the way from an end, on the side away from the centre of the whole
+    drawing first; a place that overlaps a label already placed is refused, and among the
+    rest the one crossing the fewest segments wins; only segments of at least ``crowded``
+    times the longest may have a label across another segment. A segment with no such place,
+    or shorter than ``shortest``, goes unlabelled: on a crowded star the short arrows are the
+    ones whose number matters least."""
+    points = np.array([p for segment in segments for p in segment], float).reshape(-1, 2)
+    centre = points.mean(axis=0) if len(points) else np.zeros(2)
+    placed: "list[tuple[float, float, float, float]]" = []
+    found: "list[tuple[float, float] | None]" = [None] * len(segments)
+    lengths = [math.dist(*segment) for segment in segments]
+    for i in sorted(range(len(segments)), key=lambda i: -lengths[i]):
+        if lengths[i] < shortest:
+            continue
+        (x0, y0), (x1, y1) = segments[i]
+        w, h = sizes[i]
+        ux, uy = (x1 - x0) / lengths[i], (y1 - y0) / lengths[i]
+        nx, ny = -uy, ux
+        middle = ((x0 + x1) / 2, (y0 + y1) / 2)
+        if (middle[0] - centre[0]) * nx + (middle[1] - centre[1]) * ny < 0:
+            nx, ny = -nx, -ny
+        # from the segment to the box's edge along the normal, then the gap
+        offset = gap + abs(nx) * w / 2 + abs(ny) * h / 2
+        best = None
+        for side in (1, -1):
+            for t in (0.5, 1 / 3, 2 / 3):
+                cx = x0 + t * (x1 - x0) + side * nx * offset
+                cy = y0 + t * (y1 - y0) + side * ny * offset
+                box = (cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
+                # a point of room: the renderer's hinted glyphs are a little wider than the
+                # font's outlines
+                room = (box[0] - 1, box[1] - 1, box[2] + 1, box[3] + 1)
+                if any(_boxes_overlap(room, other) for other in placed):
+                    continue
+                crossings = sum(_crosses(box, *segment) for segment in segments)
+                if best is None or crossings < best[0]:
+                    best = (crossings, (cx, cy), box)
+                if crossings == 0:
+                    break
+            if best is not None and best[0] == 0:
+                break
+        # over another arrow a short arrow's label would name that arrow as well as its own
+        if best is not None and (best[0] == 0 or lengths[i] >= crowded * max(lengths)):
+            found[i] = best[1]
+            placed.append(best[2])
+    return found
+
+
+def star(results: "Iterable[EngineResult]", order: int = 2, fig: "Figure | None" = None,
+         of: str = "force") -> "Figure":
     """Each cylinder's forward (blue) and backward (red) phasor of ``order`` at θ = 0, chained
     tip to tail and labelled by cylinder; the dashed line is the engine's resultant. One small
-    picture per engine, with a scale bar in units of m_rec·r·ω²·n."""
+    picture per engine, with a scale bar: of its force (``of="force"``, in units of
+    m_rec·r·ω²·n) or of its share of the free moment, (z_i − z̄)·F_i (``of="moment"``, N·m).
+
+    Cylinder labels never overlap: where they would (many cylinders, or forward and backward
+    chains on top of each other) the shorter arrows go unlabelled (see :func:`place_labels`)."""
+    _quantity(of)
     chosen = _results(results, order)
     columns, rows = grid_size(len(chosen))
     if fig is None:
         fig = _grid_figure(len(chosen))
+    # the layout first: labels are placed in the axes' final scale
     axes = fig.subplots(rows, columns, squeeze=False)
+    # inches above the top row for the figure's two-line title, each picture's and its |Σ|
+    fig.subplots_adjust(left=0.06, right=0.97, bottom=0.04, top=1 - 1.3 / (CELL_IN * rows),
+                        wspace=0.3, hspace=0.4)
     for ax in axes.flat[len(chosen):]:
         ax.axis("off")
+    unit = "N·m" if of == "moment" else ""
     for ax, r in zip(axes.flat, chosen):
-        chains = star_chains(r, order)
-        for row, (part, colour) in enumerate((("forward", "C0"), ("backward", "C3"))):
+        chains = star_chains(r, order, of)
+        parts = (("forward", "C0"), ("backward", "C3"))
+        for row, (part, colour) in enumerate(parts):
             arrows = chains[part]
             end = arrows[-1][2] if arrows else 0j
+            # shares above the floor may still cancel to rounding noise
+            if abs(end) < _star_floor(r, of):
+                end = 0j
             if arrows:
                 tails = np.array([a[1] for a in arrows])
                 steps = np.array([a[2] for a in arrows]) - tails
+                # arrow widths in inches: a share of the axes' width grows fat in a wide cell
                 ax.quiver(tails.imag, tails.real, steps.imag, steps.real, angles="xy",
-                          scale_units="xy", scale=1, color=colour, width=0.006)
-                for label, tail, head in arrows:
-                    middle = (tail + head) / 2
-                    ax.text(middle.imag, middle.real, label, fontsize=6, color=colour)
+                          scale_units="xy", scale=1, color=colour, units="inches", width=0.014)
             ax.plot([0, end.imag], [0, end.real], linestyle="--", color=colour, linewidth=1.4)
-            # a text, not a legend: 17 legends cost more to lay out than the rest of the picture
-            ax.text(0.02, 0.98 - 0.06 * row, f"{part}: |Σ| = {abs(end):.4f}", color=colour,
-                    fontsize=7, transform=ax.transAxes, va="top")
+            # a text, not a legend: 17 legends cost more to lay out than the rest of the picture;
+            # above the axes, where no chain runs
+            ax.annotate(f"{part}: |Σ| = {_magnitude(abs(end), unit)}", (0, 1),
+                        xycoords="axes fraction", xytext=(0, 10 - 9 * row),
+                        textcoords="offset points", color=colour, fontsize=7, va="bottom")
         ax.plot([0], [0], marker="o", color="k", markersize=3)
-        ax.set_aspect("equal", adjustable="datalim")
-        ax.set_title(short(r.engine.name), fontsize=9, y=1.0)
+        if not (chains["forward"] or chains["backward"]):
+            ax.text(0.5, 0.4, f"no {'free moment' if of == 'moment' else 'force'} of order {order}",
+                    transform=ax.transAxes, ha="center", fontsize=8, color="0.4")
+        # two lines rather than one running into the next picture's title
+        ax.set_title(textwrap.fill(short(r.engine.name), STAR_TITLE_CHARS), fontsize=9, y=1.0,
+                     pad=21)
         # no axes (their ticks cost more than the rest of the picture): a scale bar instead
         ax.axis("off")
-        _scale_bar(ax, chains)
-    fig.suptitle(f"Order {order}: each cylinder's forward (blue) and backward (red) phasor at "
+        _scale_bar(ax, chains, unit)
+        _fit(ax, chains)
+        _label_arrows(ax, [(label, tail, head, colour) for part, colour in parts
+                           for label, tail, head in chains[part]])
+    if of == "moment":
+        title = (f"Order {order}: each cylinder's share (z − z̄)·F of the free moment, forward "
+                 "(blue) and backward (red), at θ = 0, chained\ndashed: the resultant (N·m, scale "
+                 "bar below each); horizontal: yawing (across), vertical: pitching (along)")
+    else:
+        title = (f"Order {order}: each cylinder's forward (blue) and backward (red) phasor at "
                  "θ = 0, chained; dashed: the resultant\n(× m_rec·r·ω²·n, scale bar below each; "
-                 "horizontal across the reference axis, vertical along it)", fontsize=9)
-    fig.subplots_adjust(left=0.06, right=0.97, bottom=0.04, top=1 - 1.1 / (CELL_IN * rows),
-                        wspace=0.3, hspace=0.35)
+                 "horizontal across the reference axis, vertical along it)")
+    fig.suptitle(title, fontsize=9)
     return fig
+
+
+def _fit(ax, chains):
+    """Equal-scaled limits with room round the chains for their labels and the scale bar,
+    filling the axes' box, fixed now so that labels can be placed in the final scale."""
+    points = [0j] + [p for arrows in chains.values() for _, tail, head in arrows for p in (tail, head)]
+    xs, ys = [p.imag for p in points], [p.real for p in points]
+    span = max(max(xs) - min(xs), max(ys) - min(ys)) or 1.0
+    margin = 0.1 * span
+    # the scale bar hangs 0.08 span below the chains, its figure below that
+    (x0, x1), (y0, y1) = (min(xs) - margin, max(xs) + margin), (min(ys) - 0.1 * span - margin,
+                                                                 max(ys) + margin)
+    box = ax.get_position()
+    fig_w, fig_h = ax.figure.get_size_inches()
+    aspect = (box.height * fig_h) / (box.width * fig_w)     # height over width of the box
+    if (y1 - y0) / (x1 - x0) < aspect:
+        grow = aspect * (x1 - x0) - (y1 - y0)
+        y0, y1 = y0 - grow / 2, y1 + grow / 2
+    else:
+        grow = (y1 - y0) / aspect - (x1 - x0)
+        x0, x1 = x0 - grow / 2, x1 + grow / 2
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+    ax.set_aspect("equal", adjustable="box")
+    ax.apply_aspect()
+
+
+def _label_arrows(ax, arrows):
+    """Cylinder labels beside ``arrows`` (label, tail, head, colour), where
+    :func:`place_labels` finds room."""
+    fig = ax.figure
+    to_pt = 72.0 / fig.dpi
+    data_to_pt = lambda z: ax.transData.transform((z.imag, z.real)) * to_pt  # noqa: E731
+    segments = [(tuple(data_to_pt(tail)), tuple(data_to_pt(head))) for _, tail, head, _ in arrows]
+    sizes = [_text_size_pt(label, STAR_LABEL_PT) for label, _, _, _ in arrows]
+    centres = place_labels(segments, sizes)
+    to_data = ax.transData.inverted()
+    for (label, _, _, colour), centre in zip(arrows, centres):
+        if centre is None:
+            continue
+        x, y = to_data.transform(np.array(centre) / to_pt)
+        ax.text(x, y, label, fontsize=STAR_LABEL_PT, color=colour, ha="center", va="center",
+                gid="cylinder label")
 
 
 def _nice_length(span):
@@ -300,7 +563,7 @@ def _nice_length(span):
     return next(step * power for step in (5, 2, 1) if step * power <= span / 4 * 1.0001)
 
 
-def _scale_bar(ax, chains):
+def _scale_bar(ax, chains, unit=""):
     points = [0j] + [p for arrows in chains.values() for _, tail, head in arrows for p in (tail, head)]
     xs, ys = [p.imag for p in points], [p.real for p in points]
     span = max(max(xs) - min(xs), max(ys) - min(ys))
@@ -309,7 +572,8 @@ def _scale_bar(ax, chains):
         return
     x0, y0 = min(xs), min(ys) - 0.08 * span
     ax.plot([x0, x0 + length], [y0, y0], color="k", linewidth=1.5)
-    ax.text(x0 + length / 2, y0 - 0.02 * span, f"{length:g}", ha="center", va="top", fontsize=7)
+    text = _magnitude(length, unit) if unit else f"{length:g}"
+    ax.text(x0 + length / 2, y0 - 0.02 * span, text, ha="center", va="top", fontsize=7)
 
 
 def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "Figure":
@@ -490,10 +754,12 @@ class _Panels:
     def label(self, x_in, y_in, text, **alignment):
         self.labels.add(*self.at(x_in, y_in), text, **alignment)
 
-    def panel(self, box_in, xlim, ylim, xticks, xlabels, yticks, ylabels, xlabel, ylabel):
+    def panel(self, box_in, xlim, ylim, xticks, xlabels, yticks, ylabels, xlabel, ylabel,
+              xminor=()):
         """A panel (``box_in``: left, bottom, width, height, inches) showing ``xlim`` × ``ylim``,
         with grid lines at the ticks, their labels (none where a label is empty) and axis
-        labels; returns the transform from its data to the figure."""
+        labels, and short tick marks below at ``xminor``; returns the transform from its data
+        to the figure."""
         from matplotlib.transforms import Bbox, BboxTransform
 
         left, bottom, width, height = box_in
@@ -511,6 +777,11 @@ class _Panels:
             if label:
                 self.label(left - 0.04, fy * self.size[1], label, ha="right", va="center")
         self.frames.append([(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)])
+        # ticks in the frame's path: inward from the bottom edge, long at labels
+        for x, length in [(x, 0.06) for x, label in zip(xticks, xlabels) if label] \
+                + [(x, 0.03) for x in xminor]:
+            fx = x0 + (x1 - x0) * (x - xlim[0]) / (xlim[1] - xlim[0])
+            self.frames.append([(fx, y0), (fx, y0 + length / self.size[1])])
         self.label(left + width / 2, bottom - 0.19, xlabel, ha="center", va="top")
         self.label(left - 0.52, bottom + height / 2, ylabel, ha="left", va="center", rotation=90)
         return to_panel + self.fig.transSubfigure
@@ -596,15 +867,15 @@ def torque(results: "Iterable[TorqueResult]", units: str = "N", fig: "Figure | N
         ylim, yticks = _span(0.0, float(heights.max()), 2, floor=0.0)
         if not heights.any():
             yticks = []
-        # grid lines at whole orders (at most about 8 of them), labels at about 4 of those
-        every = max(1, math.ceil(highest / 8))
+        # whole orders labelled, with a grid line, a round step apart (at most 10 labels);
+        # the others, and a four-stroke's half orders, get a short tick only
+        every = next(n * 10 ** p for p in range(6) for n in (1, 2, 5) if highest / (n * 10 ** p) <= 10)
         xticks = np.arange(every, highest + 0.5 * every, every)
-        labelled = 1 if highest <= 5 else every * max(1, round(highest / every / 4))
+        minor = [x for x in np.arange(step, highest + 0.5 * step, step) if x % every]
         bars = panels.panel((x0 + left, top - cell_h + foot, cell_w - left - right, order_h),
-                            (0.0, highest + step), ylim, xticks,
-                            [f"{x:g}" if round(x) % labelled == 0 else "" for x in xticks], yticks,
+                            (0.0, highest + step), ylim, xticks, [f"{x:g}" for x in xticks], yticks,
                             ["" if y == 0 else _tick_text(y) for y in yticks],   # bars stand on 0
-                            "order of the total torque", f"amplitude ({unit})")
+                            "order of the total torque", f"amplitude ({unit})", xminor=minor)
         width = 0.7 * step
         corners = [[(k - width / 2, 0.0), (k + width / 2, 0.0), (k + width / 2, h), (k - width / 2, h)]
                    for k, h in zip(orders, heights) if h > 0]

@@ -1,7 +1,7 @@
 """Free forces and moments, order by order, from the exact mass trajectories."""
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -222,6 +222,28 @@ class Shaking:
             shares.append((str(number), complex(self.mass_coefficients[mine, order].sum()),
                            complex(self.mass_coefficients[mine, -order].sum())))
         return shares
+
+    def cylinder_moment_phasors(self, order: int, mean_z_m: float) -> list[tuple[str, complex, complex]]:
+        """Each cylinder's share of the free moment of order ``order``: [(label, forward N·m,
+        backward N·m)], each mass's force times its lever z − ``mean_z_m`` (the engine's z̄,
+        which the moments were taken about); they add up to the engine's moment phasors."""
+        if self.mass_coefficients is None or self.masses is None:
+            raise AnalysisError("has no per-mass shares once a balancer is added; ask the "
+                                "engine's own analysis", "cylinder_moment_phasors")
+        levered = replace(self, mass_coefficients=(self.masses.z_m - mean_z_m)[:, None]
+                          * self.mass_coefficients)
+        return levered.cylinder_phasors(order)
+
+    def moment_locus(self, order=None, skip_forward_first=False, points=None):
+        """The free moment over one revolution, N·m, at the angles :meth:`locus` takes for the
+        force; ``skip_forward_first`` leaves out the forward first order (an ideal
+        counterweight in two planes cancels that couple as it cancels the force)."""
+        # the force locus of a copy whose forces are these moments: one path for both
+        swapped = replace(self, force_coefficients=self.moment_coefficients,
+                          orders=tuple(replace(o, force_forward=o.moment_forward,
+                                               force_backward=o.moment_backward)
+                                       for o in self.orders))
+        return swapped.locus(order, skip_forward_first, points)
 
     @classmethod
     def from_coefficients(cls, force, moment, max_order, sampling_ok=True, mass_coefficients=None,

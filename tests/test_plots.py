@@ -233,6 +233,9 @@ def test_plot_command_refuses_a_format_before_computing(tmp_path, monkeypatch):
     (["--kind", "torque", "--units", "per-cylinder"], "--units per-cylinder applies to --kind spectrum only"),
     (["--kind", "spectrum", "--order", "2"], "--order applies to --kind locus and star only"),
     (["--kind", "torque", "--order", "2"], "--order applies to --kind locus and star only"),
+    (["--kind", "firing", "--of", "moment"], "--of applies to --kind locus and star only, not firing"),
+    (["--kind", "spectrum", "--of", "force"], "--of applies to --kind locus and star only"),
+    (["--kind", "torque", "--of", "moment"], "--of applies to --kind locus and star only"),
 ])
 def test_plot_options_that_do_not_apply_are_usage_errors(tmp_path, args, words):
     result = run("plot", V8, *args, "--output", tmp_path / "p.png")
@@ -553,3 +556,266 @@ def test_report_has_a_torque_table_picture_and_reduced_mass(tmp_path, gas_config
         mu = result.reduced_mass
         assert_allclose([float(c) for c in cells[1:]], [mu.mean_kgm2, mu.min_kgm2, mu.max_kgm2],
                         rtol=1e-4, atol=0)
+
+
+# --- couples: plot --of moment, and labels that stay readable --------------------------------
+
+def inline_toml(name, phases, pitch_mm, cycle=2, banks=(0,)):
+    """An engine with reciprocating masses only (1 kg, r = 50 mm, 3000 rpm), one throw per
+    phase, ``pitch_mm`` apart: m·r·ω² = 1·0.05·(100π)² N."""
+    text = (f'name = "{name}"\ncycle = {cycle}\nspeed = "3000 rpm"\ncrank_radius = "50 mm"\n'
+            'rod_length = "200 mm"\n\n[masses]\nreciprocating = "1 kg"\n')
+    text += "".join(f"\n[[banks]]\nangle = {b}\n" for b in banks)
+    return text + "".join(f'\n[[throws]]\nphase = {p}\nz = "{j * pitch_mm} mm"\n'
+                          for j, p in enumerate(phases))
+
+
+MRW2 = 1.0 * 0.05 * (3000 * math.pi / 30) ** 2      # m·r·ω², N
+PITCH = 0.1                                          # d, m
+
+
+@pytest.fixture(scope="module")
+def couples(tmp_path_factory):
+    """An in-line 3 (throws 0/120/240°), a 180° twin and a cross-plane 90° V8 (throws 0, 90,
+    270, 180°), all 100 mm apart; and an in-line 24 two-stroke with throws 105° apart in turn,
+    which has free moments of every order (a crowded star)."""
+    folder = tmp_path_factory.mktemp("couples")
+    engines = {"inline-3": inline_toml("In-line 3", [0, 120, 240], 100),
+               "twin": inline_toml("180° twin", [0, 180], 100, cycle=4),
+               "v8-cross": inline_toml("90° V8, cross-plane", [0, 90, 270, 180], 100, cycle=4,
+                                       banks=(-45, 45)),
+               "inline-24": inline_toml("In-line 24", [(105 * j) % 360 for j in range(24)], 90)}
+    results = {}
+    for key, text in engines.items():
+        path = folder / f"{key}.toml"
+        path.write_text(text, encoding="utf-8")
+        results[key] = analyse(load(path))
+    return results
+
+
+def test_inline_3_moment_star_chains_each_cylinders_lever_times_its_force(couples):
+    """Cylinder i at z_i = (i − 1)·d, z̄ = d, primary force m·r·ω²·cos(θ + β_i) along the axis
+    (exact for a plain rod without pin offset): forward share (z_i − z̄)·m·r·ω²/2·e^{iβ_i},
+    backward the conjugate. The chain ends at the primary couple, √3/2·m·r·ω²·d each way, √3·
+    m·r·ω²·d at most (issue 17's figure); cylinder 2, on z̄, has no share."""
+    result = couples["inline-3"]
+    chains = plot.star_chains(result, 1, of="moment")
+    for part, sign in (("forward", 1), ("backward", -1)):
+        arrows = chains[part]
+        assert [label for label, _, _ in arrows] == ["1", "3"]
+        expected = {"1": -PITCH * MRW2 / 2, "3": PITCH * MRW2 / 2 * np.exp(sign * 1j * math.radians(240))}
+        for label, tail, head in arrows:
+            assert_allclose(head - tail, expected[label], rtol=1e-12, atol=1e-9)
+        for (_, _, head), (_, tail, _) in zip(arrows, arrows[1:]):
+            assert head == tail
+        end = arrows[-1][2]
+        assert_allclose(abs(end), math.sqrt(3) / 2 * MRW2 * PITCH, rtol=1e-12)
+        moment = result.order(1).moment_forward if part == "forward" else result.order(1).moment_backward
+        assert_allclose(end, moment, rtol=1e-12, atol=1e-9)
+
+
+def test_inline_3_moment_locus_is_all_pitching_until_the_counterweight_turns_half_of_it(couples):
+    """Without a counterweight the primary couple M⁺e^{iθ} + M⁻e^{−iθ}, M⁻ = conj(M⁺), is real:
+    a segment along the reference axis (pitching) of half-length √3·m·r·ω²·d; an ideal
+    two-plane counterweight cancels M⁺ and leaves the circle of radius |M⁻| = √3/2·m·r·ω²·d."""
+    result = couples["inline-3"]
+    theta = 2 * np.pi * np.arange(4 * result.samples) / (4 * result.samples)
+    x, y = plot.locus_points(result, 1, of="moment", counterweight=False)
+    assert_allclose(x, 0.0, atol=1e-9)
+    # Σ (z_i − z̄)·m·r·ω²·cos(θ + β_i) = m·r·ω²·d·(cos(θ + 240°) − cos θ),
+    # of amplitude √3·m·r·ω²·d
+    assert_allclose(y, MRW2 * PITCH * (np.cos(theta + math.radians(240)) - np.cos(theta)),
+                    rtol=0, atol=1e-9)
+    assert_allclose(np.abs(y).max(), math.sqrt(3) * MRW2 * PITCH, rtol=1e-5)   # sampled peak
+    x, y = plot.locus_points(result, 1, of="moment")
+    assert_allclose(np.hypot(x, y), math.sqrt(3) / 2 * MRW2 * PITCH, rtol=1e-12)
+
+
+def test_twin_moment_locus_of_order_1_is_a_segment_of_half_length_m_r_w2_d(couples):
+    """At θ the first-order forces are m·r·ω²·cos θ at z = 0 and −m·r·ω²·cos θ at z = d, about
+    z̄ = d/2: M(θ) = −m·r·ω²·d·cos θ along the axis, forward and backward m·r·ω²·d/2 each. The
+    ideal counterweight takes the forward half: a circle of radius m·r·ω²·d/2."""
+    result = couples["twin"]
+    theta = 2 * np.pi * np.arange(4 * result.samples) / (4 * result.samples)
+    x, y = plot.locus_points(result, 1, of="moment", counterweight=False)
+    assert_allclose(y, -MRW2 * PITCH * np.cos(theta), rtol=0, atol=1e-9)
+    assert_allclose(x, 0.0, rtol=0, atol=1e-9)
+    x, y = plot.locus_points(result, 1, of="moment")
+    assert_allclose(np.hypot(x, y), MRW2 * PITCH / 2, rtol=1e-12)
+    # all orders: a 180° twin's even orders are in phase at both cylinders, so their couples
+    # cancel; the odd ones beyond the first are zero for a plain rod (its motion has none)
+    x_all, y_all = plot.locus_points(result, of="moment", counterweight=False)
+    assert_allclose(y_all, y_all.real, atol=0)
+    assert_allclose(y_all, -MRW2 * PITCH * np.cos(theta), rtol=0, atol=1e-8)
+
+
+def test_cross_plane_v8_primary_couple_is_all_forward_and_the_counterweight_leaves_none(couples):
+    """√10·m·r·ω²·d (issue 17; each throw's two cylinders 90° apart make a rotating force
+    m·r·ω²), all forward: the star's forward chain ends there, the backward one at zero, and
+    after the ideal counterweight the first-order moment locus is nothing."""
+    result = couples["v8-cross"]
+    chains = plot.star_chains(result, 1, of="moment")
+    assert_allclose(abs(chains["forward"][-1][2]), math.sqrt(10) * MRW2 * PITCH, rtol=1e-12)
+    backward = chains["backward"][-1][2] if chains["backward"] else 0j
+    assert abs(backward) < plot.moment_floor_nm(result.engine)
+    x, y = plot.locus_points(result, 1, of="moment")
+    assert not x.any() and not y.any()
+    fig = plot.locus([result], 1, of="moment")
+    assert fig.axes[0].lines[0].get_label() == "90° V8, cross-plane (no free moment)"
+
+
+@pytest.mark.parametrize("config", ["nakanishi-v12-90-2stroke.toml", "nakanishi-w12-60-2stroke.toml",
+                                    "bramo-323.toml", "inline-12.toml"])
+@pytest.mark.parametrize("order", [1, 2])
+def test_moment_star_closes_on_the_free_moment_of_compare(library, config, order):
+    result = next(r for r in library if r.engine.config_path.endswith(config))
+    chains = plot.star_chains(result, order, of="moment")
+    o = result.order(order)
+    for part, expected in (("forward", o.moment_forward), ("backward", o.moment_backward)):
+        arrows = chains[part]
+        end = arrows[-1][2] if arrows else 0j
+        assert_allclose(end, expected, rtol=0, atol=1e3 * plot.moment_floor_nm(result.engine))
+
+
+def test_moment_star_and_locus_figures_draw_the_moment_in_n_m(couples):
+    result = couples["inline-3"]
+    fig = plot.star([result], order=1, of="moment")
+    (ax,) = [a for a in fig.axes if a.axison or a.collections]
+    quivers = [c for c in ax.collections if isinstance(c, matplotlib.quiver.Quiver)]
+    tails = np.array([a[1] for a in plot.star_chains(result, 1, of="moment")["forward"]])
+    assert_allclose(quivers[0].X, tails.imag, atol=1e-12)
+    assert_allclose(quivers[0].Y, tails.real, atol=1e-12)
+    texts = [t.get_text() for t in ax.texts]
+    assert f"forward: |Σ| = {math.sqrt(3) / 2 * MRW2 * PITCH:.4g} N·m" in texts
+    assert "free moment" in fig._suptitle.get_text()
+    assert plot._magnitude(4980395.12, "N·m") == "4 980 395 N·m"
+    assert plot._magnitude(427.3664, "N·m") == "427.4 N·m" and plot._magnitude(0.0, "N·m") == "0 N·m"
+    fig = plot.locus([result], of="moment")
+    assert "free moment" in fig.axes[0].get_title() and "N·m" in fig.axes[0].get_xlabel()
+    x, y = plot.locus_points(result, of="moment")
+    assert_allclose(fig.axes[0].lines[0].get_ydata()[:-1], y, atol=0)
+    for call in (lambda: plot.locus([result], of="torque"), lambda: plot.star_chains(result, 1, "couple"),
+                 lambda: plot.locus_points(result, of="Moment")):
+        with pytest.raises(PlotError, match="of must be one of force, moment"):
+            call()
+
+
+@pytest.mark.parametrize("of", ["force", "moment"])
+@pytest.mark.parametrize("order", [1, 2, 4])   # a plain rod has no third order
+def test_star_labels_of_24_cylinders_do_not_overlap(couples, of, order):
+    """The labels the renderer draws (not the placement's estimate) overlap no other label and
+    no picture's title, lie inside the figure, each beside its own arrow; the longest arrows
+    of each chain are labelled."""
+    result = couples["inline-24"]
+    fig = plot.star([result, couples["inline-3"]], order=order, of=of)
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    ax = fig.axes[0]
+    labels = [t for t in ax.texts if t.get_gid() == "cylinder label"]
+    boxes = [t.get_window_extent(renderer) for t in labels]
+    chains = plot.star_chains(result, order, of)
+    arrows = chains["forward"] + chains["backward"]
+    assert len(labels) >= 12
+    for i, box in enumerate(boxes):
+        assert not any(box.overlaps(other) for other in boxes[i + 1:]), labels[i].get_text()
+        assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1
+        assert fig.bbox.y0 <= box.y0 and box.y1 <= fig.bbox.y1
+        for other in fig.texts + [a.title for a in fig.axes] + [t for t in ax.texts if t.get_gid() is None]:
+            if other.get_text():
+                assert not box.overlaps(other.get_window_extent(renderer))
+    # beside its arrow: the label's centre within its size plus 3 points of the segment
+    points = 72.0 / fig.dpi
+    for label, box in zip(labels, boxes):
+        centre = np.array([(box.x0 + box.x1) / 2, (box.y0 + box.y1) / 2])
+        near = []
+        for name, tail, head in arrows:
+            if name != label.get_text():
+                continue
+            p, q = (ax.transData.transform((z.imag, z.real)) for z in (tail, head))
+            t = np.clip(np.dot(centre - p, q - p) / np.dot(q - p, q - p), 0, 1)
+            near.append(np.linalg.norm(centre - (p + t * (q - p))))
+        assert min(near) <= max(box.width, box.height) + 3 / points
+    for part in ("forward", "backward"):
+        longest = max(chains[part], key=lambda a: abs(a[2] - a[1]))[0]
+        assert longest in {t.get_text() for t in labels}
+
+
+def test_place_labels_refuses_overlaps_and_skips_short_segments():
+    """Twelve segments crossing at one point, as the spokes of a star: each placed label box
+    is clear of every other, the spoke shorter than ``shortest`` gets none."""
+    angles = np.radians(np.arange(12) * 30)
+    segments = [((0.0, 0.0), (60 * math.cos(a), 60 * math.sin(a))) for a in angles]
+    segments.append(((0.0, 0.0), (2.0, 0.0)))
+    sizes = [(8.0, 9.0)] * len(segments)
+    centres = plot.place_labels(segments, sizes, shortest=5.0)
+    assert centres[-1] is None and all(c is not None for c in centres[:-1])
+    boxes = [(x - 4, y - 4.5, x + 4, y + 4.5) for x, y in centres[:-1]]
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1:]:
+            assert not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3])
+
+
+def test_locus_legend_of_many_engines_lies_below_the_axes(library):
+    fig = plot.locus(library)
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    (legend,) = fig.legends
+    box, axes = legend.get_window_extent(renderer), fig.axes[0].get_tightbbox(renderer)
+    assert box.y1 <= axes.y0 and box.y0 >= fig.bbox.y0
+    assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1
+    assert len(legend.get_texts()) == len(library) > 10
+
+
+def test_spectrum_legend_lies_below_the_panels_and_leaves_them_the_width(library):
+    fig = plot.spectrum(library)
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    (legend,) = fig.legends
+    box = legend.get_window_extent(renderer)
+    lowest = min(ax.get_tightbbox(renderer).y0 for ax in fig.axes)
+    assert box.y1 <= lowest and box.y0 >= fig.bbox.y0
+    for ax in fig.axes:
+        assert ax.get_window_extent(renderer).width >= 0.85 * fig.bbox.width
+
+
+def test_torque_order_axis_labels_whole_orders_and_ticks_half_orders(torques):
+    """Orders to 8: every whole order labelled 1..8; a four-stroke's half orders are ticks
+    without labels (short marks in the frames' path)."""
+    fig = plot.torque(torques[:1])
+    labels = next(a for a in fig.artists if isinstance(a, plot._Labels))
+    order_labels = [item[2] for item in labels.items if item[2].isdigit() and item[3] == "center"]
+    assert order_labels == [str(k) for k in range(1, 9)]
+    assert not any(".5" in item[2] for item in labels.items)
+    data = plot.torque_data(torques[0])
+    assert_allclose(data["orders"], 0.5 * np.arange(1, 17), atol=0)
+
+
+def test_plot_command_draws_moments(tmp_path, couples):
+    for kind in ("locus", "star"):
+        out = tmp_path / f"{kind}.svg"
+        result = run("plot", CONFIGS / "nakanishi-v12-90-2stroke.toml", "--kind", kind, "--of", "moment",
+                     "--order", "1", "--output", out)
+        assert result.exit_code == 0, result.output
+        assert "free moment" in out.read_text(encoding="utf-8")
+
+
+def test_star_titles_of_long_names_stay_apart(couples, tmp_path):
+    """Names cut to 60 characters wrap onto two lines instead of running into the next
+    picture's title; an engine with no moment says so."""
+    from dataclasses import replace
+
+    results = [analyse(replace(couples[key].engine, name=couples[key].engine.name
+                               + " with a very long descriptive name for the design review"))
+               for key in ("inline-3", "twin", "v8-cross")]
+    fig = plot.star(results + [analyse(load(RADIAL))], order=1, of="moment")
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    titles = [ax.title for ax in fig.axes if ax.title.get_text()]
+    assert len(titles) == 4 and all("\n" in t.get_text() for t in titles[:3])
+    boxes = [t.get_window_extent(renderer) for t in titles]
+    for i, box in enumerate(boxes):
+        assert not any(box.overlaps(other) for other in boxes[i + 1:])
+        assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1
+        sums = [t.get_window_extent(renderer) for t in fig.axes[i].texts if "|Σ|" in t.get_text()]
+        assert len(sums) == 2 and not any(box.overlaps(s) for s in sums)
+    assert "no free moment of order 1" in [t.get_text() for t in fig.axes[3].texts]
