@@ -21,7 +21,8 @@ from .config import find_configs, load, load_many, load_template, loads  # noqa:
 from .counterweight import (Antivibrateur, Balance, Counterweight, Plane, Shaft,  # noqa: E402
                             counterweights)
 from .errors import (AnalysisError, BalanceError, ConfigError, CounterweightError,  # noqa: E402
-                     FiringError, ModelError, OutputError, PlotError, SamplingWarning, UnitError)
+                     FiringError, ModelError, OrderError, OutputError, PlotError, SamplingWarning,
+                     UnitError)
 from .firing import Firing  # noqa: E402
 from .gas import PressureCurve, read_cycle_csv, read_pressure_csv  # noqa: E402
 from .model import Cylinder, Engine, GasCycle, Parts, Throw  # noqa: E402
@@ -40,7 +41,7 @@ __all__ = [
     "Engine", "Cylinder", "Throw", "EngineResult", "Comparison", "Shaking", "OrderComponents",
     "Firing", "Balance", "Counterweight", "Plane", "Shaft", "Antivibrateur",
     "BalanceError", "ConfigError", "ModelError", "FiringError", "AnalysisError",
-    "CounterweightError", "PlotError", "OutputError", "UnitError", "RegressError",
+    "CounterweightError", "PlotError", "OutputError", "UnitError", "RegressError", "OrderError",
     "SamplingWarning",
 ]
 

@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .checks import instance, items
 from .errors import AnalysisError
 from .firing import Firing, firing_sequence
 from .kinematics import check_assembly
@@ -223,6 +224,7 @@ def analyse(engine: Engine, samples: int = DEFAULT_SAMPLES,
     SamplingWarning
         the highest orders still carry energy, so ``samples`` are too few
     """
+    instance(engine, Engine, "engine", hint=" (balance.load gives one)")
     check_assembly(engine)
     shaking = shaking_forces(engine, samples, max_order)
     cancels = _counterweight_cancels_first_order(engine)
@@ -291,9 +293,10 @@ class Comparison:
 def compare(results: "Iterable[EngineResult]", reference: str | None = None) -> Comparison:
     """The comparison of analysed engines (:func:`analyse`, same settings); ``reference`` is
     the name (or a unique prefix) of the engine the percentages refer to, default the first."""
-    results = tuple(results)
-    if not results:
-        raise AnalysisError("needs at least one analysed engine", "results")
+    results = tuple(items(results, EngineResult, "results"))
+    if reference is not None and not isinstance(reference, str):
+        raise AnalysisError(f"must be an engine's name (a str) or None, got {reference!r}",
+                            "reference")
     names = [r.engine.name for r in results]
     twice = next((n for n in names if names.count(n) > 1), None)
     if twice is not None:

@@ -17,6 +17,7 @@ import tomllib
 from collections.abc import Iterable
 from pathlib import Path
 
+from . import checks
 from .errors import ConfigError, ModelError, UnitError
 from .kinematics import check_assembly
 from .model import FRAMES, Cylinder, Engine, GasCycle, Parts, Throw
@@ -158,7 +159,7 @@ def load(path: "str | os.PathLike[str]") -> Engine:
     ConfigError
         naming the file, the key and the fix
     """
-    return loads(_read_text(Path(path)), name=str(path))
+    return loads(_read_text(Path(checks.path(path))), name=str(path))
 
 
 def load_template(path: "str | os.PathLike[str]") -> tuple[Engine, dict]:
@@ -171,7 +172,7 @@ def load_template(path: "str | os.PathLike[str]") -> tuple[Engine, dict]:
     ConfigError
         naming the file, the key and the fix
     """
-    text = _read_text(Path(path))
+    text = _read_text(Path(checks.path(path)))
     data = _parse(text, str(path))
     return build(data, str(path), template=True), data
 
@@ -193,7 +194,9 @@ def _read_text(path: Path) -> str:
     except OSError as exc:
         raise ConfigError(path, "", f"cannot read the file ({exc.strerror or exc})") from None
     try:
-        text = data.decode("utf-8")
+        # a byte-order mark (some Windows editors write one) was refused as "Invalid
+        # statement (line 1, column 1)"; CSV files already accepted it
+        text = data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
         raise ConfigError(path, "", f"not UTF-8 text ({exc.reason} at byte {exc.start}); save it "
                                     "as UTF-8") from None
@@ -201,8 +204,12 @@ def _read_text(path: Path) -> str:
 
 
 def _parse(text, name):
+    if not isinstance(text, str):
+        error = ConfigError(name, "", f"text must be a str of TOML, got {type(text).__name__}")
+        error.parameter = "text"
+        raise error
     try:
-        return tomllib.loads(text)
+        return tomllib.loads(text.removeprefix("\ufeff"))
     except tomllib.TOMLDecodeError as exc:
         raise ConfigError(name, "", f"not valid TOML: {exc}; fix the syntax there") from None
 
@@ -210,6 +217,10 @@ def _parse(text, name):
 def loads(text: str, name: str = "<string>") -> Engine:
     """The engine described by TOML ``text``; ``name`` stands for the file in messages and
     becomes the engine's ``config_path``."""
+    if not isinstance(name, str):
+        error = ConfigError("<string>", "", f"name must be a str, got {type(name).__name__}")
+        error.parameter = "name"
+        raise error
     return build(_parse(text, name), name)
 
 
@@ -494,6 +505,15 @@ def find_configs(paths: "Iterable[str | os.PathLike[str]]") -> list[Path]:
     A path that does not exist is kept (reading it says so); a folder that cannot be read, or
     holds no .toml file, is a ConfigError.
     """
+    if isinstance(paths, (str, os.PathLike)):
+        paths = [paths]   # one path, not the characters of one
+    try:
+        paths = [checks.path(p, "paths") for p in paths]
+    except TypeError:
+        error = ConfigError("<paths>", "", f"paths must be a list of file or folder paths, got "
+                                           f"{type(paths).__name__}")
+        error.parameter = "paths"
+        raise error from None
     found = []
     for p in map(Path, paths):
         if not p.is_dir():

@@ -17,6 +17,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 from .analysis import DOCUMENT_VERSION, EngineResult, analyse
+from . import checks
 from .errors import CounterweightError, UnitError
 from .model import Engine
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, Shaking
@@ -543,6 +544,11 @@ def counterweights(engine: "Engine | EngineResult",
     CounterweightError
         naming the parameter that cannot be used
     """
+    checks.instance(engine, (Engine, EngineResult), "engine", CounterweightError)
+    for name, value in (("planes", planes), ("shaft_orders", shaft_orders)):
+        if (value is not None or name == "shaft_orders") and \
+                (isinstance(value, (str, bytes)) or not hasattr(value, "__iter__")):
+            raise CounterweightError(f"must be a list, got {value!r}", name)
     if isinstance(engine, EngineResult):
         shaking, samples = engine.shaking, engine.samples
         engine = engine.engine

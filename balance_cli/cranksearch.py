@@ -65,18 +65,30 @@ __all__ = ["Term", "parse_objective", "default_objective", "coefficients", "Arra
            "SearchResult", "search", "DEFAULT_TOP", "DEFAULT_LIMIT"]
 
 DEFAULT_TOP = 10
+#: more arrangements than this are not listed: each is analysed as compare analyses it (about
+#: 5 ms and 110 kB apiece, measured on an in-line 10), so 1000 take seconds and 110 MB where
+#: the 100 000 once accepted grew past 7 GB
+MAX_TOP = 1000
 #: an exhaustive search evaluating more arrangements than this is refused (about a minute
 #: on two cores); --limit raises it, --heuristic or a cluster are the alternatives
 DEFAULT_LIMIT = 2_000_000_000
 #: scores closer than this are equal (the coefficients are of order one and carry rounding
-#: errors of about 1e-14); equal scores are ranked by firing order
+#: errors of about 1e-14); equal scores are ranked by firing order. Scores are compared with
+#: the weights divided by the largest one, so the tie is relative to the score's scale: a
+#: lone term of weight 1e-10 still ranks M1 = 0 above M1 = 5
 SCORE_TIE = 1e-9
+#: the weights a term may have: the scores they make stay finite (a coefficient is at most a
+#: few times the number of throws squared) and their ratio within what a double resolves
+WEIGHT_RANGE = (1e-100, 1e100)
 #: phasors of a symmetry check may differ by this fraction of the largest throw phasor
 SYMMETRY_TOLERANCE = 1e-9
 #: more arrangements than this tying at the K-th best score are not all kept
 TIE_CAP = 100_000
 #: more processes than this are refused (each costs memory and start-up)
 MAX_WORKERS = 1024
+#: cheapest count of even-firing cranks by dynamic programming, in state updates: beyond it
+#: (an in-line 20 took 38 s) the count is a closed form or an upper bound
+_COUNT_WORK = 10_000_000
 #: a block of (prefix × suffix × channel) values evaluated at once
 _BLOCK = 1 << 21
 _TERM = re.compile(r"^\s*([FM])(\d+)([+-]?)\s*(?::\s*(.+?))?\s*$")
@@ -146,15 +158,45 @@ def parse_objective(text: str | None, max_order: int = DEFAULT_MAX_ORDER) -> tup
                 weight = float(weight_text)
             except ValueError:
                 weight = math.nan
-            if not math.isfinite(weight) or weight <= 0.0:
+            if not _weight_ok(weight):
                 raise AnalysisError(f"term {item.strip()!r}: the weight after ':' must be a "
-                                    "positive number such as 4", "objective")
+                                    f"positive number from {WEIGHT_RANGE[0]:g} to "
+                                    f"{WEIGHT_RANGE[1]:g}, such as 4", "objective")
         term = Term(kind, order, {"": "max", "+": "forward", "-": "backward"}[sign], weight)
         if any(t.name == term.name for t in terms):
             raise AnalysisError(f"term {term.name} is listed twice; give it once (with a "
                                 "weight if it matters more)", "objective")
         terms.append(term)
     return tuple(terms)
+
+
+def _weight_ok(weight):
+    return (isinstance(weight, (int, float, np.integer, np.floating)) and not isinstance(weight, bool)
+            and math.isfinite(weight) and WEIGHT_RANGE[0] <= weight <= WEIGHT_RANGE[1])
+
+
+def _check_terms(terms, max_order):
+    """Terms given as objects must be what :func:`parse_objective` would have made: a bound
+    that assumes positive weights is no proof with a negative or non-finite one."""
+    if not terms:
+        raise AnalysisError(f"must name coefficients of orders 1 to {max_order}", "objective")
+    for term in terms:
+        if not isinstance(term, Term):
+            raise AnalysisError(f"must be a string such as 'M1,M2' or Terms, got {term!r}",
+                                "objective")
+        if (term.kind not in ("F", "M") or term.part not in ("max", "forward", "backward")
+                or isinstance(term.order, bool) or not isinstance(term.order, (int, np.integer))
+                or not 1 <= term.order <= max_order):
+            raise AnalysisError(f"term {term!r} must be F or M, of an order from 1 to {max_order}, "
+                                "part max, forward or backward", "objective")
+        if not _weight_ok(term.weight):
+            raise AnalysisError(f"term {term.name}: the weight must be a positive number from "
+                                f"{WEIGHT_RANGE[0]:g} to {WEIGHT_RANGE[1]:g}, got {term.weight!r}",
+                                "objective")
+    names = [t.name for t in terms]
+    twice = next((name for name in names if names.count(name) > 1), None)
+    if twice:
+        raise AnalysisError(f"term {twice} is listed twice; give it once", "objective")
 
 
 def coefficients(force_forward, force_backward, moment_forward, moment_backward, units_n,
@@ -392,13 +434,15 @@ def _pitch(template):
 
 
 def _channels(objective, units, pitch):
-    """The complex sums the score needs, (kind 0..3, order index), and their weights."""
+    """The complex sums the score needs, (kind 0..3, order index), and their weights, divided
+    by the largest term weight (the search compares scores of order one; see SCORE_TIE)."""
     weights = {}
+    largest = max(term.weight for term in objective)
     for term in objective:
         k = term.order - 1
         if units[k] == 0.0:
             continue
-        scale = term.weight / units[k] / (pitch if term.kind == "M" else 1.0)
+        scale = term.weight / largest / units[k] / (pitch if term.kind == "M" else 1.0)
         first = 0 if term.kind == "F" else 2
         parts = {"max": (0, 1), "forward": (0,), "backward": (1,)}[term.part]
         for p in parts:
@@ -606,8 +650,18 @@ def _count_cranks(problem):
     P, cap, n = problem.lattice, problem.capacity, problem.n_throws
     if not cap:
         return P ** (n - 1)
-    if (cap + 1) ** P > 1 << 22:
+    if all(len(e) == 1 for e in problem.offsets):
+        # one cylinder a throw (every in-line engine): throw 1 takes a place of its point and
+        # the other n − 1 throws share the remaining places, cap at each point: a multinomial
+        return math.factorial(n - 1) // (math.factorial(cap - 1) * math.factorial(cap) ** (P - 1))
+    if (cap + 1) ** P * n * P > _COUNT_WORK:
         return None
+    return _count_by_occupancy(problem)
+
+
+def _count_by_occupancy(problem):
+    """The count over every state of the lattice's occupancy, throw by throw."""
+    P, cap, n = problem.lattice, problem.capacity, problem.n_throws
     radix = (cap + 1) ** np.arange(P, dtype=np.int64)
     states = np.arange((cap + 1) ** P, dtype=np.int64)
     digits = (states[:, None] // radix) % (cap + 1)
@@ -643,6 +697,9 @@ class _Pool:
         self.best: dict = {}
         self.threshold = threshold
         self.truncated = False
+        # the threshold is brought down when the pool reaches this size, which then doubles:
+        # sorting at every offer made a large top quadratic (minutes at top = 100 000)
+        self.recount = top
 
     def offer(self, score, crank):
         if score > self.threshold + SCORE_TIE:
@@ -655,12 +712,11 @@ class _Pool:
             self.truncated = True
             return
         self.best[key] = score
-        if len(self.best) >= self.top:
-            scores = sorted(self.best.values())
-            self.threshold = min(self.threshold, scores[self.top - 1])
-            if len(self.best) > 2 * self.top + 64:
-                self.best = {k: v for k, v in self.best.items()
-                             if v <= self.threshold + SCORE_TIE}
+        if len(self.best) >= self.recount:
+            scores = np.fromiter(self.best.values(), float, len(self.best))
+            self.threshold = min(self.threshold, float(np.partition(scores, self.top - 1)[self.top - 1]))
+            self.best = {k: v for k, v in self.best.items() if v <= self.threshold + SCORE_TIE}
+            self.recount = max(2 * len(self.best), self.top) + 64
 
 
 @dataclass
@@ -750,6 +806,11 @@ _WORKER: dict = {}
 
 
 def _init_worker(problem, top, shared):
+    # Ctrl-C reaches every process of the terminal's group: the parent stops the pool, and a
+    # worker's own KeyboardInterrupt would only print a stray traceback
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     _WORKER.update(problem=problem, top=top, shared=shared)
 
 
@@ -766,7 +827,18 @@ def _chunks(units, n):
     return [units[i:i + size] for i in range(0, len(units), size)]
 
 
+def _cores():
+    """Cores this process may run on: more processes than these only share them."""
+    try:
+        return len(os.sched_getaffinity(0)) or 1
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
 def _run_local(problem, units, top, workers, threshold, progress):
+    """(chunks, processes that ran): the processes are capped at the cores and at the
+    pieces of work, which is what helps (1000 asked took 4.5 s where two took 1 s)."""
+    workers = min(workers, _cores())
     if workers <= 1 or len(units) < 2:
         out = []
         for piece in _chunks(units, 50):
@@ -774,20 +846,32 @@ def _run_local(problem, units, top, workers, threshold, progress):
             threshold = min(threshold, _pool_threshold(out, top))
             if progress:
                 progress(len(piece))
-        return out
+        return out, 1
     import multiprocessing
+    import signal
 
     methods = multiprocessing.get_all_start_methods()
     context = multiprocessing.get_context("fork" if "fork" in methods else None)
     shared = context.Value("d", threshold)
     out = []
     pieces = _chunks(units, 16 * workers)
-    with context.Pool(min(workers, len(pieces)), _init_worker, (problem, top, shared)) as pool:
+    processes = min(workers, len(pieces))
+    # forked workers ignore Ctrl-C from their first instruction (the initializer comes later)
+    try:
+        handler = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    except ValueError:   # not the main thread: signals are not ours to change
+        handler = None
+    try:
+        pool = context.Pool(processes, _init_worker, (problem, top, shared))
+    finally:
+        if handler is not None:
+            signal.signal(signal.SIGINT, handler)
+    with pool:
         for piece, chunk in zip(pieces, pool.imap(_worker_chunk, pieces)):
             out.append(chunk)
             if progress:
                 progress(len(piece))
-    return out
+    return out, processes
 
 
 #: seconds to wait for a Dask scheduler to answer
@@ -1057,19 +1141,37 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     check_settings(samples, max_order)
     if workers is None:
         workers = os.cpu_count() or 1
-    for name, value, low, high in (("top", top, 1, 100_000), ("restarts", restarts, 1, 1_000_000),
+    for name, value, low, high in (("top", top, 1, MAX_TOP), ("restarts", restarts, 1, 1_000_000),
                                    ("limit", limit, 1, 10**15), ("seed", seed, 0, 2**63 - 1),
                                    ("workers", workers, 1, MAX_WORKERS)):
-        if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high:
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) \
+                or not low <= value <= high:
             raise AnalysisError(f"must be a whole number from {low:,} to {high:,}, got {value!r}",
                                 name)
+    top, restarts, limit, seed, workers = map(int, (top, restarts, limit, seed, workers))
+    if scheduler is not None and not isinstance(scheduler, str) \
+            and not all(hasattr(scheduler, a) for a in ("scatter", "submit", "nthreads")):
+        raise AnalysisError(f"must be a scheduler address such as tcp://host:8786 or a "
+                            f"distributed.Client, got {scheduler!r}", "scheduler")
     if heuristic and scheduler is not None:
-        raise AnalysisError("applies to the exhaustive search; the heuristic runs here, in one "
-                            "process: leave out scheduler or heuristic", "scheduler")
-    terms = (parse_objective(objective, max_order) if objective is None or isinstance(objective, str)
-             else tuple(objective))
-    if not terms or not all(isinstance(t, Term) and 1 <= t.order <= max_order for t in terms):
-        raise AnalysisError(f"must name coefficients of orders 1 to {max_order}", "objective")
+        raise AnalysisError("applies to the exhaustive search, but the heuristic search runs in "
+                            "this process: leave out one of the two", "scheduler")
+    if isinstance(objective, str) or objective is None:
+        terms = parse_objective(objective, max_order)
+    elif isinstance(objective, Term):
+        terms = (objective,)
+    else:
+        try:
+            terms = tuple(objective)
+        except TypeError:
+            raise AnalysisError(f"must be a string such as 'M1,M2' or Terms, got {objective!r}",
+                                "objective") from None
+    _check_terms(terms, max_order)
+    if not isinstance(template, Engine):
+        raise AnalysisError(f"must be an Engine (balance.load_template gives one), got "
+                            f"{type(template).__name__}", "template")
+    if progress is not None and not callable(progress):
+        raise AnalysisError(f"must be a callable(done, total), got {progress!r}", "progress")
     if template.is_rotary:
         raise AnalysisError("is a rotary engine: its crank does not turn, so there are no throw "
                             "phases to arrange; search a fixed-frame template", "template")
@@ -1111,11 +1213,12 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     expected = cranks if cranks is not None else P ** (n - 1)
     reduction = (2 if reversal else 1) * (2 if problem.mirror else 1)
     if not heuristic and expected // reduction > limit:
-        _refuse_limit(limit, expected // reduction, "about ")
+        _refuse_limit(limit, expected // reduction, "about " if cranks is not None else "up to ")
 
+    # progress counts the listed arrangements' analyses too (top of them at most), the
+    # last stage, which took minutes with a large top after the bar had shown 100 %
     if heuristic:
-        total_work = restarts
-        tick = _ticker(progress, total_work)
+        tick = _ticker(progress, restarts + top)
         chunks = _heuristic(problem, top, restarts, seed, tick)
         total_cranks = cranks
     else:
@@ -1124,12 +1227,12 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         if planned > limit:
             _refuse_limit(limit, planned, "")
         units_of_work = _work_units(problem)
-        tick = _ticker(progress, len(units_of_work))
+        tick = _ticker(progress, len(units_of_work) + top)
         if scheduler is not None:
             chunks, workers = _run_cluster(problem, units_of_work, top, math.inf, scheduler,
                                            tick)
         else:
-            chunks = _run_local(problem, units_of_work, top, workers, math.inf, tick)
+            chunks, workers = _run_local(problem, units_of_work, top, workers, math.inf, tick)
     truncated = any(c.truncated for c in chunks)
     merged = _Pool(problem, top)
     for chunk in chunks:
@@ -1141,7 +1244,7 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         cut = orbits[top - 1][0]
         orbits = [o for o in orbits if o[0] <= cut + SCORE_TIE]
     arrangements = _final(template, flat, problem, orbits, shift, terms, top, samples,
-                          max_order, units, pitch)
+                          max_order, units, pitch, tick)
     total = (total_cranks or 0) * firing_per_crank
     distinct = _distinct(flat, problem, total, shift) if reversal else total
     return SearchResult(
@@ -1198,6 +1301,13 @@ def _distinct(flat, problem, total, shift):
     P, n = problem.lattice, problem.n_throws
     if P % 2:
         return total // 2 if total % 2 == 0 else (total + 1) // 2
+    if not problem.capacity:
+        return (total + 2 ** (n - 1)) // 2   # every crank of phases 0 and 180° is its own reversal
+    reach = {(e - p) % P for offsets in problem.offsets for e in offsets for p in (0, P // 2)}
+    if len(reach) < P:
+        # phases of 0 and 180° alone cannot fill the lattice: no crank is its own reversal (an
+        # in-line 22's 2^21 candidates took minutes to rule out one by one)
+        return total // 2
     fixed = 0
     for tail in itertools.product((0, P // 2), repeat=n - 1):
         crank = (0,) + tail
@@ -1216,22 +1326,29 @@ def _distinct(flat, problem, total, shift):
     return (total + fixed) // 2
 
 
-def _final(template, flat, problem, orbits, shift, terms, top, samples, max_order, units, pitch):
+def _final(template, flat, problem, orbits, shift, terms, top, samples, max_order, units, pitch,
+           tick=None):
     """The listed arrangements: expanded to firing orders and mirror images, analysed exactly
     as ``compare`` would, ranked by score and then firing order."""
     members = _expand(flat, problem, orbits, shift)
     rows = []
     for (crank, order), (score, position) in members.items():
         phases = _phases(problem, crank)
-        engine = _arrangement_engine(template, phases, order, template.name)
+        engine = None
         if order is None:  # uneven: the most uniform order the crank allows, not written
+            engine = _arrangement_engine(template, phases, order, template.name)
             order = firing_sequence(engine).order
+        # scores are normalised (of order one, see _channels): the tie is relative
         rows.append((round(score / SCORE_TIE), order, crank, phases, engine))
     rows.sort(key=lambda r: (r[0], r[1]))
     listed = []
     rank_of: dict = {}
     for rank, (_, order, crank, phases, engine) in enumerate(rows[:top], 1):
+        if engine is None:   # built for the listed ones only: each costs a model check
+            engine = _arrangement_engine(template, phases, order, template.name)
         result = analyse(engine, samples, max_order)
+        if tick:
+            tick(1)
         values = _coefficients_of(result, units, pitch, terms)
         score = float(sum(t.weight * values[t.name] for t in terms))
         suffix = f", arrangement {rank}"
@@ -1245,6 +1362,8 @@ def _final(template, flat, problem, orbits, shift, terms, top, samples, max_orde
             mirror_of = rank_of.get(partner) if partner != own else None
         rank_of.setdefault(own, rank)
         listed.append(Arrangement(rank, score, phases, result, values, mirror_of))
+    if tick and top > len(listed):
+        tick(top - len(listed))
     return listed
 
 

@@ -9,7 +9,7 @@ zero`` without parsing the message.
 
 __all__ = [
     "BalanceError", "UnitError", "ConfigError", "ModelError", "FiringError", "AnalysisError",
-    "CounterweightError", "PlotError", "OutputError", "SamplingWarning",
+    "CounterweightError", "PlotError", "OutputError", "SamplingWarning", "OrderError",
 ]
 
 
@@ -72,6 +72,14 @@ class FiringError(BalanceError, ValueError):
 
 class AnalysisError(BalanceError, ValueError):
     """Analysis settings that cannot work (too few samples for the orders asked, say)."""
+
+
+class OrderError(AnalysisError, KeyError):
+    """An order that a result does not hold (``result.order(k)``); a KeyError too, as it was
+    before it became a BalanceError."""
+
+    def __str__(self):
+        return self.args[0]   # a KeyError's own str() would quote the message
 
 
 class CounterweightError(BalanceError, ValueError):

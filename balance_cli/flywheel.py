@@ -29,8 +29,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .checks import curve, is_real, positive
 from .errors import AnalysisError
-from .units import check_finite_range, rad_s_to_rpm
+from .units import rad_s_to_rpm
 
 __all__ = ["LOADS", "Steadiness", "steadiness", "flywheel_for"]
 
@@ -55,6 +56,9 @@ class Steadiness:
         the order of the driving torque's largest harmonic (N = 2·order in the closed forms)
     reduced_mass_kgm2 : float
         the mean reduced mass added to I in the closed forms, kg·m²
+    base_rad_s, deviation : float, ndarray, optional
+        the speed as base·(1 + deviation): a fluctuation of 1e-20 of the speed is lost to
+        rounding in ω itself but not in its deviation, from which the steadiness is taken
     """
 
     theta_deg: np.ndarray
@@ -65,34 +69,58 @@ class Steadiness:
     torque_range_nm: float
     order: float
     reduced_mass_kgm2: float = 0.0
+    base_rad_s: float | None = None
+    deviation: np.ndarray | None = None
+
+    def _parts(self):
+        if self.deviation is None:
+            speed = self.speed_rad_s
+            return float(speed.mean()), speed / speed.mean() - 1.0
+        return self.base_rad_s, self.deviation
+
+    @property
+    def min_speed_rad_s(self) -> float:
+        base, d = self._parts()
+        return base * (1.0 + float(d.min()))
+
+    @property
+    def max_speed_rad_s(self) -> float:
+        base, d = self._parts()
+        return base * (1.0 + float(d.max()))
 
     @property
     def mean_speed_rad_s(self) -> float:
-        return float(self.speed_rad_s.mean())
+        # rounding is monotonic, so min ≤ mean ≤ max holds for the numbers written as well
+        base, d = self._parts()
+        return base * (1.0 + float(np.clip(d.mean(), d.min(), d.max())))
 
     @property
     def factor(self) -> float:
-        """ω_m/(ω_max − ω_min), integrated."""
-        spread = float(self.speed_rad_s.max() - self.speed_rad_s.min())
-        return math.inf if spread == 0.0 else self.mean_speed_rad_s / spread
+        """ω_m/(ω_max − ω_min), integrated; inf only when the speed does not vary at all."""
+        _, d = self._parts()
+        spread = float(d.max() - d.min())
+        return math.inf if spread == 0.0 else (1.0 + float(d.mean())) / spread
 
     def margoulis(self) -> dict:
-        """Margoulis's closed forms r_c, r_v, r_h at the mean speed."""
+        """Margoulis's closed forms r_c, r_v, r_h at the mean speed (None beyond a double)."""
         if self.torque_range_nm == 0.0:
-            return {"r_c": math.inf, "r_v": math.inf, "r_h": math.inf}
+            return {"r_c": None, "r_v": None, "r_h": None}
         omega = self.mean_speed_rad_s
         inertia = self.inertia_kgm2 + self.reduced_mass_kgm2
         r_c = omega**2 * 2 * self.order * inertia / (2 * self.torque_range_nm)
         r_v = 2 * self.mean_torque_nm / self.torque_range_nm
-        return {"r_c": r_c, "r_v": r_v, "r_h": math.hypot(r_c, r_v)}
+        forms = {"r_c": r_c, "r_v": r_v, "r_h": math.hypot(r_c, r_v)}
+        return {k: (v if math.isfinite(v) else None) for k, v in forms.items()}
 
     def to_dict(self) -> dict:
-        """What ``steadiness --format json`` writes (speeds in rpm, torques in N·m)."""
+        """What ``steadiness --format json`` writes (speeds in rpm, torques in N·m); every
+        number finite (JSON has no Infinity)."""
+        factor = self.factor
         return {
             "mean_speed_rpm": rad_s_to_rpm(self.mean_speed_rad_s),
-            "min_speed_rpm": rad_s_to_rpm(float(self.speed_rad_s.min())),
-            "max_speed_rpm": rad_s_to_rpm(float(self.speed_rad_s.max())),
-            "steadiness": self.factor,
+            "min_speed_rpm": rad_s_to_rpm(self.min_speed_rad_s),
+            "max_speed_rpm": rad_s_to_rpm(self.max_speed_rad_s),
+            "steadiness": factor if math.isfinite(factor) else None,
             **self.margoulis(),
             "mean_torque_Nm": self.mean_torque_nm,
             "torque_range_Nm": self.torque_range_nm,
@@ -146,18 +174,13 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
     """
     from scipy.integrate import cumulative_trapezoid   # only the steadiness needs scipy
 
-    torque = np.asarray(torque_nm, dtype=float)
-    if torque.ndim != 1 or len(torque) < 8 or not np.all(np.isfinite(torque)):
+    torque = _curve(torque_nm, "torque_nm")
+    if len(torque) < 8:
         raise AnalysisError("must be at least 8 finite values over one period", "torque_nm")
-    for name, value, dimension in (("inertia_kgm2", inertia_kgm2, "moment of inertia"),
-                                   ("speed_rad_s", speed_rad_s, "angular speed")):
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or value <= 0:
-            raise AnalysisError(f"must be a number greater than zero, got {value!r}", name)
-        try:
-            check_finite_range(float(value), dimension)
-        except Exception as exc:   # UnitError: out of the accepted range
-            raise AnalysisError(f"is invalid: {exc}", name) from None
-    if load not in LOADS:
+    period_deg = _period(period_deg)
+    inertia_kgm2 = _positive(inertia_kgm2, "inertia_kgm2", "moment of inertia")
+    speed_rad_s = _positive(speed_rad_s, "speed_rad_s", "angular speed")
+    if not isinstance(load, str) or load not in LOADS:
         raise AnalysisError(f"must be one of {', '.join(LOADS)}, got {load!r}", "load")
     scale = float(np.abs(torque).max())
     if float(torque.max() - torque.min()) <= 1e-12 * scale:
@@ -166,25 +189,25 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
     period = math.radians(period_deg)
     n = len(torque)
     theta = np.arange(n) * period / n
-    mu = np.zeros(n) if reduced_mass_kgm2 is None else np.resize(np.asarray(reduced_mass_kgm2), n)
+    mu = _reduced_mass(reduced_mass_kgm2, n, period_deg)
     k = np.fft.fftfreq(n, 1.0 / n) * (2 * math.pi / period)
     mu_rate = np.fft.ifft(np.fft.fft(mu) * 1j * k).real
     mean_torque = float(torque.mean())
     if abs(mean_torque) <= 1e-12 * scale:
         mean_torque = 0.0   # rounding: a torque that averages out
     drive, rate, total = _periodic(torque, period), _periodic(mu_rate, period), _periodic(mu, period)
+    # the speed is written base·(1 + deviation), the deviation from logarithms of ratios
+    # close to 1 (log1p, expm1): ω itself cannot resolve a fluctuation below 1e-16 of it,
+    # which made a steadiness of 1e17 "inf" and a mean speed below the minimum
     if load == "propeller":
         if mean_torque <= 0:
             raise AnalysisError(f"has a mean of {mean_torque:.4g} N·m: a propeller absorbs only a "
                                 "positive mean torque", "torque_nm")
         ell = mean_torque / speed_rad_s**2
 
-        def slope(angle, u):
-            return (2 * drive(angle) - (rate(angle) + 2 * ell) * u) / (inertia_kgm2 + total(angle))
-
-        # the periodic solution of u' + g·u = f in closed form, u = e^(−G)·(u₀ + ∫f·e^G),
-        # u₀ = e^(−G(P))·∫₀ᴾ f·e^G / (1 − e^(−G(P))), the integrals by scipy's cumulative
-        # trapezoidal rule on a grid sixteen times finer than the torque's samples
+        # the periodic solution of u' + g·u = f in closed form, u = e^(−G)·(u₀ + F), F = ∫f·e^G,
+        # u₀ = F(P)/(e^G(P) − 1), the integrals by scipy's cumulative trapezoidal rule on a
+        # grid sixteen times finer than the torque's samples; u/u₀ = e^(−G)·(1 + F/u₀)
         fine = np.linspace(0.0, period, 16 * n + 1)
         g = (rate(fine) + 2 * ell) / (inertia_kgm2 + total(fine))
         f = 2 * drive(fine) / (inertia_kgm2 + total(fine))
@@ -192,12 +215,17 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
         if big_g[-1] > 200:   # e^G would reach the limits of floating point
             raise AnalysisError("is too small for this torque and load: the speed could not "
                                 "settle within the cycle; give a larger one", "inertia_kgm2")
-        if big_g[-1] < 1e-12:   # 1 − e^(−G) lost to rounding
+        if not big_g[-1] > 0:   # no damping within a cycle: no periodic solution to pick
             raise AnalysisError("is too large for this propeller: its load could not hold the "
                                 "speed within a cycle; give a smaller one", "inertia_kgm2")
         big_f = cumulative_trapezoid(f * np.exp(big_g), fine, initial=0.0)
-        start = np.exp(-big_g[-1]) * big_f[-1] / (1 - np.exp(-big_g[-1]))
-        u = np.interp(theta, fine, np.exp(-big_g) * (start + big_f))
+        start = big_f[-1] / math.expm1(big_g[-1])
+        ratio = big_f / start
+        if not start > 0 or np.any(ratio <= -1):
+            raise AnalysisError("is too small for this torque: the engine would stop within the "
+                                "cycle; give a larger one", "inertia_kgm2")
+        base = math.sqrt(start)
+        deviation = np.expm1(0.5 * np.interp(theta, fine, np.log1p(ratio) - big_g))
     else:
         from scipy.optimize import brentq
 
@@ -216,13 +244,67 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
             raise AnalysisError("is too small for this torque: the engine would stop within the "
                                 "cycle; give a larger one", "inertia_kgm2")
         constant = brentq(mean_speed, lowest, top, xtol=1e-14 * top)
-        u = (constant + integral) / inertia
-    if not np.all(np.isfinite(u)) or np.any(u <= 0):
+        if not constant > 0 or np.any(integral / constant <= -1):
+            raise AnalysisError("is too small for this torque: the engine would stop within the "
+                                "cycle; give a larger one", "inertia_kgm2")
+        # ω² = K·(1 + J/K)/(I_m·(1 + (μ − μ̄)/I_m)), I_m = I + μ̄
+        mean_inertia = float(inertia.mean())
+        base = math.sqrt(constant / mean_inertia)
+        deviation = np.expm1(0.5 * (np.log1p(integral / constant)
+                                    - np.log1p((inertia - mean_inertia) / mean_inertia)))
+    speed = base * (1.0 + deviation)
+    if not (math.isfinite(base) and np.all(np.isfinite(deviation)) and np.all(speed > 0)):
         raise AnalysisError("is too small for this torque: the engine would stop within the "
                             "cycle; give a larger one", "inertia_kgm2")
-    return Steadiness(np.degrees(theta), np.sqrt(u), float(inertia_kgm2), load, mean_torque,
-                      float(torque.max() - torque.min()), _dominant_order(torque, period_deg),
-                      float(mu.mean()))
+    result = Steadiness(np.degrees(theta), speed, float(inertia_kgm2), load, mean_torque,
+                        float(torque.max() - torque.min()), _dominant_order(torque, period_deg),
+                        float(mu.mean()), base, deviation)
+    if not math.isfinite(result.factor):
+        # the deviation itself vanished: beyond what a double resolves even this way
+        raise AnalysisError("makes the speed vary by less than a double resolves (its "
+                            "steadiness beyond 1e300); give a smaller one or a torque that "
+                            "varies more", "inertia_kgm2")
+    return result
+
+
+def _curve(values, name):
+    return curve(values, name)
+
+
+def _real(value):
+    return is_real(value)
+
+
+def _period(period_deg):
+    if not _real(period_deg) or float(period_deg) not in (360.0, 720.0):
+        raise AnalysisError(f"must be 360 (a two-stroke's cycle) or 720 (a four-stroke's), got "
+                            f"{period_deg!r}", "period_deg")
+    return float(period_deg)
+
+
+def _positive(value, name, dimension):
+    return positive(value, name, dimension)
+
+
+def _reduced_mass(values, n, period_deg):
+    """μ at the torque's n angles: given there, or over one revolution of a four-stroke's
+    cycle (and then repeated); other lengths were once tiled without a word."""
+    if values is None:
+        return np.zeros(n)
+    mu = _curve(values, "reduced_mass_kgm2")
+    turns = int(period_deg // 360)
+    if len(mu) == n:
+        pass
+    elif turns == 2 and n % 2 == 0 and len(mu) == n // 2:
+        mu = np.tile(mu, 2)
+    else:
+        one = f" or {n // 2} (one revolution)" if turns == 2 and n % 2 == 0 else ""
+        raise AnalysisError(f"must have as many values as the torque, {n}{one}, got {len(mu)}",
+                            "reduced_mass_kgm2")
+    if np.any(mu < 0):
+        raise AnalysisError("must not be negative: it is a kinetic energy's coefficient",
+                            "reduced_mass_kgm2")
+    return mu
 
 
 def flywheel_for(target, torque_nm, period_deg, speed_rad_s, load="propeller",
@@ -231,17 +313,29 @@ def flywheel_for(target, torque_nm, period_deg, speed_rad_s, load="propeller",
     the smallest inertia tried, 1e-9 kg·m², already reaches it)."""
     from scipy.optimize import brentq
 
-    if isinstance(target, bool) or not isinstance(target, (int, float)) or not target > 0.5:
+    if not _real(target) or not 0.5 < target < math.inf:
         raise AnalysisError(f"must be a steadiness above ½ (the least there is), got {target!r}",
                             "target")
+    target = float(target)
+    # every other argument checked once, as steadiness checks it, before the root finder
+    # turns an error about them into "the engine stops"
+    try:
+        steadiness(torque_nm, period_deg, 1.0, speed_rad_s, load, reduced_mass_kgm2)
+    except AnalysisError as error:
+        if error.parameter != "inertia_kgm2":   # that one is the root finder's to vary
+            raise
 
-    def excess(inertia):
+    def factor_at(inertia):
         try:
             factor = steadiness(torque_nm, period_deg, inertia, speed_rad_s, load,
                                 reduced_mass_kgm2).factor
         except AnalysisError:
-            return -target   # the engine stops within the cycle: far too little inertia
-        return factor - target if math.isfinite(factor) else -target
+            return None   # the engine stops within the cycle: far too little inertia
+        return factor if math.isfinite(factor) else None
+
+    def excess(inertia):
+        factor = factor_at(inertia)
+        return -target if factor is None else factor - target
 
     low, high = 1e-9, 1.0
     if excess(low) >= 0:
@@ -253,9 +347,16 @@ def flywheel_for(target, torque_nm, period_deg, speed_rad_s, load="propeller",
     found = brentq(excess, low, high, xtol=1e-14, rtol=1e-10)
     # below some inertia the engine stops: the root finder then lands on that edge, where the
     # steadiness jumps past the target instead of meeting it
-    reached = excess(found) + target
-    if abs(reached - target) > 1e-3 * target:
-        raise AnalysisError(f"{target:g} is below the least steadiness this torque and load allow "
-                            f"before the engine stops (about {reached:.4g}, with {found:.4g} kg·m²); "
+    reached = factor_at(found)
+    if reached is None or abs(reached - target) > 1e-3 * target:
+        # the least steadiness is the one just above the edge where the engine stops (at the
+        # edge itself it stops, and "about 0" was once the answer)
+        for nudge in (1e-12, 1e-9, 1e-6, 1e-3, 1e-1):
+            least = factor_at(found * (1 + nudge))
+            if least is not None:
+                break
+        about = f"about {least:.10g}" if least is not None else "unknown"
+        raise AnalysisError(f"{target:.10g} is below the least steadiness this torque and load "
+                            f"allow before the engine stops ({about}, with {found:.4g} kg·m²); "
                             "ask for more", "target")
     return found

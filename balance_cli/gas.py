@@ -22,7 +22,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import ConfigError, UnitError
+from . import checks
+from .errors import AnalysisError, ConfigError, UnitError
 from .units import DIMENSIONS, check_finite_range, parse_quantity
 
 __all__ = ["PressureCurve", "read_pressure_csv", "read_cycle_csv", "cycle_pressure"]
@@ -62,10 +63,12 @@ class PressureCurve:
         return np.interp((np.asarray(angles_deg) - x[0]) % period + x[0], x, y)
 
 
-def read_pressure_csv(path, cycle_deg):
+def read_pressure_csv(path, cycle_deg=None):
     """A pressure curve from a CSV file: a header ``angle_deg,pressure_<unit>`` (or
     ``angle (deg),pressure (<unit>)``), then one row per crank angle from the firing top dead
     centre, increasing, covering one working cycle once; absolute pressures, none negative.
+    ``cycle_deg`` 360 or 720, or None (as the README documents the call) for the cycle the
+    angles span.
 
     Raises
     ------
@@ -87,6 +90,12 @@ def read_cycle_csv(path, quantity, cycle_deg=None):
     ConfigError
         naming the file, the line and the fix
     """
+    checks.path(path)
+    if quantity not in ("pressure", "torque"):
+        raise AnalysisError(f"must be 'pressure' or 'torque', got {quantity!r}", "quantity")
+    if cycle_deg is not None and (not checks.is_real(cycle_deg) or cycle_deg not in (360, 720)):
+        raise AnalysisError(f"must be 360, 720 or None (the cycle the angles span), got "
+                            f"{cycle_deg!r}", "cycle_deg")
     if os.path.exists(path) and not os.path.isdir(path) and not os.path.isfile(path):
         # a FIFO or a device would block or never end: only regular files are read
         raise ConfigError(path, "", "is not a regular file; give a CSV file")

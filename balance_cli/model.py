@@ -9,8 +9,10 @@ calls first.
 
 import dataclasses
 import math
+import numbers
 from dataclasses import dataclass, field, fields
 
+from .checks import is_real
 from .errors import ModelError, UnitError
 from .tolerances import NOISE_FLOOR, SAME_DIRECTION_RAD, SAME_POSITION_M
 from .units import check_finite_range
@@ -38,6 +40,11 @@ class Throw:
 
     phase_rad: float
     z_m: float = 0.0
+
+    def __post_init__(self):
+        # checked here too, not only in the Engine: a Throw of NaN once built without a word
+        _angle(self.phase_rad, "phase_rad")
+        _quantity(self.z_m, "length", "z_m", sign="any")
 
 
 @dataclass(frozen=True)
@@ -87,6 +94,21 @@ class Cylinder:
     knuckle_angle_rad: float = 0.0
     knuckle_kg: float = 0.0
     rod_inertia_kgm2: float = 0.0
+
+    def __post_init__(self):
+        # the types here, the ranges and references in the Engine that holds the cylinder
+        n = self.number
+        if not isinstance(n, numbers.Integral) or isinstance(n, bool) or n < 1:
+            raise ModelError(f"must be a whole number from 1, got {n!r}", "number")
+        object.__setattr__(self, "number", int(n))   # numpy's whole numbers as Python's
+        for name in ("z_m", "reciprocating_kg", "link_length_m", "knuckle_radius_m",
+                     "knuckle_angle_rad", "knuckle_kg", "rod_inertia_kgm2"):
+            value = getattr(self, name)
+            if not is_real(value) or not math.isfinite(value):
+                raise ModelError(f"cylinder {n}: {name} must be a finite number, got {value!r}",
+                                 cylinder=n)
+        _quantity(self.reciprocating_kg, "mass", "reciprocating_kg", cylinder=n)
+        _quantity(self.knuckle_kg, "mass", "knuckle_kg", sign="non-negative", cylinder=n)
 
     @property
     def is_link(self) -> bool:
@@ -253,6 +275,9 @@ class Engine:
             value = getattr(self, name)
             if isinstance(value, list):
                 object.__setattr__(self, name, tuple(value))
+            elif not isinstance(value, tuple) and (name != "firing_order" or value is not None):
+                # a number here failed later with "not iterable"
+                raise ModelError(f"must be a list or tuple, got {value!r}", name)
         object.__setattr__(self, "_by_number", {c.number: c for c in self.cylinders
                                                 if isinstance(c, Cylinder)})
         _check(self)
@@ -377,7 +402,7 @@ def _quantity(value, dimension, parameter, sign="positive", cylinder=None):
     """A finite SI value within the accepted range; ``sign`` "positive", "non-negative" or "any"."""
     prefix = f"cylinder {cylinder}: {parameter} " if cylinder is not None else ""
     name = None if prefix else parameter
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
+    if not is_real(value):
         raise ModelError(f"{prefix}must be a number, got {value!r}", name, cylinder)
     try:
         # a value that may be zero may also be tiny (rounding noise of a computed position)
@@ -390,8 +415,7 @@ def _quantity(value, dimension, parameter, sign="positive", cylinder=None):
 
 
 def _angle(value, parameter, cylinder=None):
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
-            or abs(value) > 2 * math.pi:
+    if not is_real(value) or not math.isfinite(value) or abs(value) > 2 * math.pi:
         where = f"cylinder {cylinder}: {parameter} " if cylinder is not None else ""
         raise ModelError(f"{where}must be a finite angle between -2π and 2π rad, got {value!r}",
                          None if where else parameter, cylinder)

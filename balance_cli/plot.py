@@ -23,6 +23,7 @@ import matplotlib
 import numpy as np
 from matplotlib.artist import Artist
 
+from .checks import instance, items
 from .errors import PlotError
 from .output import write_bytes
 from .report.display import Scale
@@ -62,9 +63,9 @@ def _new_figure(size):
 
 def _results(results, order=None) -> "list[EngineResult]":
     """The results as a list; an ``order`` every one of them was analysed to."""
-    chosen = list(results)
-    if not chosen:
-        raise PlotError("needs at least one analysed engine", "results")
+    from .analysis import EngineResult
+
+    chosen = items(results, EngineResult, "results", PlotError)
     if order is not None:
         lowest = min(r.max_order for r in chosen)
         if isinstance(order, bool) or not isinstance(order, int) or not 1 <= order <= lowest:
@@ -817,9 +818,9 @@ def torque(results: "Iterable[TorqueResult]", units: str = "N", fig: "Figure | N
     from matplotlib.lines import Line2D
     from matplotlib.patches import PathPatch
 
-    chosen = list(results)
-    if not chosen:
-        raise PlotError("needs at least one engine's torques", "results")
+    from .torques import TorqueResult
+
+    chosen = items(results, TorqueResult, "results", PlotError, "engine's torques")
     engines = [torque_data(r, units) for r in chosen]
     columns, rows = grid_size(len(engines))
     if fig is None:
@@ -901,6 +902,9 @@ def save(fig: "Figure", path: "str | os.PathLike[str]") -> None:
     """Write ``fig`` to ``path`` atomically, in the format of its extension (see
     :func:`format_of`), then close it if pyplot manages it."""
     fmt = format_of(path)
+    from matplotlib.figure import Figure
+
+    instance(fig, Figure, "fig", PlotError)
     try:
         with matplotlib.rc_context({"svg.fonttype": "none"}):
             write_bytes(path, lambda handle: fig.savefig(handle, format=fmt, dpi=DPI))

@@ -233,6 +233,9 @@ def regression(baseline, current, rtol=0.0, baseline_path="<baseline>") -> Regre
     check_baseline(baseline, baseline_path)
     check_rtol(rtol)
     now = current.to_dict() if isinstance(current, Comparison) else current
+    if not isinstance(now, dict):
+        raise RegressError(f"current must be a Comparison or its to_dict(), got "
+                           f"{type(current).__name__}")
     for key in ("samples", "max_order"):
         if now.get(key) != baseline[key]:
             raise RegressError(f"the engines were analysed with {key} = {now.get(key)!r}, the "

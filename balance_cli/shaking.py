@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .errors import AnalysisError
+from .errors import AnalysisError, OrderError
 from .harmonics import check_sampling, forward_backward, fourier, orders_of, synthesize
 from .kinematics import MassSet, engine_angles, mass_positions
 from .tolerances import minimum_samples
@@ -163,7 +163,7 @@ class Shaking:
     def order(self, k: int) -> OrderComponents:
         """Order ``k`` (1-based); KeyError outside 1..max_order."""
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 1 <= k <= self.max_order:
-            raise KeyError(f"order {k!r} is not among the orders analysed (1 to {self.max_order})")
+            raise OrderError(f"order {k!r} is not among the orders analysed (1 to {self.max_order})", "k")
         return self.orders[k - 1]
 
     def force(self, upsample=1, skip_forward_first=False):

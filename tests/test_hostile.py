@@ -3,12 +3,14 @@ permissions. For every one: the exit status, exactly one error line, no tracebac
 ended in SystemExit, not an exception), the input files unchanged and no output file left."""
 
 import json
+import math
 import os
 import shutil
 import stat
 import tempfile
 from pathlib import Path
 
+import numpy as np
 import pytest
 from click.testing import CliRunner
 
@@ -576,3 +578,372 @@ def test_standard_output_errors_are_one_line(tmp_path):
     ascii_only = subprocess.run([sys.executable, "-c", code, "compare", str(config)],
                                 capture_output=True, env={**os.environ, "PYTHONIOENCODING": "ascii"})
     assert ascii_only.returncode == 0 and "m_rec·r·ω²·n" in ascii_only.stdout.decode("utf-8")
+
+
+# --- issue 16: torque, steadiness, search and the API under hostile input ---------------
+
+TEMPLATES = Path(__file__).resolve().parent.parent / "templates"
+
+
+def inline_template_text(n, pitch_mm=500):
+    """An in-line two-stroke template of ``n`` throws, as a user would write it."""
+    throws = "".join(f'[[throws]]\nz = "{j * pitch_mm} mm"\n' for j in range(n))
+    return (f'name = "In-line {n}"\ncycle = 2\nspeed = "300 rpm"\ncrank_radius = "150 mm"\n'
+            f'rod_length = "600 mm"\n[masses]\nreciprocating = "120 kg"\n[[banks]]\nangle = 0\n'
+            + throws)
+
+
+def search_api(template, objective, **kwargs):
+    from balance_cli.cranksearch import search
+
+    return search(template, objective, workers=1, **kwargs)
+
+
+@pytest.mark.parametrize("objective", ["M1:1e300", "M1:1e308,M2:1e308", "M1:1e-300"])
+def test_search_weights_beyond_their_range_are_refused_with_it(tmp_path, objective):
+    """Item 2: these weights ended in an OverflowError traceback."""
+    template = tmp_path / "t.toml"
+    shutil.copy(TEMPLATES / "inline-6-2stroke.toml", template)
+    before = snapshot(tmp_path)
+    result = invoke("search", template, "--objective", objective, "--workers", "1")
+    check_refused(result, 1, "must be a positive number from 1e-100 to 1e+100", before, tmp_path)
+
+
+def test_search_scores_scale_with_the_weights():
+    """Weights of 1e100 and 1e-10 rank exactly as weights of 1 do (the score is linear in the
+    weights); the scores are the same multiples."""
+    import balance_cli as balance
+
+    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    plain = search_api(template, "M1,M2", top=6)
+    for scale in (1e100, 1e-10):
+        scaled = search_api(template, f"M1:{scale:g},M2:{scale:g}", top=6)
+        assert [a.firing_order for a in scaled.arrangements] == \
+            [a.firing_order for a in plain.arrangements]
+        np.testing.assert_allclose([a.score for a in scaled.arrangements],
+                                   [scale * a.score for a in plain.arrangements], rtol=1e-12)
+
+
+def test_a_tiny_weight_still_ranks_the_smaller_coefficient_first():
+    """Rough edge: with ties absolute at 1e-9, M1:1e-10 ranked M1 = 5 above M1 = 0. The
+    in-line 6 two-stroke has two cranks free of primary couple (1-5-3-6-2-4 and its mirror
+    image, Den Hartog's table), so the first two listed have M1 = 0."""
+    import balance_cli as balance
+
+    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    found = search_api(template, "M1:1e-10", top=4)
+    m1 = [a.coefficients["M1"] for a in found.arrangements]
+    np.testing.assert_allclose(m1[:2], 0.0, atol=1e-9)
+    assert min(m1[2:]) > 0.5
+    scores = np.array([a.score for a in found.arrangements])
+    assert np.all(np.diff(scores) >= -1e-9 * scores.max())   # ranked by score, to its rounding
+
+
+def test_huge_weights_print_a_readable_score(tmp_path):
+    result = invoke("search", TEMPLATES / "inline-6-2stroke.toml", "--objective", "M1:1e100",
+                    "--top", "3", "--workers", "1")
+    assert result.exit_code == 0, result.output
+    row = next(line for line in result.stdout.splitlines() if line.startswith("3 "))
+    score = row.split()[1]
+    assert len(score) <= 12 and float(score) > 1e99, row
+
+
+@pytest.mark.parametrize("n", [20, 21, 22, 23])
+def test_a_template_too_large_is_refused_at_once_with_its_count(tmp_path, n):
+    """Item 3: an in-line 20 to 22 took 38 to 253 s (1.7 GB) to count before the refusal, and
+    an in-line 23 quoted 23^22/4 ≈ 2.3e29 cranks. Even firing leaves (n − 1)! cranks
+    (Den Hartog), counted once with their reversal and evaluated once with their mirror:
+    (n − 1)!/4 to evaluate."""
+    import time
+
+    import balance_cli as balance
+    from balance_cli.errors import AnalysisError
+
+    path = tmp_path / f"i{n}.toml"
+    path.write_text(inline_template_text(n), encoding="utf-8")
+    template, _ = balance.load_template(path)
+    started = time.perf_counter()
+    with pytest.raises(AnalysisError) as caught:
+        search_api(template, "M1")
+    assert time.perf_counter() - started < 1.0
+    assert caught.value.parameter == "limit"
+    assert f"evaluates about {math.factorial(n - 1) // 4:,};" in str(caught.value)
+
+
+def test_the_closed_form_count_is_the_dynamic_programmes():
+    """The multinomial count of one-cylinder throws, (n − 1)!/((c − 1)!·c!^(P − 1)), against the
+    count over lattice occupancies: in-line 10 two-stroke 9!, in-line 8 four-stroke 7!/2³."""
+    from balance_cli import cranksearch
+
+    for n, P, cap, expected in ((10, 10, 1, math.factorial(9)), (8, 4, 2, 630)):
+        problem = cranksearch._Problem(n, P, 360.0 / P, np.zeros(n), cap, [[0]] * n, None,
+                                       None, False, False, 1 + (n - 1) // 2)
+        assert cranksearch._count_cranks(problem) == expected
+        assert cranksearch._count_by_occupancy(problem) == expected
+
+
+def test_a_top_beyond_what_can_be_held_is_refused(tmp_path):
+    """Item 4: --top 100000 on an in-line 10 reached 100 % and then grew past 7 GB."""
+    template = tmp_path / "i10.toml"
+    template.write_text(inline_template_text(10), encoding="utf-8")
+    before = snapshot(tmp_path)
+    result = invoke("search", template, "--objective", "M1", "--top", "100000")
+    check_refused(result, 1, "--top must be a whole number from 1 to 1,000, got 100000", before,
+                  tmp_path)
+
+
+def test_the_pool_of_best_scores_is_linear_in_its_size():
+    """Item 4's other half: the pool sorted every score at every offer, quadratic in --top.
+    Offering 200 000 distinct scores to a pool of 1000 now takes well under a second, and its
+    threshold is the 1000th smallest score offered."""
+    import time
+
+    from balance_cli import cranksearch
+
+    class Plain:
+        def orbit_key(self, crank):
+            return crank
+
+    scores = np.random.default_rng(1).permutation(200_000) / 200_000
+    pool = cranksearch._Pool(Plain(), 1000)
+    started = time.perf_counter()
+    for i, score in enumerate(scores):
+        pool.offer(float(score), (i,))
+    assert time.perf_counter() - started < 2.0
+    kept = sorted(pool.best.values())[:1000]
+    np.testing.assert_allclose(kept, np.arange(1000) / 200_000, rtol=0, atol=1e-15)
+
+
+@pytest.mark.parametrize("weight", [math.nan, math.inf, -1.0, 0.0, "1", True])
+def test_search_terms_with_a_weight_that_is_no_bound_are_refused(weight):
+    """Items 6 and 7: NaN or inf returned nothing and claimed exhaustive; a negative weight
+    returned 7.0 where √52 exists (the bound assumes positive weights)."""
+    import balance_cli as balance
+    from balance_cli.cranksearch import Term
+    from balance_cli.errors import AnalysisError
+
+    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    with pytest.raises(AnalysisError) as caught:
+        search_api(template, [Term("M", 1), Term("M", 2, weight=weight)])
+    assert caught.value.parameter == "objective"
+    assert "M2: the weight must be a positive number" in str(caught.value)
+
+
+def test_workers_are_capped_at_what_helps_and_reported_as_run():
+    """Rough edge: --workers 1000 reported 1000 workers while about 460 processes ran, and
+    took 4.5 s instead of 1 s."""
+    import balance_cli as balance
+    from balance_cli.cranksearch import _cores, search
+
+    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    found = search(template, "M1", top=2, workers=1000)
+    assert 1 <= found.workers <= _cores()
+    assert [a.firing_order for a in found.arrangements] == \
+        [a.firing_order for a in search_api(template, "M1", top=2).arrangements]
+
+
+def test_heuristic_with_a_scheduler_names_the_flags():
+    result = invoke("search", TEMPLATES / "inline-6-2stroke.toml", "--heuristic", "--scheduler",
+                    "tcp://127.0.0.1:1")
+    assert result.exit_code == 1
+    assert result.stderr.endswith(": --scheduler applies to the exhaustive search, but the "
+                                  "heuristic search (--heuristic) runs in this process: leave "
+                                  "out one of the two\n")
+
+
+def test_ctrl_c_in_a_multi_process_search_prints_no_worker_traceback(tmp_path):
+    """Rough edge: Ctrl-C (SIGINT to the whole process group, as a terminal sends it) printed
+    stray 'Process ForkPoolWorker-N:' tracebacks. Now one 'Aborted!' from the command."""
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    template = tmp_path / "i13.toml"
+    template.write_text(inline_template_text(13), encoding="utf-8")
+    code = ("import sys; from balance_cli import cranksearch as c; "
+            "c._cores = lambda: 2; "   # two processes even on a one-core machine
+            "from balance_cli.cli import main; sys.exit(main())")
+    process = subprocess.Popen([sys.executable, "-c", code, "search", str(template),
+                                "--objective", "M1", "--workers", "2"],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               start_new_session=True)
+    # interrupt once the workers run (the search of an in-line 13 takes seconds after they
+    # start): the parent's children, as Linux lists them
+    children = Path(f"/proc/{process.pid}/task/{process.pid}/children")
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and process.poll() is None:
+        if children.exists() and len(children.read_text().split()) >= 2:
+            break
+        time.sleep(0.05)
+    time.sleep(0.3)
+    os.killpg(process.pid, signal.SIGINT)
+    out, err = process.communicate(timeout=60)
+    assert process.returncode == 1, (out, err)
+    assert "Traceback" not in err and "ForkPoolWorker" not in err, err
+    assert err.strip() == "Aborted!", err
+
+
+def flat_torque_file(path, variation=1e-6, mean=1000.0):
+    """A torque varying by ``variation`` of its mean, order 2 over a 720° cycle, every 2°."""
+    angles = np.arange(0.0, 720.0, 2.0)
+    values = mean * (1 + variation * np.sin(2 * np.radians(angles)))
+    path.write_text("angle_deg,torque_Nm\n" + "".join(f"{float(a)!r},{float(v)!r}\n"
+                                                      for a, v in zip(angles, values)),
+                    encoding="utf-8")
+    return path
+
+
+def strict_json(text):
+    """JSON as the standard reads it: Infinity and NaN are not numbers there."""
+    def refuse(constant):
+        raise AssertionError(f"{constant} is not JSON")
+    return json.loads(text, parse_constant=refuse)
+
+
+@pytest.mark.parametrize("inertia, speed", [("1e6 kg*m^2", "1e5 rpm"), ("1e9 kg*m^2", "1e6 rpm")])
+def test_a_steadiness_beyond_rounding_is_finite_and_ordered(tmp_path, inertia, speed):
+    """Item 1: a torque varying by 1e-6 of its mean with a huge flywheel wrote
+    "steadiness": Infinity, and a mean speed outside min..max. Margoulis's r_c =
+    ω²·N·I/(2ΔC) is exact to second order in a fluctuation this small (one harmonic,
+    constant load), so the integrated steadiness must equal it, ΔC = 2A of the sine; the
+    file's 2° steps, read as linear, flatten the sine by (2·2°)²/12 ≈ 4e-4."""
+    torque = flat_torque_file(tmp_path / "t.csv")
+    result = invoke("steadiness", "--torque", torque, "--inertia", inertia, "--speed", speed,
+                    "--load", "constant", "--format", "json")
+    assert result.exit_code == 0, result.output
+    document = strict_json(result.stdout)
+    assert document["min_speed_rpm"] <= document["mean_speed_rpm"] <= document["max_speed_rpm"]
+    omega = float(speed.split()[0]) * math.pi / 30
+    closed = omega**2 * 4 * float(inertia.split()[0]) / (2 * 2e-6 * 1000.0)
+    np.testing.assert_allclose(document["steadiness"], closed, rtol=1e-3)
+    table = invoke("steadiness", "--torque", torque, "--inertia", inertia, "--speed", speed,
+                   "--load", "constant")
+    assert table.exit_code == 0 and "inf" not in table.stdout, table.output
+
+
+@pytest.mark.parametrize("load", ["constant", "propeller"])
+def test_a_tiny_fluctuation_is_resolved_by_the_library(load):
+    """The same in the library, with a sampled sine (no file): T = C_m + A·sin 2θ over 720°,
+    μ = 0. For a constant load ω² = ω₀²·(1 − 2A/(2·I·ω₀²)·cos 2θ), so the steadiness is
+    2·I·ω₀²/(2A) to second order in A/(I·ω₀²) ≈ 1e-18; under a propeller the load's own
+    ℓ·ω² adds a relative 1/(r_v²) ≈ 1e-12 only. The integration (linear between 4096
+    samples, trapezoids) is exact to (2·Δθ)²/12 ≈ 3e-6 of the fluctuation."""
+    from balance_cli.flywheel import steadiness
+
+    theta = np.arange(4096) * 4 * np.pi / 4096
+    amplitude, inertia, omega = 1e-3, 1e6, 1e5 * math.pi / 30
+    speed = steadiness(1000.0 + amplitude * np.sin(2 * theta), 720.0, inertia, omega, load)
+    assert speed.min_speed_rad_s <= speed.mean_speed_rad_s <= speed.max_speed_rad_s
+    np.testing.assert_allclose(speed.mean_speed_rad_s, omega, rtol=1e-12)
+    np.testing.assert_allclose(speed.factor, 2 * inertia * omega**2 / (2 * amplitude), rtol=1e-5)
+    strict_json(json.dumps(speed.to_dict()))
+
+
+@pytest.mark.parametrize("bore", [math.nan, math.inf, -0.154, 0.0, "0.154", None])
+def test_torque_checks_the_bore_as_the_command_does(bore):
+    """Item 5: bore_m=nan gave a gas torque of mean 0.0 and NaN extremes, a negative bore was
+    taken as its absolute value and a zero one as no gas."""
+    import balance_cli as balance
+
+    engine = balance.load(CONFIGS / "abc-dragonfly.toml")
+    angles = np.arange(0.0, 720.0, 2.0)
+    curve = balance.PressureCurve(angles, 1e5 + 4e6 * np.exp(-((angles - 10) / 30) ** 2), 720.0)
+    if bore is None:   # the control: the [gas] bore, given explicitly, gives the [gas] torque
+        np.testing.assert_allclose(
+            balance.torque(engine, pressure=curve, bore_m=0.1397, bearings=False).gas.mean,
+            balance.torque(engine, pressure=curve, bearings=False).gas.mean, rtol=1e-12)
+        return
+    with pytest.raises(balance.BalanceError) as caught:
+        balance.torque(engine, pressure=curve, bore_m=bore, bearings=False)
+    assert caught.value.parameter == "bore_m"
+
+
+def test_a_sharp_pressure_curve_warns_that_the_gas_torque_is_not_converged(tmp_path):
+    """Rough edge: a compression ratio of 100 burning in 1° gave a mean gas torque 1.34 %
+    above imep·V_d/(4π) at 256 samples without a word. The work of the cycle fixes the
+    mean: one cylinder, imep 10 bar, V_d = π/4·(80 mm)²·80 mm, so 32.00 N·m exactly."""
+    import warnings
+
+    import balance_cli as balance
+
+    text = ('name = "one"\ncycle = 4\nspeed = "3000 rpm"\ncrank_radius = "40 mm"\n'
+            'rod_length = "140 mm"\n[masses]\nreciprocating = "500 g"\n[gas]\nbore = "80 mm"\n'
+            'compression_ratio = 100\ncombustion_duration = 1\nimep = "10 bar"\n'
+            '[[banks]]\nangle = 0\n[[throws]]\nphase = 0\n')
+    engine = balance.loads(text, "one.toml")
+    exact = 10e5 * math.pi / 4 * 0.08**2 * 0.08 / (4 * math.pi)
+    with pytest.warns(balance.SamplingWarning, match="gas torque is not converged at 256"):
+        coarse = balance.torque(engine, bearings=False)
+    assert abs(coarse.gas.mean / exact - 1) > 1e-2       # the aliasing warned about
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        fine = balance.torque(engine, samples=2048, bearings=False)
+    np.testing.assert_allclose(fine.gas.mean, exact, rtol=1e-5)
+    config = tmp_path / "one.toml"
+    config.write_text(text, encoding="utf-8")
+    result = invoke("torque", config)
+    assert result.exit_code == 0
+    assert result.stderr.startswith("warning: one: the gas torque is not converged"), result.stderr
+    assert "(--samples)" in result.stderr
+
+
+def test_a_target_just_above_one_half_gives_the_least_steadiness():
+    """Rough edge: --target 0.50000001 was 'below the least steadiness (about 0 …)': the
+    value at the very edge where the engine stops. The least is the steadiness just above
+    that edge, and asking for a little more than it must then succeed."""
+    import re
+
+    from balance_cli.errors import AnalysisError
+    from balance_cli.flywheel import flywheel_for, steadiness
+
+    theta = np.arange(720) * 4 * np.pi / 720
+    torque = 100.0 + 200.0 * np.sin(theta / 2)
+    omega = 1000 * math.pi / 30
+    with pytest.raises(AnalysisError) as caught:
+        flywheel_for(0.50000001, torque, 720.0, omega)
+    least = float(re.search(r"\(about ([0-9.e+-]+),", str(caught.value)).group(1))
+    assert 0.5 < least < 5
+    inertia = flywheel_for(least * 1.01, torque, 720.0, omega)
+    np.testing.assert_allclose(steadiness(torque, 720.0, inertia, omega).factor, least * 1.01,
+                               rtol=1e-3)
+
+
+def test_a_configuration_with_a_byte_order_mark_is_read(tmp_path):
+    """Rough edge: a UTF-8 byte-order mark was refused as "Invalid statement (line 1,
+    column 1)"; CSV files accepted it. The same engine with and without the mark compares
+    alike, from a file and from a string."""
+    import balance_cli as balance
+
+    plain = twin(tmp_path, name="plain.toml")
+    marked = tmp_path / "marked.toml"
+    marked.write_bytes(b"\xef\xbb\xbf" + GOOD.encode("utf-8"))
+    before = snapshot(tmp_path)
+    result = invoke("compare", marked, "--format", "json")
+    assert result.exit_code == 0, result.output
+    assert json.loads(result.stdout)["engines"][0]["orders"] == \
+        json.loads(invoke("compare", plain, "--format", "json").stdout)["engines"][0]["orders"]
+    assert snapshot(tmp_path) == before
+    assert balance.loads("\ufeff" + GOOD).name == "test twin"
+    template = tmp_path / "template.toml"
+    template.write_bytes(b"\xef\xbb\xbf" + (TEMPLATES / "inline-6-2stroke.toml").read_bytes())
+    assert balance.load_template(template)[0].n_cylinders == 6
+
+
+def test_progress_covers_the_listed_arrangements_analyses():
+    """Item 4's silence: progress reached 100 % before the listed arrangements were analysed
+    (minutes with a large --top). Now the analyses are counted, and progress ends at its
+    total only when the result is ready."""
+    import balance_cli as balance
+
+    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    calls = []
+    found = search_api(template, "M1", top=5, progress=lambda done, total: calls.append((done, total)))
+    totals = {total for _, total in calls}
+    assert len(totals) == 1
+    total = totals.pop()
+    assert calls[-1][0] == total
+    assert [done for done, _ in calls] == sorted(done for done, _ in calls)
+    # the last five calls are the five analyses, one each
+    assert [done for done, _ in calls[-5:]] == list(range(total - 4, total + 1))
+    assert len(found.arrangements) == 5

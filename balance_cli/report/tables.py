@@ -561,17 +561,22 @@ def torque_tables(results, scale, fmt):
     return "\n".join(out)
 
 
+def _g4(value):
+    # a closed form beyond a double is None in JSON, words here
+    return value if isinstance(value, str) else f"{value:.4g}"
+
+
 def steadiness_text(speed, flywheel_kgm2=None):
     """The speed and steadiness of an engine set, in one paragraph."""
-    margoulis = speed.to_dict()
+    margoulis = {k: ("beyond 1e308" if v is None else v) for k, v in speed.to_dict().items()}
     flywheel = (f"a flywheel of {speed.inertia_kgm2:.5g} kg·m²" if speed.inertia_kgm2 > 0 else
                 "no flywheel (the moving parts' own inertia)")
     text = (f"With {flywheel} and a {speed.load} load: speed "
             f"{margoulis['min_speed_rpm']:.2f} to {margoulis['max_speed_rpm']:.2f} rpm (mean "
             f"{margoulis['mean_speed_rpm']:.2f}), steadiness ω_m/(ω_max − ω_min) = "
-            f"{margoulis['steadiness']:.4g} integrated; Margoulis's closed forms (one harmonic of "
+            f"{_g4(margoulis['steadiness'])} integrated; Margoulis's closed forms (one harmonic of "
             f"order {speed.order:g}, ΔC = {margoulis['torque_range_Nm']:.4g} N·m): r_c = "
-            f"{margoulis['r_c']:.4g}, r_v = {margoulis['r_v']:.4g}, r_h = {margoulis['r_h']:.4g}.")
+            f"{_g4(margoulis['r_c'])}, r_v = {_g4(margoulis['r_v'])}, r_h = {_g4(margoulis['r_h'])}.")
     if flywheel_kgm2 == 0.0:
         text += " The target steadiness needs no flywheel."
     elif flywheel_kgm2 is not None:
@@ -607,13 +612,19 @@ def search_summary(result):
     return lines
 
 
+def _score_text(score):
+    # four decimals read best at the usual sizes; a weight of 1e100 or 1e-10 makes a score
+    # that they would print with 100 digits, or as 0.0000
+    return f"{score:.4f}" if score == 0 or 1e-3 <= abs(score) < 1e6 else f"{score:.6g}"
+
+
 def search_rows(result):
     """Ranking rows: rank, score, phases, firing order, intervals, coefficients, mirror."""
     names, _ = _coefficient_names(result)
     rows = []
     for a in result.arrangements:
         record = a.to_dict()
-        rows.append([str(a.rank), f"{a.score:.4f}",
+        rows.append([str(a.rank), _score_text(a.score),
                      " ".join(f"{round_degrees(p, 3):g}" for p in a.phases_deg),
                      "-".join(map(str, record["firing"]["order"])),
                      _intervals(record["firing"])]
