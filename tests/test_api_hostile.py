@@ -180,6 +180,36 @@ def cases(w):
         ("Engine.cylinders", lambda v: replace(e, cylinders=v), "cylinders", COLLECTIONS),
         ("Engine.firing_order", lambda v: replace(e, firing_order=v), "firing_order",
          [NAN, 3, "1342", (1, 2, 3), (1, 1, 2, 3), (1, 2, 3, 9)]),
+        # issue 17's additions
+        ("Engine.vertical_rad", lambda v: e.replace(vertical_rad=v), "vertical_rad",
+         ["x", NAN, INF, 1e300, [], True]),
+        ("Engine.replace", lambda v: e.replace(**{v: 1.0}), "Engine.replace",
+         ["speed", "noise_floor_n", "_by_number"]),
+        ("Engine.replace.rod_length_m", lambda v: e.replace(rod_length_m=v), "rod_length_m",
+         NUMBERS),
+        ("EngineResult.main_order", lambda v: r.main_order(v), "part",
+         [None, "torque", 3, NAN, [], True]),
+        ("counterweights.shaft_offsets",
+         lambda v: balance.counterweights(e, shaft_orders=[2], shaft_offsets=v), "shaft_offsets",
+         ["x", NAN, 3, [], (NAN, 0.0), (INF, 0.0), (0.1,), (0.1, 0.2, 0.3), ("x", 0.0),
+          {7: (0.1, 0.0)}]),
+        ("sweep.config", lambda v: balance.sweep(v, "speed", ["1000 rpm"]), "config",
+         [None, 3, NAN, [], True]),
+        ("sweep.parameter", lambda v: balance.sweep(CONFIGS / "inline-4-car.toml", v,
+                                                    ["1000 rpm"]), "parameter",
+         [None, 3, NAN, [], "", "no_such_key", "masses", "throws[99].phase"]),
+        ("sweep.values", lambda v: balance.sweep(CONFIGS / "inline-4-car.toml", "speed", v),
+         "values", [None, 3, NAN, [], "1000 rpm", [NAN]]),
+        # a value the key cannot take is refused in the file's words: file, key, value
+        ("sweep.values.speed", lambda v: balance.sweep(CONFIGS / "inline-4-car.toml", "speed", v),
+         "speed = ", [["fast"], ["1000 kg"], ["-5 rpm"], ["1e300 rpm"]]),
+        ("sweep.quantities",
+         lambda v: balance.sweep(CONFIGS / "inline-4-car.toml", "speed", ["1000 rpm"],
+                                 quantities=v), "quantities",
+         [3, NAN, ["F0"], ["X2"], ["F99"], [3], ["F2", "F2"]]),
+        ("sweep.quantities.steadiness",
+         lambda v: balance.sweep(CONFIGS / "inline-4-car.toml", "speed", ["1000 rpm"],
+                                 quantities=v), "inertia_kgm2", [["steadiness"]]),
     ]
 
 
@@ -253,6 +283,12 @@ def test_the_good_values_the_cases_replace_work(world):
     assert abs(forward) + abs(backward) > 0
     assert tq.total.order(np.int64(3)) == tq.total.order(3.0)
     assert r.order(np.int64(2)) is r.order(2)
+    assert e.replace(vertical_rad=np.float64(0.5)).vertical_axis_rad == 0.5
+    assert r.main_order("moment") is None and r.main_order("force")["order"] == 2
+    assert balance.counterweights(e, shaft_orders=[2], shaft_offsets=(0.1, 0.0)).balancer_shafts
+    swept = balance.sweep(str(CONFIGS / "inline-4-car.toml"), "speed", ("1000 rpm", "2000 rpm"),
+                          quantities="F2")
+    assert len(swept.points) == 2
 
 
 @pytest.mark.parametrize("error", ["Series", "PinForce", "EngineResult"])

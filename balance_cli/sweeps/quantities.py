@@ -70,6 +70,9 @@ def quantities_of(names, max_order: int = DEFAULT_MAX_ORDER) -> tuple:
         names = DEFAULT_QUANTITIES
     if isinstance(names, str):
         names = [n.strip() for n in names.split(",")]
+    if not isinstance(names, (list, tuple)):
+        raise SweepError(f"must be quantity names (a list, or one string such as \"F2,M1V\"), "
+                         f"got {names!r}", "quantities")
     names = list(names)
     if not names:
         names = list(DEFAULT_QUANTITIES)
