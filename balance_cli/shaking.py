@@ -168,10 +168,7 @@ class Shaking:
 
     def force(self, upsample=1, skip_forward_first=False):
         """The resultant force over one revolution (all orders), N, on a grid N·upsample."""
-        c = self.force_coefficients.copy()
-        if skip_forward_first:
-            c[1] = 0.0
-        return synthesize(c, upsample)
+        return _over_revolution(self.force_coefficients, upsample, skip_forward_first)
 
     def largest_force(self, skip_forward_first=False) -> float:
         """Largest magnitude of the resultant force over a revolution, N."""
@@ -179,10 +176,7 @@ class Shaking:
 
     def moment(self, upsample=1, skip_forward_first=False):
         """The free moment over one revolution (all orders), N·m, on a grid N·upsample."""
-        c = self.moment_coefficients.copy()
-        if skip_forward_first:
-            c[1] = 0.0
-        return synthesize(c, upsample)
+        return _over_revolution(self.moment_coefficients, upsample, skip_forward_first)
 
     def largest_moment(self, skip_forward_first=False) -> float:
         """Largest magnitude of the free moment over a revolution, N·m."""
@@ -266,6 +260,15 @@ class Shaking:
         moment[order] += forward_moment
         moment[-order] += backward_moment
         return Shaking.from_coefficients(force, moment, self.max_order, self.sampling_ok)
+
+
+def _over_revolution(coefficients, upsample, skip_forward_first):
+    """A signal over one revolution from its coefficients, on a grid N·upsample; without its
+    forward first order when an ideal counterweight takes it."""
+    c = coefficients.copy()
+    if skip_forward_first:
+        c[1] = 0.0
+    return synthesize(c, upsample)
 
 
 def shaking_forces(engine: "Engine", samples: int = DEFAULT_SAMPLES,
