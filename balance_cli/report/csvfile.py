@@ -10,7 +10,9 @@ __all__ = ["compare_csv", "balance_csv", "torque_csv", "search_csv"]
 #: key suffix of an SI record -> unit written in the CSV
 _UNITS = (("_kgm", "kg·m"), ("_kg", "kg"), ("_deg", "deg"), ("_m", "m"))
 _ORDER_QUANTITIES = ("force_forward", "force_backward", "force_max", "force_min", "force_axis",
-                     "moment_forward", "moment_backward", "moment_max")
+                     "moment_forward", "moment_backward", "moment_max", "force_vertical",
+                     "force_horizontal", "moment_min", "moment_axis", "moment_vertical",
+                     "moment_horizontal")
 
 
 def _quantity_and_unit(key):
@@ -33,7 +35,7 @@ def compare_csv(comparison, scale):
     writer = csv.writer(buffer, lineterminator="\n")
     fl, ml = scale.column_force, scale.column_moment
     writer.writerow(["engine", "config", "order"]
-                    + [f"{q}_{'deg' if q == 'force_axis' else fl if q.startswith('force') else ml}"
+                    + [f"{q}_{'deg' if q.endswith('_axis') else fl if q.startswith('force') else ml}"
                        for q in _ORDER_QUANTITIES])
     for result, record in zip(comparison.results, comparison.to_dict()["engines"]):
         for order in record["orders"]:
@@ -74,7 +76,8 @@ def balance_csv(balances, scale):
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(["engine", "config", "item", "quantity", "value", "unit"])
-    units = (scale.column_force,) * 4 + ("deg",) + (scale.moment_label,) * 3
+    units = [("deg" if q.endswith("_axis") else scale.column_force if q.startswith("force")
+              else scale.moment_label) for q in _ORDER_QUANTITIES]
     weight_keys = [key for key, _, _ in WEIGHT_COLUMNS]
     for b in balances:
         record = b.to_dict()

@@ -37,12 +37,16 @@ def _axis_text(axis_deg):
 
 
 def order_values(record, unit_n, scale):
-    """Force forward/backward/max/min, axis and moment forward/backward/max of one order's
-    record (``OrderComponents.to_dict``) in display units (the counterweight tables' columns)."""
+    """The CSV columns of one order's record (``OrderComponents.to_dict``) in display units:
+    force forward, backward, max, min, axis; moment forward, backward, max; then (added with
+    format version 2, so older readers keep their columns) force vertical and horizontal,
+    moment min, axis, vertical (pitch) and horizontal (yaw)."""
     f, m = record["force"], record["moment"]
-    return ([scale.force(f[k], unit_n) for k in ("forward_N", "backward_N", "max_N", "min_N")]
-            + [f["axis_deg"]]
-            + [scale.moment(m[k]) for k in ("forward_Nm", "backward_Nm", "max_Nm")])
+    force = lambda key: scale.force(f[key], unit_n)  # noqa: E731
+    return ([force(k) for k in ("forward_N", "backward_N", "max_N", "min_N")] + [f["axis_deg"]]
+            + [scale.moment(m[k]) for k in ("forward_Nm", "backward_Nm", "max_Nm")]
+            + [force("vertical_N"), force("horizontal_N"), scale.moment(m["min_Nm"]),
+               m["axis_deg"], scale.moment(m["vertical_Nm"]), scale.moment(m["horizontal_Nm"])])
 
 
 #: the columns of a part's table: (record key without unit, heading)
