@@ -90,11 +90,14 @@ class EngineResult:
         ``points`` defaults to four times the samples."""
         return self.shaking.locus(order, self.counterweight_cancels_first_order, points)
 
-    def percent_of(self, reference: "EngineResult") -> float | None:
-        """The largest counterweighted resultant as a percentage of ``reference``'s; None when
-        the reference has none (it is below its noise floor)."""
+    def percent_of(self, reference: "EngineResult", absolute: bool = False) -> float | None:
+        """The largest counterweighted resultant as a percentage of ``reference``'s, per
+        cylinder (Tanaka's Part III) or, with ``absolute``, in newtons; None when the reference
+        has none (it is below its noise floor)."""
         if reference.counterweighted_force_n == 0.0:
             return None
+        if absolute:
+            return 100.0 * self.counterweighted_force_n / reference.counterweighted_force_n
         return 100.0 * self.counterweighted_per_cylinder / reference.counterweighted_per_cylinder
 
     def main_order(self, part: str = "force") -> dict | None:
@@ -149,6 +152,7 @@ class EngineResult:
             "counterweighted_resultant_N": self.counterweighted_force_n,
             "counterweighted_resultant_per_cylinder": self.counterweighted_per_cylinder,
             "percent_of_reference": self.percent_of(reference or self),
+            "percent_of_reference_absolute": self.percent_of(reference or self, absolute=True),
             "vertical_deg": math.degrees(engine.vertical_axis_rad),
             "noise_floor_N": engine.noise_floor_n,
             "noise_floor_Nm": engine.noise_floor_nm,

@@ -115,6 +115,11 @@ def _intervals(firing):
     return f"{min(firing['intervals_deg']):.1f} to {max(firing['intervals_deg']):.1f}"
 
 
+def _shortened(name, length=24):
+    """A name short enough for a column heading."""
+    return name if len(name) <= length else name[: length - 1].rstrip() + "…"
+
+
 #: a share of the reference above this many per cent is shown as a ratio (×62, not 6200 %)
 PERCENT_LIMIT = 1000.0
 
@@ -145,30 +150,34 @@ def compare_parts(comparison, scale):
     firing = [[record["name"], str(record["cylinders"]), str(record["cycle"]), record["frame"],
                "-".join(map(str, record["firing"]["order"])), _intervals(record["firing"])]
               for record in records]
+    # per cylinder beside per-cylinder figures (Tanaka's), in newtons beside absolute ones
+    share = "percent_of_reference_absolute" if scale.absolute else "percent_of_reference"
     summary = []
     for record, unit_n in zip(records, units):
         force = lambda v, u=unit_n: scale.force(v, u)  # noqa: E731
         summary.append([record["name"], figure(force(record["counterweighted_resultant_N"])),
-                        _share_text(record["percent_of_reference"]),
+                        _share_text(record[share]),
                         _main_text(record["main_force_order"], force,
                                    record["counterweighted_resultant_N"]),
                         figure(scale.moment(record["counterweighted_moment_Nm"])),
                         _main_text(record["main_moment_order"], scale.moment,
                                    record["counterweighted_moment_Nm"])])
-    notes = ["Largest: the resultant's largest magnitude over a revolution, all orders; main "
+    notes = ["%: of the reference engine's largest force"
+             + (", in newtons." if scale.absolute else ", per cylinder (Tanaka's Part III)."),
+             "Largest: the resultant's largest magnitude over a revolution, all orders; main "
              "order: the order with the largest ellipse, its max and direction (rotating: a "
              "circle, turning with the crank (forward) or against it (backward)). A turning crank's ideal counterweight has taken the forward first order of "
              "force and moment away (a rotary's crank does not turn)."]
-    if any(record["percent_of_reference"] is None for record in records):
+    if any(record[share] is None for record in records):
         notes.append("n/a: the reference engine has no resultant to compare with.")
-    if any((record["percent_of_reference"] or 0.0) > PERCENT_LIMIT for record in records):
+    if any((record[share] or 0.0) > PERCENT_LIMIT for record in records):
         notes.append(f"×: a multiple of the reference's resultant, where it is above "
                      f"{PERCENT_LIMIT:.0f} %.")
     fl, ml = scale.force_label, scale.moment_label
     return order_parts(entries, scale, comparison.samples) + [
         ("Firing", ["Engine", "Cyl", "Cycle", "Frame", "Firing order", "Intervals (°)"], firing, ""),
         ("Largest free force and moment (after an ideal crankshaft counterweight)",
-         ["Engine", f"Largest F ({fl})", f"% of {comparison.reference.engine.name}",
+         ["Engine", f"Largest F ({fl})", f"% of {_shortened(comparison.reference.engine.name)}",
           f"Main F order: max ({fl}), direction", f"Largest M ({ml})",
           f"Main M order: max ({ml}), direction"],
          summary, " ".join(notes)),
