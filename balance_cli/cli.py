@@ -31,7 +31,7 @@ from .report.junit import junit_xml
 from .report.tables import (balance_tables, compare_tables, list_table, regression_tables,
                             search_tables, show_table, steadiness_text, torque_tables)
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings
-from .units import UNIT_SYSTEMS, parse_quantity
+from .units import UNIT_SYSTEMS, parse_quantity, rad_s_to_rpm
 
 __all__ = ["main"]
 
@@ -254,12 +254,21 @@ def compare(paths, samples, max_order, absolute, units, speed, reference, fmt, o
         comparison = comparison_of(results, reference)
     scale = Scale.of(absolute, units)
     if fmt == "json":
-        text = to_json(comparison.to_dict())
+        text = to_json(_compare_document(comparison, engines if speed else None))
     elif fmt == "csv":
         text = compare_csv(comparison, scale)
     else:
         text = compare_tables(comparison, scale, fmt)
     _write(output, text)
+
+
+def _compare_document(comparison, overridden=None):
+    """compare's JSON; with the engines of a --speed run, the speed it imposed, so that
+    balance regress analyses them again at that speed."""
+    document = comparison.to_dict()
+    if overridden:
+        document["speed_override_rpm"] = rad_s_to_rpm(overridden[0].speed_rad_s)
+    return document
 
 
 def _planes(text):
@@ -713,7 +722,9 @@ def regress(baseline, paths, rtol, update, fmt, units, output):
         refuse_inputs([output], files + [Path(baseline)])
         check_rtol(rtol)
     _settings(document["samples"], document["max_order"])
-    results = _analyse_all(_load_all(files), document["samples"], document["max_order"])
+    override = document.get("speed_override_rpm")
+    engines = _load_all(files, None if override is None else f"{override!r} rpm")
+    results = _analyse_all(engines, document["samples"], document["max_order"])
     with _reported():
         comparison = compared_like(document, results)
         regression = regression_of(document, comparison, rtol, str(baseline))
@@ -725,7 +736,7 @@ def regress(baseline, paths, rtol, update, fmt, units, output):
         text = regression_tables(regression, fmt, Scale.of(True, units))
     _write(output, text)
     if update:
-        _write(baseline, to_json(comparison.to_dict()))
+        _write(baseline, to_json(_compare_document(comparison, engines if override else None)))
         click.echo(f"wrote {baseline}", err=True)
         return
     if regression.moved:

@@ -128,6 +128,9 @@ def check_baseline(document, path="<baseline>"):
     for key in ("samples", "max_order"):
         if isinstance(document.get(key), bool) or not isinstance(document.get(key), int):
             _fail(path, f"has no whole number {key!r}")
+    override = document.get("speed_override_rpm")
+    if override is not None and not (_number(override) and override > 0):
+        _fail(path, f"records a speed_override_rpm that is not a speed ({override!r})")
     try:
         check_settings(document["samples"], document["max_order"])
     except AnalysisError as exc:
@@ -283,6 +286,12 @@ def _engine_rows(name, a, b, rtol):
     number("unit_force_N", a["unit_force_N"], b["unit_force_N"], NOISE_FLOOR * scale)
     for key in ("largest_resultant_N", "counterweighted_resultant_N"):
         number(key, a.get(key), b.get(key), NOISE_FLOOR * scale)
+    # version 2's quantities, where both documents have them (a version-1 baseline has not)
+    for key in ("largest_moment_Nm", "counterweighted_moment_Nm"):
+        if key in a and key in b:
+            number(key, a[key], b[key], NOISE_FLOOR * scale)
+    if "vertical_deg" in a and "vertical_deg" in b:
+        number("vertical_deg", a["vertical_deg"], b["vertical_deg"], PHASE_CHANGE_DEG, "phase")
     fa, fb = a["firing"], b["firing"]
     same("firing order", fa.get("order"), fb.get("order"))
     if fa.get("order") == fb.get("order"):
@@ -301,7 +310,13 @@ def _engine_rows(name, a, b, rtol):
             x, y = orders_a[k][part], orders_b[k][part]
             for key in (f"forward_{unit}", f"backward_{unit}", f"max_{unit}", f"min_{unit}"):
                 number(f"{part}.{key}", x.get(key), y.get(key), NOISE_FLOOR * scale, order=k)
-            for key in ("forward", "backward"):
+            for key in (f"vertical_{unit}", f"horizontal_{unit}"):
+                if key in x and key in y:
+                    number(f"{part}.{key}", x[key], y[key], NOISE_FLOOR * scale, order=k)
+            for key in ("forward", "backward", "vertical", "horizontal"):
+                if key in ("vertical", "horizontal") and (f"{key}_{unit}" not in x
+                                                          or f"{key}_{unit}" not in y):
+                    continue
                 size = max(x.get(f"{key}_{unit}", 0.0), y.get(f"{key}_{unit}", 0.0))
                 if size >= PHASE_FLOOR * scale:
                     number(f"{part}.{key}_deg", x.get(f"{key}_deg"), y.get(f"{key}_deg"),

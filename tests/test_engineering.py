@@ -304,3 +304,32 @@ def test_search_takes_units_and_speed(tmp_path):
         2 * base * math.pi / 30, rel=1e-12)
     table = run("search", template, "--top", "1", "--units", "kN")
     assert table.exit_code == 0 and "(kN·m)" in table.output
+
+
+def test_regress_checks_the_version_2_quantities(twin, tmp_path):
+    """Turning the engine's vertical by 60° moves no ellipse but every vertical and horizontal
+    component: the twin's couple m·r·ω²·d was all pitch and is now cos 60° = ½ of it pitch."""
+    baseline = tmp_path / "base.json"
+    baseline.write_text(run("compare", twin, "--format", "json").output, encoding="utf-8")
+    turned = tmp_path / "turned.toml"
+    turned.write_text("vertical = 60\n" + TWIN, encoding="utf-8")
+    out = run("regress", baseline, turned, "--format", "json")
+    assert out.exit_code == 1
+    rows = {(r["order"], r["quantity"]): r for r in json.loads(out.output)["rows"]}
+    assert_allclose(rows[(1, "moment.vertical_Nm")]["now"],
+                    0.5 * rows[(1, "moment.vertical_Nm")]["baseline"], rtol=1e-12)
+    assert (None, "vertical_deg") in rows and (1, "moment.max_Nm") not in rows
+
+
+def test_a_baseline_written_at_another_speed_is_checked_at_that_speed(twin, tmp_path):
+    baseline = tmp_path / "fast.json"
+    baseline.write_text(run("compare", twin, "--speed", "5000 rpm", "--format", "json").output,
+                        encoding="utf-8")
+    assert json.loads(baseline.read_text(encoding="utf-8"))["speed_override_rpm"] == 5000.0
+    out = run("regress", baseline)
+    assert out.exit_code == 0 and "nothing moved" in out.output and "1 engine checked" in out.output
+    broken = json.loads(baseline.read_text(encoding="utf-8"))
+    broken["speed_override_rpm"] = -1
+    baseline.write_text(json.dumps(broken), encoding="utf-8")
+    out = run("regress", baseline)
+    assert out.exit_code == 1 and "speed_override_rpm" in out.output

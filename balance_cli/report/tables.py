@@ -489,8 +489,8 @@ def regression_tables(regression, fmt, scale=None):
     safe = _safe(fmt)
     checked = len(regression.checked)
     if not regression.moved:
-        return (f"{heading}balance regress: nothing moved beyond tolerance ({checked} engines "
-                f"checked against {safe(regression.baseline_path)})\n")
+        return (f"{heading}balance regress: nothing moved beyond tolerance ({checked} engine"
+                f"{'s' if checked != 1 else ''} checked against {safe(regression.baseline_path)})\n")
     moved_engines = len({row.engine for row in regression.rows})
     out = [f"{heading}balance regress: {len(regression.rows)} quantities moved in {moved_engines} "
            f"of {checked} engines; {len(regression.added)} added, {len(regression.removed)} "
