@@ -333,3 +333,22 @@ def test_a_baseline_written_at_another_speed_is_checked_at_that_speed(twin, tmp_
     baseline.write_text(json.dumps(broken), encoding="utf-8")
     out = run("regress", baseline)
     assert out.exit_code == 1 and "speed_override_rpm" in out.output
+
+
+def test_one_plane_shafts_say_the_couple_is_left(tmp_path):
+    """A V-twin with its two cylinders 40 mm apart on one throw: one correction plane (the
+    throw's) cannot hold the two masses a couple needs; the output says so, and with two
+    planes the order-1 moment is gone."""
+    config = tmp_path / "vt.toml"
+    config.write_text(TWIN.replace('firing_order = [1, 2]\n', "").replace(
+        "[[banks]]\nangle = 0\n", "[[banks]]\nangle = -22.5\n[[banks]]\nangle = 22.5\n").split(
+        "[[throws]]")[0] + '[[throws]]\nphase = 0\n\n[[cylinders]]\nnumber = 1\nbank = 1\n'
+        'throw = 1\nz = "0 mm"\n[[cylinders]]\nnumber = 2\nbank = 2\nthrow = 1\nz = "40 mm"\n',
+        encoding="utf-8")
+    one = run("counterweight", config, "--max-order", "1", "--shafts", "1")
+    assert one.exit_code == 0, one.output
+    assert "One correction plane cannot cancel a couple" in one.output
+    two = run("counterweight", config, "--max-order", "1", "--shafts", "1",
+              "--planes", "0 mm,40 mm", "--format", "json")
+    left = json.loads(two.output)["engines"][0]["after_shafts"]["orders"][0]
+    assert left["moment"]["max_Nm"] == 0.0 and left["force"]["max_N"] == 0.0

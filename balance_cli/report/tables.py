@@ -414,6 +414,14 @@ def balance_tables(balances, scale, fmt):
             out += _rolling_lines(record, scale, fmt)
             out += _left(record["name"], "shafts", record["after_shafts"]["orders"], n_unit,
                          scale, fmt)
+            left = [k for k in record.get("shaft_orders", [])
+                    if record["after_shafts"]["orders"][k - 1]["moment"]["max_Nm"] > 0.0]
+            if left and len(record["counterweights"]) < 2:
+                out += [f"One correction plane cannot cancel a couple: order"
+                        f"{'s' if len(left) > 1 else ''} {', '.join(map(str, left))} keep"
+                        f"{'' if len(left) > 1 else 's'} a free moment. Give two planes "
+                        "(--planes A,B, throws or axial positions) to put shafts' masses in "
+                        "both.", ""]
         if "test_masses_kg" in record:
             rows = [[str(i + 1), figure(m)] for i, m in enumerate(record["test_masses_kg"])]
             out += ["Balancing-machine test masses (hang on each crank pin; the crankshaft's own "
