@@ -13,7 +13,7 @@ from .kinematics import check_assembly
 from .model import Engine
 from .shaking import (DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, OrderComponents, Shaking, part_values,
                       shaking_forces)
-from .units import rad_s_to_rpm
+from .units import rad_s_to_rpm, wrap_degrees
 
 __all__ = ["EngineResult", "Comparison", "analyse", "compare", "find_reference"]
 
@@ -153,7 +153,7 @@ class EngineResult:
             "counterweighted_resultant_per_cylinder": self.counterweighted_per_cylinder,
             "percent_of_reference": self.percent_of(reference or self),
             "percent_of_reference_absolute": self.percent_of(reference or self, absolute=True),
-            "vertical_deg": math.degrees(engine.vertical_axis_rad),
+            "vertical_deg": wrap_degrees(math.degrees(engine.vertical_axis_rad)),
             "noise_floor_N": engine.noise_floor_n,
             "noise_floor_Nm": engine.noise_floor_nm,
             "largest_moment_Nm": self.largest_moment_nm,

@@ -538,7 +538,7 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
                         lambda e: torque_of(e, samples, max_order, bearings=False))
     with _reported(), _drawing():
         written = write_report(target, comparison, balances, star_order, with_html, torques,
-                               Scale(False, units))
+                               Scale.of(False, units))
     for path in written:
         click.echo(f"wrote {path}", err=True)
 

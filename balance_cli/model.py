@@ -22,6 +22,9 @@ __all__ = ["Throw", "Cylinder", "Engine", "Parts", "GasCycle", "FRAMES"]
 #: "fixed": the crank turns in a fixed crankcase; "rotary": the crankcase and its cylinders
 #: turn about a fixed crank
 FRAMES = ("fixed", "rotary")
+#: banks whose unit vectors add up to less than this fraction of their number have no
+#: bisector worth calling vertical (within about 6° of a boxer's 180°)
+BISECTOR_FLOOR = 0.05
 #: a name is shown in table cells and picture titles
 MAX_NAME_LENGTH = 120
 
@@ -323,12 +326,13 @@ class Engine:
     def vertical_axis_rad(self) -> float:
         """The direction called vertical, rad from the reference axis: ``vertical_rad`` when
         given; else the bisector of the banks (the cylinder axis of an in-line engine, the
-        middle of a V or W); banks whose directions add up to nothing (a radial, a boxer)
-        leave the reference axis itself."""
+        middle of a V or W); banks whose directions add up to (almost) nothing — less than
+        :data:`BISECTOR_FLOOR` of their number, a radial, a boxer — leave the reference axis
+        itself."""
         if self.vertical_rad is not None:
             return self.vertical_rad
         total = self._banks_sum()
-        if abs(total) < 1e-9 * len(self.bank_angles_rad):
+        if self._banks_cancel(total):
             return 0.0
         return math.atan2(total.imag, total.real)
 
@@ -337,12 +341,17 @@ class Engine:
         """Where :attr:`vertical_axis_rad` comes from, in words."""
         if self.vertical_rad is not None:
             return "given"
-        if abs(self._banks_sum()) < 1e-9 * len(self.bank_angles_rad):
-            return "the reference axis: the banks' directions add up to nothing"
+        if self._banks_cancel(self._banks_sum()):
+            return "the reference axis: the banks' directions add up to (almost) nothing"
         return "the banks' bisector" if len(self.bank_angles_rad) > 1 else "the cylinder axis"
 
     def _banks_sum(self):
         return sum(complex(math.cos(a), math.sin(a)) for a in self.bank_angles_rad)
+
+    def _banks_cancel(self, total):
+        # banks that almost cancel (a boxer at 0° and 179°, a Y a hair off 120°) have a
+        # bisector that swings with the last decimal: the reference axis is steadier
+        return abs(total) < BISECTOR_FLOOR * len(self.bank_angles_rad)
 
     @property
     def n_cylinders(self) -> int:

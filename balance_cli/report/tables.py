@@ -9,7 +9,8 @@ import math
 import numpy as np
 from tabulate import tabulate
 
-from ..units import kg_to_g, m_to_mm, pa_to_bar, rad_s_to_rpm, round_degrees, significant
+from ..units import (kg_to_g, m_to_mm, pa_to_bar, rad_s_to_rpm, round_degrees, significant,
+                     wrap_degrees)
 from .display import Scale, figure, markdown_text, plain_text
 
 __all__ = ["render", "compare_parts", "compare_tables", "part_rows", "part_headers", "order_parts",
@@ -247,7 +248,7 @@ def show_table(engine, firing):
         f"{rad_s_to_rpm(engine.speed_rad_s):g} rpm",
         f"  crank radius:  {_mm(engine.crank_radius_m)}, rod {_mm(engine.rod_length_m)}, "
         f"pin offset {_mm(engine.pin_offset_m)}",
-        f"  vertical:      {math.degrees(engine.vertical_axis_rad):g}° from the reference axis "
+        f"  vertical:      {wrap_degrees(math.degrees(engine.vertical_axis_rad)):g}° from the reference axis "
         f"({engine.vertical_origin})",
         f"  masses:        reciprocating {kg_to_g(engine.mean_reciprocating_kg):g} g mean per "
         f"cylinder, rotating {kg_to_g(engine.rotating_kg):g} g and crank "
