@@ -31,7 +31,7 @@ from .report.junit import junit_xml
 from .report.tables import (balance_tables, compare_tables, list_table, regression_tables,
                             search_tables, show_table, steadiness_text, torque_tables)
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings
-from .units import UNIT_SYSTEMS, parse_quantity, rad_s_to_rpm
+from .units import UNIT_SYSTEMS, parse_quantity, rad_s_to_rpm, unit_system
 
 __all__ = ["main"]
 
@@ -57,7 +57,28 @@ _OUTPUT = click.option("--output", "-o", default="-", metavar="FILE", show_defau
                        help="Write here (atomically) instead of standard output.")
 _ABSOLUTE = click.option("--absolute", is_flag=True,
                          help="Forces in newtons (or --units) instead of per cylinder (× m_rec·r·ω²·n).")
-_UNIT_CHOICE = click.Choice(list(UNIT_SYSTEMS), case_sensitive=False)
+class _Units(click.ParamType):
+    """--units: a system of units in any letter case that has one reading (kn is kN; mn, milli-
+    or meganewtons, is refused naming both), and the ``extra`` words a command allows."""
+
+    def __init__(self, extra=()):
+        self.extra = tuple(extra)
+        self.name = "|".join(self.extra + tuple(UNIT_SYSTEMS))
+
+    def get_metavar(self, param, *args, **kwargs):
+        return "[" + self.name + "]"
+
+    def convert(self, value, param, ctx):
+        for word in self.extra:
+            if isinstance(value, str) and value.strip().lower() == word:
+                return word
+        try:
+            return unit_system(value)
+        except BalanceError as exc:
+            self.fail(exc.problem, param, ctx)
+
+
+_UNIT_CHOICE = _Units()
 _UNITS = click.option("--units", type=_UNIT_CHOICE, default="N", show_default=True,
                       help="Units of absolute forces and of moments, one system: N and N·m, kN and "
                            "kN·m, MN and MN·m, kgf and kgf·m, lbf and lbf·ft; any but N implies "
@@ -441,8 +462,7 @@ def _drawing():
 @click.option("--of", "quantity", type=click.Choice(["force", "moment"]), default=None,
               help="locus and star: the resultant force (the default) or the free moment "
                    "about the engine's mid-length, N·m.")
-@click.option("--units", type=click.Choice(["per-cylinder"] + list(UNIT_SYSTEMS), case_sensitive=False),
-              default=None,
+@click.option("--units", type=_Units(["per-cylinder"]), default=None,
               help="spectrum: units of the forces, default per-cylinder (N, kN, MN, kgf or lbf also "
                    "put moments in N·m, kN·m, MN·m, kgf·m or lbf·ft); torque: N (N·m, the "
                    "default), kN, MN, kgf or lbf.")

@@ -118,28 +118,55 @@ def parse_quantity(text, dimension):
     return value
 
 
+#: letters whose case changes a unit's meaning, in words
+_CASE_SENSITIVE = {"m": "small m is milli (or metre), capital M mega",
+                   "p": "small p is pico, capital P peta (or pascal)"}
+
+
+#: what may follow a prefix letter: the base symbols a milli-, mega-, pico- or peta- could
+#: stand before in balance's units (metre, gram, pascal, bar, newton), or nothing
+_PREFIXED = {"", "m", "g", "pa", "bar", "n"}
+
+
+def _case_clash(written, meant):
+    """The words for the first letter whose case differs between ``written`` and the unit
+    ``meant`` where it reads as a prefix (m/M, p/P at the start of a unit or after * or /,
+    before a base symbol), or None: "RPM" is rpm and "PSI" psi, but "Mm" could be
+    millimetres or megametres."""
+    for i, (a, b) in enumerate(zip(written, meant)):
+        if a == b or a.lower() not in _CASE_SENSITIVE or (i and written[i - 1] not in "*/"):
+            continue
+        rest = re.split(r"[*/^]", written[i + 1:])[0].lower()
+        if rest in _PREFIXED:
+            return _CASE_SENSITIVE[a.lower()]
+    return None
+
+
 def _any_case(unit, factors, text):
     """The unit of ``factors`` written in other letter cases ("RPM", "Kg"), when that reading is
-    the only one: a capital M or P against a small one (or the reverse) is mega against milli
-    (pico against peta) and is refused naming both readings."""
+    the only one: a letter whose case is a prefix's meaning (m/M, p/P) is refused, naming
+    both readings."""
     matches = [u for u in factors if u.lower() == unit.lower()]
     if len(matches) != 1:
         return unit
-    match = matches[0]
-    if match[0] != unit[0] and match[0] in "mMpP":
-        prefixes = {"m": "milli", "M": "mega", "p": "pico", "P": "peta"}
-        other = match[0].swapcase() + match[1:]
-        raise UnitError(f"{unit!r} in {text!r} could be {match} ({prefixes[match[0]]}) or {other} "
-                        f"({prefixes[other[0]]}); write {match!r} if that is meant")
-    return match
+    clash = _case_clash(unit, matches[0])
+    if clash:
+        raise UnitError(f"{unit!r} in {text!r} could be read two ways ({clash}); write "
+                        f"{matches[0]!r} if that is meant")
+    return matches[0]
 
 
 def unit_system(name):
-    """The display units named ``name``, in any letter case ("kn" is kN): the canonical name,
-    a key of :data:`UNIT_SYSTEMS`."""
+    """The display units named ``name``, in any letter case where that is one reading ("kn" is
+    kN; "mn" could be milli- or meganewtons and is refused): the canonical name, a key of
+    :data:`UNIT_SYSTEMS`."""
     if isinstance(name, str):
         matches = [u for u in UNIT_SYSTEMS if u.lower() == name.strip().lower()]
         if matches:
+            clash = _case_clash(name.strip(), matches[0])
+            if clash:
+                raise UnitError(f"{name!r} could be read two ways ({clash}); write "
+                                f"{matches[0]!r} if that is meant", "units")
             return matches[0]
     raise UnitError(f"must be one of {', '.join(UNIT_SYSTEMS)} (with moments in "
                     f"{', '.join(m for _, m, _ in UNIT_SYSTEMS.values())}), got {name!r}", "units")

@@ -163,7 +163,7 @@ def test_a_small_couple_above_the_engines_own_floor_is_reported():
     ("lbf", 4.4482216152605, 1.3558179483314004),
 ])
 def test_unit_systems_against_hand_conversion(units, force, moment):
-    scale = Scale.of(False, units.upper() if units != "MN" else "mn")
+    scale = Scale.of(False, units.upper() if units != "MN" else "Mn")
     assert scale.units == units
     assert_allclose(scale.force(force * 123.0, 1.0), 123.0 if units != "N" else 123.0 * force,
                     rtol=1e-15)
@@ -208,10 +208,20 @@ def test_significant_figures():
 def test_unit_names_in_any_case_unless_ambiguous():
     assert parse_quantity("1650 RPM", "angular speed") == pytest.approx(1650 * math.pi / 30)
     assert parse_quantity("2 KG", "mass") == 2.0
-    for text, readings in (("5 Mm", ("mm", "Mm")), ("5 mpa", ("MPa", "mPa"))):
+    # 1 psi = 6894.757293168 Pa; P here is no prefix
+    assert parse_quantity("1 PSI", "pressure") == pytest.approx(6894.757293168, rel=1e-15)
+    for text, dimension, meant in (("5 Mm", "length", "'mm'"), ("5 mpa", "pressure", "'MPa'"),
+                                   ("0.05 M", "length", "'m'"), ("5 MBAR", "pressure", "'mbar'"),
+                                   ("1 kg*Mm^2", "moment of inertia", "'kg*mm^2'")):
         with pytest.raises(balance.UnitError) as caught:
-            parse_quantity(text, "length" if "m" == text[-1].lower() else "pressure")
-        assert all(r in str(caught.value) for r in readings)
+            parse_quantity(text, dimension)
+        assert "milli" in str(caught.value) and "mega" in str(caught.value)
+        assert f"write {meant}" in str(caught.value)
+    for name in ("mn", "mN"):
+        with pytest.raises(balance.UnitError, match="milli"):
+            Scale.of(False, name)
+    out = run("compare", "configs/inline-4-car.toml", "--units", "mn")
+    assert out.exit_code == 2 and "milli" in out.output and "Traceback" not in out.output
 
 
 def test_percentages_beyond_a_thousand_are_ratios(twin):

@@ -145,7 +145,7 @@ OPTION_CASES = [
     ("max-order-zero", ["compare", "--max-order", "0"], 1, "--max-order must be at least 1"),
     ("max-order-negative", ["compare", "--max-order", "-3"], 1, "--max-order must be at least 1"),
     ("reference-none", ["compare", "--reference", "Zeppelin"], 1, "--reference 'Zeppelin' matches no engine"),
-    ("units-unknown", ["compare", "--units", "dyn"], 2, "'dyn' is not one of"),
+    ("units-unknown", ["compare", "--units", "dyn"], 2, "must be one of N, kN, MN, kgf, lbf"),
     ("format-unknown", ["compare", "--format", "xml"], 2, "'xml' is not one of"),
     ("balance-factor-nan", ["counterweight", "--balance-factor", "nan"], 1,
      "--balance-factor must be a fraction of the reciprocating masses from 0 to 1, got nan"),
