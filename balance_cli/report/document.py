@@ -16,7 +16,7 @@ __all__ = ["PICTURES", "blocks"]
 PICTURES = [
     ("locus.svg", "locus", "Locus of the resultant force per cylinder",
      "All orders, after an ideal crankshaft counterweight (none on a rotary), in units of "
-     "m_rec·r·ω² per cylinder; horizontal across the reference axis, vertical along it "
+     "m_rec·r·ω² per cylinder; drawn across the reference axis (x) and along it (y) "
      "(Tanaka 1925, Fig. 9)."),
     ("spectrum.svg", "spectrum", "Spectrum of orders",
      "Forward (solid) and backward (hatched) parts of each order, forces per cylinder and free "

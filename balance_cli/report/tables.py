@@ -383,8 +383,11 @@ def balance_tables(balances, scale, fmt):
                f"balance factor {factor:g}: rotating masses plus {factor:g} of the reciprocating "
                "ones per throw")
         carrier = "crankcase" if record["frame"] == "rotary" else "crank"
-        out += [f"{heading}{safe(record['name'])}: counterweights on the {carrier}, {how}", "",
-                _record_table(record["counterweights"], WEIGHT_COLUMNS, fmt), ""]
+        out += [f"{heading}{safe(record['name'])}: counterweights on the {carrier}, {how}", ""]
+        if all(w["mass_kg"] == 0.0 for w in record["counterweights"]):
+            out += [f"None needed: the forward first order is already zero on the {carrier}.", ""]
+        else:
+            out += [_record_table(record["counterweights"], WEIGHT_COLUMNS, fmt), ""]
         a = record["antivibrateur"]
         if a is not None:
             out += [f"Antivibrateur on the crank pin, turning at twice crank speed with the crank: "
@@ -449,6 +452,12 @@ def balance_summary(balances):
     return headers, rows
 
 
+def _inertia_text(value_kgm2, reduced_mass):
+    """A reduced mass for a table: rounding noise (a twin's μ at top dead centre, exactly 0,
+    computes as 1e-31) is 0, beside its largest value."""
+    return figure(value_kgm2 if abs(value_kgm2) > 1e-12 * reduced_mass.max_kgm2 else 0.0)
+
+
 def torque_summary(results, scale=None):
     """The report's torques: per engine the mean, largest, smallest and range of the inertia,
     gas ("—" without one), total and frame torques, in ``scale``'s moment unit (default N·m),
@@ -464,7 +473,8 @@ def torque_summary(results, scale=None):
                                                          series.range)])
             rows.append([r.engine.name if i == 0 else "", name] + values)
         mu = r.reduced_mass
-        masses.append([r.engine.name, f"{mu.mean_kgm2:.5g}", f"{mu.min_kgm2:.5g}", f"{mu.max_kgm2:.5g}"])
+        masses.append([r.engine.name] + [_inertia_text(v, mu) for v in
+                                         (mu.mean_kgm2, mu.min_kgm2, mu.max_kgm2)])
     ml = scale.moment_label
     return ((["Engine", "Torque", f"Mean ({ml})", f"Max ({ml})", f"Min ({ml})", f"Range ΔC ({ml})"],
              rows),
@@ -557,8 +567,9 @@ def torque_tables(results, scale, fmt):
         mu = r.reduced_mass
         out += [f"{heading}{safe(engine.name)}: torques at {rad_s_to_rpm(engine.speed_rad_s):g} rpm "
                 f"({engine.cycle}-stroke, period {r.period_deg:g}°)", "",
-                f"Reduced mass μ (kinetic energy ½·μ·ω²): mean {mu.mean_kgm2:.5g}, min "
-                f"{mu.min_kgm2:.5g}, max {mu.max_kgm2:.5g} kg·m².", "",
+                f"Reduced mass μ (kinetic energy ½·μ·ω²): mean {_inertia_text(mu.mean_kgm2, mu)}, "
+                f"min {_inertia_text(mu.min_kgm2, mu)}, max {_inertia_text(mu.max_kgm2, mu)} "
+                "kg·m².", "",
                 render(["Torque", f"Mean ({ml})", f"Max ({ml})", f"Min ({ml})", f"Range ΔC ({ml})"],
                        _torque_rows(r, scale), fmt), ""]
         largest = max(math.hypot(c, s) for _, c, s in r.total.orders) if r.total.orders else 0.0
