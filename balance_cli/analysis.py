@@ -131,12 +131,26 @@ class EngineResult:
         del best["min"], best["sense"]
         return best
 
-    def to_dict(self, reference: "EngineResult | None" = None) -> dict:
+    def power_related_unbalance(self, power_w: float | None = None, orders=(1, 2),
+                                classes=None):
+        """The power related unbalance of this engine (:mod:`balance_cli.marine`): a
+        :class:`~balance_cli.marine.PowerRelatedUnbalance`, or (None, why not) without a
+        power."""
+        # marine balances the crank with counterweight, which builds on this module
+        from .marine import DEFAULT_PRU_CLASSES, power_related_unbalance
+
+        return power_related_unbalance(self, power_w, orders, classes or DEFAULT_PRU_CLASSES)
+
+    def to_dict(self, reference: "EngineResult | None" = None, pru_classes=None,
+                pru_orders=(1, 2)) -> dict:
         """This engine's entry of ``compare --format json`` (SI units; see the README).
 
         ``reference`` is the result the percentage refers to (default: this one, as in the
-        comparison of a single engine).
+        comparison of a single engine); ``pru_classes`` the bounds of the power related
+        unbalance's classes (default the project guides') and ``pru_orders`` the orders it
+        judges.
         """
+        pru, pru_note = self.power_related_unbalance(orders=pru_orders, classes=pru_classes)
         engine = self.engine
         return {
             "name": engine.name,
@@ -160,6 +174,9 @@ class EngineResult:
             "counterweighted_moment_Nm": self.counterweighted_moment_nm,
             "main_force_order": _main_record(self.main_order("force"), "N"),
             "main_moment_order": _main_record(self.main_order("moment"), "Nm"),
+            "power_kW": None if pru is None else pru.power.kilowatts,
+            "pru": None if pru is None else pru.to_dict(),
+            "pru_note": pru_note,
             "sampling_ok": self.shaking.sampling_ok,
             "orders": self.shaking.records(engine),
         }
@@ -270,6 +287,8 @@ class Comparison:
 
     results: tuple
     reference_index: int
+    pru_classes: tuple | None = None
+    pru_orders: tuple = (1, 2)
 
     @property
     def reference(self) -> EngineResult:
@@ -290,13 +309,18 @@ class Comparison:
             "samples": self.samples,
             "max_order": self.max_order,
             "reference": self.reference.engine.name,
-            "engines": [r.to_dict(self.reference) for r in self.results],
+            "engines": [r.to_dict(self.reference, self.pru_classes, self.pru_orders)
+                        for r in self.results],
         }
 
 
-def compare(results: "Iterable[EngineResult]", reference: str | None = None) -> Comparison:
+def compare(results: "Iterable[EngineResult]", reference: str | None = None,
+            pru_classes=None, pru_orders=None) -> Comparison:
     """The comparison of analysed engines (:func:`analyse`, same settings); ``reference`` is
-    the name (or a unique prefix) of the engine the percentages refer to, default the first."""
+    the name (or a unique prefix) of the engine the percentages refer to, default the first;
+    ``pru_classes`` the bounds of the power related unbalance's classes (N·m/kW; default the
+    project guides' 60, 120, 220) and ``pru_orders`` the orders it judges (default 1 and
+    2, those analysed)."""
     results = tuple(items(results, EngineResult, "results"))
     if reference is not None and not isinstance(reference, str):
         raise AnalysisError(f"must be an engine's name (a str) or None, got {reference!r}",
@@ -310,4 +334,16 @@ def compare(results: "Iterable[EngineResult]", reference: str | None = None) -> 
                             "configuration its own name, or compare each file once", "results")
     if len({(r.samples, r.max_order) for r in results}) > 1:
         raise AnalysisError("must all be analysed with the same samples and max_order", "results")
-    return Comparison(results, find_reference(results, reference))
+    if pru_classes is not None:
+        from .marine import check_classes
+
+        pru_classes = check_classes(pru_classes)
+    if pru_orders is None:
+        pru_orders = tuple(k for k in (1, 2) if k <= results[0].max_order)
+    pru_orders = tuple(pru_orders) if isinstance(pru_orders, (list, tuple)) else pru_orders
+    if not isinstance(pru_orders, tuple) or not pru_orders or not all(
+            isinstance(k, int) and not isinstance(k, bool) and 1 <= k <= results[0].max_order
+            for k in pru_orders):
+        raise AnalysisError(f"must be orders from 1 to {results[0].max_order}, got "
+                            f"{pru_orders!r}", "pru_orders")
+    return Comparison(results, find_reference(results, reference), pru_classes, pru_orders)

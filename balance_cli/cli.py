@@ -258,9 +258,19 @@ def show(path):
 @_SPEED
 @click.option("--reference", default=None, metavar="NAME",
               help="Engine the percentages refer to (name or unique prefix); default the first.")
+@click.option("--power", default=None, metavar="POWER",
+              help="The engines' power at the speed analysed (e.g. '14 280 kW', '21 MW', "
+                   "'19 000 hp'), for the power related unbalance; default each file's power "
+                   "(or its [gas] cycle's indicated power).")
+@click.option("--pru-classes", default=None, metavar="A,B,C",
+              help="Bounds of the PRU classes not relevant / unlikely / likely / most likely, "
+                   "N·m/kW  [default: 60,120,220, the project guides'].")
+@click.option("--pru-orders", default=None, metavar="K[,K...]",
+              help="Orders whose moments the power related unbalance judges  [default: 1,2].")
 @_FORMAT
 @_OUTPUT
-def compare(paths, samples, max_order, absolute, units, speed, reference, fmt, output):
+def compare(paths, samples, max_order, absolute, units, speed, reference, power, pru_classes,
+            pru_orders, fmt, output):
     """Compare engines order by order, in the style of Tanaka's Part III.
 
     FILE|DIR...: configuration files, or folders searched recursively for .toml files,
@@ -269,10 +279,12 @@ def compare(paths, samples, max_order, absolute, units, speed, reference, fmt, o
     files = _inputs(paths)
     _guard([output], files)
     _settings(samples, max_order)
-    engines = _load_all(files, speed)
+    classes = None if pru_classes is None else _numbers_option(pru_classes, "--pru-classes")
+    orders = None if pru_orders is None else _orders_option(pru_orders, "--pru-orders")
+    engines = _with_power(_load_all(files, speed), power)
     results = _analyse_all(engines, samples, max_order)
-    with _reported():
-        comparison = comparison_of(results, reference)
+    with _reported(flags={"pru_classes": "--pru-classes", "pru_orders": "--pru-orders"}):
+        comparison = comparison_of(results, reference, classes, orders)
     scale = Scale.of(absolute, units)
     if fmt == "json":
         text = to_json(_compare_document(comparison, engines if speed else None))
@@ -312,14 +324,34 @@ def _planes(text):
     return planes
 
 
-def _orders_option(text):
+def _orders_option(text, flag="--shafts"):
     if text is None:
         return ()
     try:
         return tuple(int(t) for t in text.split(","))
     except ValueError:
         raise click.BadParameter(f"{text!r}: give orders as whole numbers, such as 1,2",
-                                 param_hint="--shafts") from None
+                                 param_hint=flag) from None
+
+
+def _numbers_option(text, flag):
+    try:
+        return tuple(float(t.replace(" ", "")) for t in text.split(","))
+    except ValueError:
+        raise click.BadParameter(f"{text!r}: give numbers such as 60,120,220",
+                                 param_hint=flag) from None
+
+
+def _with_power(engines, power):
+    """The engines with --power as their power at the speed they are analysed at."""
+    if power is None:
+        return engines
+    power_w = _quantity_option(power.replace("\u202f", " "), "--power", "power")
+    out = []
+    for engine in engines:
+        with _reported(engine):
+            out.append(engine.replace(power_w=power_w, power_speed_rad_s=engine.speed_rad_s))
+    return out
 
 
 def _shaft_offsets_option(texts):

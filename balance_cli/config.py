@@ -27,7 +27,7 @@ __all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template
 
 _TOP_KEYS = {
     "name", "source", "cycle", "speed", "crank_radius", "rod_length", "pin_offset", "frame",
-    "firing_order", "vertical", "masses", "parts", "gas", "banks", "throws", "links", "cylinders",
+    "firing_order", "vertical", "power", "masses", "parts", "gas", "banks", "throws", "links", "cylinders",
 }
 _MASS_KEYS = {"reciprocating", "rotating", "knuckle", "crank"}
 _PART_KEYS = {"piston", "rod_mass", "rod_cg", "rod_inertia", "link_mass", "link_cg", "link_inertia",
@@ -48,7 +48,7 @@ _KEYS = {
     "reciprocating_kg": "reciprocating", "knuckle_kg": "masses.knuckle",
     "link_length_m": "link_length", "knuckle_radius_m": "knuckle_radius",
     "knuckle_angle_rad": "knuckle_angle", "bank_angles_rad": "banks", "z_m": "z",
-    "vertical_rad": "vertical",
+    "vertical_rad": "vertical", "power_w": "power",
 }
 _FIELD = re.compile(r"\b(" + "|".join(map(re.escape, _KEYS)) + r")\b")
 #: angles are plain numbers of degrees within one turn either way
@@ -239,6 +239,7 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
     pin_offset = top.quantity("pin_offset", "length", required=False, default=0.0, sign="any")
     frame = top.string("frame", required=False, default="fixed", choices=FRAMES)
     vertical = math.radians(top.degrees("vertical")) if top.has("vertical") else None
+    power = top.quantity("power", "power", required=False, default=None)
 
     parts = None
     if top.has("masses") and top.has("parts"):
@@ -310,7 +311,7 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
             rod_length_m=rod_length, bank_angles_rad=tuple(banks), throws=tuple(throws),
             cylinders=tuple(cylinders), rotating_kg=rotating, crank_kg=crank,
             pin_offset_m=pin_offset, frame=frame, firing_order=firing_order, source=source,
-            config_path=str(path), parts=parts, gas=gas, vertical_rad=vertical,
+            config_path=str(path), parts=parts, gas=gas, vertical_rad=vertical, power_w=power,
             shaft_inertia_kgm2=(0.0 if parts is None else
                                 parts.crankshaft_inertia_kgm2 + parts.flywheel_inertia_kgm2),
         )

@@ -244,6 +244,11 @@ class Engine:
     vertical_rad : float or None
         the engine's vertical, from the reference axis, positive with rotation, rad; None
         (the default) takes the banks' bisector (see :attr:`vertical_axis_rad`)
+    power_w : float or None
+        the engine's power, W, at ``power_speed_rad_s`` (default: at ``speed_rad_s``)
+    power_speed_rad_s : float or None
+        the speed ``power_w`` is given at, rad/s; an engine analysed at another speed (after
+        :meth:`replace`) has no power until it is given at that speed
 
     Raises
     ------
@@ -270,6 +275,8 @@ class Engine:
     parts: Parts | None = None
     gas: GasCycle | None = None
     vertical_rad: float | None = None
+    power_w: float | None = None
+    power_speed_rad_s: float | None = None
     _by_number: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
@@ -283,6 +290,8 @@ class Engine:
                 raise ModelError(f"must be a list or tuple, got {value!r}", name)
         object.__setattr__(self, "_by_number", {c.number: c for c in self.cylinders
                                                 if isinstance(c, Cylinder)})
+        if self.power_w is not None and self.power_speed_rad_s is None:
+            object.__setattr__(self, "power_speed_rad_s", self.speed_rad_s)
         _check(self)
 
     def replace(self, **changes) -> "Engine":
@@ -352,6 +361,14 @@ class Engine:
         # banks that almost cancel (a boxer at 0° and 179°, a Y a hair off 120°) have a
         # bisector that swings with the last decimal: the reference axis is steadier
         return abs(total) < BISECTOR_FLOOR * len(self.bank_angles_rad)
+
+    @property
+    def power_at_speed_w(self) -> float | None:
+        """``power_w`` when it is given at the speed the engine runs at, else None, W."""
+        if self.power_w is None or not math.isclose(self.power_speed_rad_s, self.speed_rad_s,
+                                                    rel_tol=1e-12):
+            return None
+        return self.power_w
 
     @property
     def n_cylinders(self) -> int:
@@ -451,6 +468,9 @@ def _check(engine):
               sign="non-negative")
     if engine.vertical_rad is not None:
         _angle(engine.vertical_rad, "vertical_rad")
+    if engine.power_w is not None:
+        _quantity(engine.power_w, "power", "power_w")
+        _quantity(engine.power_speed_rad_s, "angular speed", "power_speed_rad_s")
     if engine.rod_length_m <= engine.crank_radius_m + abs(engine.pin_offset_m):
         raise ModelError(
             f"of {engine.rod_length_m:g} m is not longer than the crank radius plus |pin offset| "

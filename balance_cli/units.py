@@ -39,6 +39,9 @@ DIMENSIONS = {
                  "atm": 101325.0, "kgf/cm^2": _KGF_CM2, "at": _KGF_CM2},
     "torque": {"N*m": 1.0, "Nm": 1.0, "kN*m": 1e3, "kgf*m": STANDARD_GRAVITY,
                "lbf*ft": 1.3558179483314004},
+    # hp is the mechanical horsepower (550 ft·lbf/s), PS the metric one (75 kgf·m/s)
+    "power": {"W": 1.0, "kW": 1e3, "MW": 1e6, "hp": 550 * 0.3048 * 0.45359237 * STANDARD_GRAVITY,
+              "PS": 75 * STANDARD_GRAVITY},
 }
 
 #: one choice of display units: force unit -> (N per force unit, moment unit, N·m per moment
@@ -62,13 +65,14 @@ LIMITS = {
     "moment of inertia": (1e-12, 1e9, "kg*m^2", 1.0),
     "pressure": (1e-3, 1e10, "bar", _BAR),
     "torque": (1e-9, 1e12, "N*m", 1.0),
+    "power": (1e-3, 1e10, "kW", 1e3),
 }
 
 # ASCII digits only; any unit word, so that an unknown one is reported as a unit
 _QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\s\d.+-].*?)\s*$",
                        re.ASCII)
 _EXAMPLES = {"length": "82.5 mm", "mass": "1770.4 g", "angular speed": "1650 rpm",
-             "moment of inertia": "0.12 kg*m^2", "pressure": "45 bar", "torque": "850 N*m"}
+             "moment of inertia": "0.12 kg*m^2", "pressure": "45 bar", "torque": "850 N*m", "power": "21 MW"}
 
 
 def _units_of(dimension):
@@ -200,7 +204,8 @@ def _article(word):
 
 
 def _plural(dimension):
-    return "moments of inertia" if dimension == "moment of inertia" else dimension + "s"
+    return {"moment of inertia": "moments of inertia", "power": "powers"}.get(dimension,
+                                                                              dimension + "s")
 
 
 def check_finite_range(value, dimension, shown=None, smallest=True):

@@ -175,7 +175,7 @@ def compare_parts(comparison, scale):
         notes.append(f"×: a multiple of the reference's resultant, where it is above "
                      f"{PERCENT_LIMIT:.0f} %.")
     fl, ml = scale.force_label, scale.moment_label
-    return order_parts(entries, scale, comparison.samples) + [
+    return order_parts(entries, scale, comparison.samples) + _pru_parts(records, scale) + [
         ("Firing", ["Engine", "Cyl", "Cycle", "Frame", "Firing order", "Intervals (°)"], firing, ""),
         ("Largest free force and moment (after an ideal crankshaft counterweight)",
          ["Engine", f"Largest F ({fl})", f"% of {_shortened(comparison.reference.engine.name)}",
@@ -183,6 +183,56 @@ def compare_parts(comparison, scale):
           f"Main M order: max ({ml}), direction"],
          summary, " ".join(notes)),
     ]
+
+
+def _pru_text(entry, side):
+    """One PRU cell: "124.4 (likely)"."""
+    return f"{figure(entry[f'{side}_Nm_per_kW'])} ({entry[f'{side}_class']})"
+
+
+def _pru_parts(records, scale):
+    """The power related unbalance table, when any engine has a power: per engine its power
+    and, per order judged, the pitching and yawing moments' PRU with their class; the first
+    order as the crank stands and with its rotating masses balanced."""
+    with_power = [r for r in records if r["pru"] is not None]
+    if not with_power:
+        # a power given at another speed than analysed is worth a word; no power at all is not
+        notes = sorted({r["pru_note"] for r in records if "given at" in (r["pru_note"] or "")})
+        return [("Power related unbalance", [], [], "Not computed: " + "; ".join(notes) + ".")] \
+            if notes else []
+    orders = [e["order"] for e in with_power[0]["pru"]["orders"]]
+    headers = ["Engine", "Power (kW)"]
+    for k in orders:
+        headers += [f"M{k}V", f"M{k}H"]
+        if k == 1:
+            headers += ["M1V balanced", "M1H balanced"]
+    rows = []
+    for record in records:
+        pru = record["pru"]
+        if pru is None:
+            rows.append([record["name"], "—"] + ["—"] * (len(headers) - 2))
+            continue
+        source = {"given": "", "option": " (--power)", "indicated": " (indicated)"}
+        row = [record["name"], figure(pru["power_kW"]) + source[pru["power_source"]]]
+        for entry in pru["orders"]:
+            row += [_pru_text(entry, "vertical"), _pru_text(entry, "horizontal")]
+            if entry["order"] == 1:
+                balanced = pru["first_order_balanced"]
+                row += (["—", "—"] if balanced is None else
+                        [_pru_text(balanced, "vertical"), _pru_text(balanced, "horizontal")])
+        rows.append(row)
+    classes = with_power[0]["pru"]["classes"]
+    bounds = ", ".join(f"below {c['below_Nm_per_kW']:g} {c['class']}" for c in classes[:-1])
+    bounds += f", above {classes[-2]['below_Nm_per_kW']:g} {classes[-1]['class']}"
+    missing = [r["name"] for r in records if r["pru"] is None]
+    note = ("PRU = external moment / engine power (N·m/kW) at the speed analysed, and the need "
+            "for a moment compensator: " + bounds + ". MkV is the "
+            "pitching moment of order k, MkH the yawing one; M1 as the crank stands, and "
+            "'balanced' with counterweights for the rotating masses (balance factor 0)."
+            + (" —: " + "; ".join(sorted({r["pru_note"] for r in records if r["pru"] is None}))
+               + "." if missing else ""))
+    return [("Power related unbalance (N·m/kW, and the need for a compensator)", headers, rows,
+             note)]
 
 
 def compare_tables(comparison, scale, fmt):

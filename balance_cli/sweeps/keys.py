@@ -27,7 +27,7 @@ ANGLE, NUMBER, WHOLE, FRACTION = "angle", "number", "whole number", "fraction"
 #: and lists (firing_order) are not swept: they have no axis to plot against.
 SCHEMA = {
     "": {"cycle": WHOLE, "speed": "angular speed", "crank_radius": "length",
-         "rod_length": "length", "pin_offset": "length", "vertical": ANGLE},
+         "rod_length": "length", "pin_offset": "length", "vertical": ANGLE, "power": "power"},
     "masses": {"reciprocating": "mass", "rotating": "mass", "knuckle": "mass", "crank": "mass"},
     "parts": {"piston": "mass", "rod_mass": "mass", "rod_cg": "length",
               "rod_inertia": "moment of inertia", "link_mass": "mass", "link_cg": "length",

@@ -1,0 +1,167 @@
+"""Marine figures: the engine's power and the power related unbalance (PRU).
+
+The MAN B&W and WinGD project guides judge a large two-stroke engine's external moments by
+PRU = external moment / engine power (N·m/kW) at the same speed, and class it by whether a
+moment compensator is needed (MAN B&W, "Power Related Unbalance", section 17.04 of the project
+guides, Table 17.04.01; WinGD Marine Installation Manuals, section 6.1): 0–60 not relevant,
+60–120 unlikely, 120–220 likely, above 220 most likely. The moments are the vertical (pitching,
+M1V, M2V) and horizontal (yawing, M1H, M2H) components of balance's exact free moments.
+"""
+
+import math
+from dataclasses import dataclass
+
+from .errors import AnalysisError
+from .kinematics import engine_angles, piston_travel
+
+__all__ = ["DEFAULT_PRU_CLASSES", "DEFAULT_PRU_ORDERS", "Power", "PowerRelatedUnbalance",
+           "engine_power", "power_related_unbalance", "pru_class", "check_classes"]
+
+#: upper bounds (N·m/kW) of the project guides' classes and their words; the last is open
+DEFAULT_PRU_CLASSES = ((60.0, "not relevant"), (120.0, "unlikely"), (220.0, "likely"),
+                       (math.inf, "most likely"))
+#: the orders the guides give: first and second
+DEFAULT_PRU_ORDERS = (1, 2)
+_CLASS_WORDS = ("not relevant", "unlikely", "likely", "most likely")
+#: crank angles a revolution on which a cylinder's stroke is found (its extremes are flat:
+#: 3600 points put them within 1e-8 of the exact stroke)
+_STROKE_SAMPLES = 3600
+
+
+@dataclass(frozen=True)
+class Power:
+    """An engine's power at the speed it is analysed at.
+
+    ``watts``; ``source``: "given" (the configuration's ``power``), "option" (given with the
+    analysis, e.g. ``--power``) or "indicated" (imep · swept volume of every cylinder · cycles
+    a second, from the ``[gas]`` table).
+    """
+
+    watts: float
+    source: str
+
+    @property
+    def kilowatts(self) -> float:
+        return self.watts / 1e3
+
+
+def check_classes(bounds):
+    """The PRU classes for the bounds (N·m/kW) between "not relevant", "unlikely", "likely"
+    and "most likely": three increasing positive numbers."""
+    try:
+        values = [float(b) for b in bounds]
+    except (TypeError, ValueError):
+        raise AnalysisError(f"must be three numbers of N·m/kW, got {bounds!r}",
+                            "pru_classes") from None
+    if len(values) != 3 or not all(math.isfinite(v) and v > 0 for v in values) \
+            or not values[0] < values[1] < values[2]:
+        raise AnalysisError(f"must be three increasing positive numbers of N·m/kW (the bounds "
+                            f"of {', '.join(_CLASS_WORDS)}), got {bounds!r}", "pru_classes")
+    return tuple(zip(values + [math.inf], _CLASS_WORDS))
+
+
+def pru_class(value, classes=DEFAULT_PRU_CLASSES):
+    """The class of a PRU value (N·m/kW): the words of the first bound it stays below."""
+    return next(word for bound, word in classes if value < bound)
+
+
+def engine_power(engine, power_w=None):
+    """The :class:`Power` of ``engine`` at its speed, or (None, why not).
+
+    ``power_w`` (W, at the engine's speed) wins; then the configuration's ``power`` when it is
+    given at the speed the engine is analysed at; then the indicated power of a ``[gas]`` cycle
+    with an imep: imep · Σ swept volumes · ω/(2π) · 2/cycle, exact by the cycle's own
+    definition (its heat release is scaled so that ∮p dV = imep · swept volume).
+    """
+    if power_w is not None:
+        if isinstance(power_w, bool) or not isinstance(power_w, (int, float)) \
+                or not math.isfinite(power_w) or power_w <= 0:
+            raise AnalysisError(f"must be a power greater than zero, W, got {power_w!r}",
+                                "power_w")
+        return Power(float(power_w), "option"), None
+    if engine.power_at_speed_w is not None:
+        return Power(engine.power_at_speed_w, "given"), None
+    gas = engine.gas
+    if gas is not None and gas.imep_pa is not None:
+        travel = piston_travel(engine, engine_angles(_STROKE_SAMPLES))
+        swept = sum(gas.piston_area_m2 * (t.max() - t.min()) for t in travel.values())
+        cycles_per_s = engine.speed_rad_s / (2 * math.pi) * 2 / engine.cycle
+        return Power(gas.imep_pa * swept * cycles_per_s, "indicated"), None
+    if engine.power_w is not None:
+        return None, (f"the power is given at {engine.power_speed_rad_s * 30 / math.pi:g} rpm, "
+                      f"not at the {engine.speed_rad_s * 30 / math.pi:g} rpm analysed; give the "
+                      "power at this speed")
+    return None, "no power: give `power` in the configuration, a [gas] table with an imep, or the power with the analysis"
+
+
+@dataclass(frozen=True)
+class PowerRelatedUnbalance:
+    """The PRU of an analysed engine.
+
+    Attributes
+    ----------
+    power : Power
+    orders : tuple of dict
+        per order k: ``order``, ``vertical_Nm`` and ``horizontal_Nm`` (M_kV, M_kH: the
+        amplitudes of the pitching and yawing moments), ``vertical_Nm_per_kW`` and
+        ``horizontal_Nm_per_kW`` (their PRU) and ``vertical_class``, ``horizontal_class``
+    first_order_balanced : dict or None
+        the same for the first order once counterweights balance the rotating masses (the
+        crank's own and the big ends'), as a crank is built: ``balance_factor`` 0 of
+        :func:`~balance_cli.counterweights`; None on a rotary, whose crank does not turn
+    classes : tuple of (bound, word)
+    """
+
+    power: Power
+    orders: tuple
+    first_order_balanced: dict | None
+    classes: tuple
+
+    def to_dict(self) -> dict:
+        return {"power_kW": self.power.kilowatts, "power_source": self.power.source,
+                "classes": [{"below_Nm_per_kW": None if math.isinf(b) else b, "class": w}
+                            for b, w in self.classes],
+                "orders": list(self.orders), "first_order_balanced": self.first_order_balanced}
+
+
+def _entry(order, record, kilowatts, classes):
+    moment = record["moment"]
+    v, h = moment["vertical_Nm"], moment["horizontal_Nm"]
+    return {"order": order, "vertical_Nm": v, "horizontal_Nm": h,
+            "vertical_Nm_per_kW": v / kilowatts, "horizontal_Nm_per_kW": h / kilowatts,
+            "vertical_class": pru_class(v / kilowatts, classes),
+            "horizontal_class": pru_class(h / kilowatts, classes)}
+
+
+def power_related_unbalance(result, power_w=None, orders=DEFAULT_PRU_ORDERS,
+                            classes=DEFAULT_PRU_CLASSES):
+    """The :class:`PowerRelatedUnbalance` of an analysed engine
+    (:class:`~balance_cli.EngineResult`), or (None, why not) when it has no power.
+
+    Parameters
+    ----------
+    power_w : float, optional
+        the power at the speed analysed, W (default: the configuration's, or the [gas]
+        cycle's indicated power)
+    orders : sequence of int
+        the orders whose moments are judged (default 1 and 2), each within the analysis
+    classes : tuple of (bound, word)
+        :data:`DEFAULT_PRU_CLASSES` or :func:`check_classes` of other bounds
+    """
+    from .counterweight import counterweights
+
+    power, why = engine_power(result.engine, power_w)
+    if power is None:
+        return None, why
+    if isinstance(orders, (str, bytes)) or not all(
+            isinstance(k, int) and not isinstance(k, bool) and 1 <= k <= result.max_order
+            for k in orders) or not orders:
+        raise AnalysisError(f"must be orders from 1 to {result.max_order}, got {orders!r}",
+                            "orders")
+    records = result.shaking.records(result.engine)
+    entries = tuple(_entry(k, records[k - 1], power.kilowatts, classes) for k in orders)
+    balanced = None
+    if not result.engine.is_rotary:
+        built = counterweights(result, balance_factor=0.0)
+        balanced = _entry(1, built.residual.records(result.engine)[0], power.kilowatts, classes)
+    return PowerRelatedUnbalance(power, entries, balanced, classes), None
