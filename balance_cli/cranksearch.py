@@ -451,9 +451,12 @@ def _guide_phasors(template, samples, max_order):
     return out
 
 
-def _couple_units(guide):
-    """The order-k couple amplitude of one throw alone, N·m (0 where it has none)."""
-    return np.abs(guide[0]).max(axis=0)
+def _couple_units(guide, floor):
+    """The order-k couple amplitude of one throw alone, N·m (0 below the noise floor: the two
+    cylinders of a 90° V throw cancel at order 2 to rounding, and a unit of 1e-10 made a
+    coefficient of noise)."""
+    largest = np.abs(guide[0]).max(axis=0)
+    return np.where(largest > floor, largest, 0.0)
 
 
 def _units(phasors, floor):
@@ -1233,7 +1236,7 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     couple_units = None
     if any(term.kind in ("H", "X") for term in terms):
         guide = _guide_phasors(flat, samples, max_order)
-        couple_units = _couple_units(guide)
+        couple_units = _couple_units(guide, flat.noise_floor_n * flat.crank_radius_m)
         phasors = np.concatenate([phasors, guide])
     channels, weights = _channels(terms, units, pitch, couple_units)
     P, s, capacity, base, offsets = _lattice(flat, allow_uneven, step_deg)

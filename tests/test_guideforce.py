@@ -247,3 +247,17 @@ def test_an_uneven_crank_changes_h_type_orders_a_regular_one_cancels():
     expected = harmonic(one, 1) * sum(cmath.exp(1j * math.radians(b)) for b in (0, 90, 90, 270))
     assert abs(harmonic(uneven.h_type, 1) - expected) < 1e-9 * abs(harmonic(one, 1))
     assert abs(expected) == pytest.approx(math.sqrt(2) * abs(harmonic(one, 1)))
+
+
+def test_a_cancelled_throw_couple_is_no_unit():
+    """The two cylinders of a 90° V throw cancel each other's order-2 couple to rounding: that
+    order has no unit (H2 = X2 = 0), and the rounding must not weigh in the score. Once it did
+    (a unit of 1e-10 N·m), and the listed scores came out of order (3.46 above 3.0)."""
+    template = balance.load_template(CONFIGS.parent / "templates" /
+                                     "nakanishi-v12-90-2stroke.toml")[0]
+    result = search(template, "F1,F2,H2,X1,X2", top=6, workers=1)
+    scores = [a.score for a in result.arrangements]
+    assert scores == sorted(scores)
+    assert result.arrangements[0].coefficients["X1"] == pytest.approx(0.0, abs=1e-9)
+    for arrangement in result.arrangements:
+        assert arrangement.coefficients["H2"] == 0.0 and arrangement.coefficients["X2"] == 0.0
