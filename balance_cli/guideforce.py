@@ -7,9 +7,9 @@ the crank axis (MAN B&W project guides, section 17.05 "Guide Force Moments"):
 - the **H-type** moment is the sum of the cylinders' couples: it rocks the engine about the
   crankshaft;
 - the **X-type** moment is the bimoment Σ couple_j·(z_j − z̄) divided by the guide distance L
-  (from the crankshaft to the middle of the crosshead guide); here L is the rod length, the
-  crosshead's distance from the crank axis at mid-stroke to within r²/(2l): the guides print no
-  other value and a fixed L only scales every X-type figure alike.
+  (from the crankshaft to the middle of the crosshead guide, "i.e. the length of the connecting
+  rod" in the guides' words): L is the rod length here, and only scales every X-type figure
+  alike.
 
 Each cylinder's guide force is solved exactly from the same linkage state the torques use
 (Newton–Euler for the piston and its rod, whose point masses are lumped at its ends and whose
