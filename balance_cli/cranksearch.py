@@ -59,6 +59,7 @@ from .kinematics import check_assembly
 from .model import MAX_NAME_LENGTH, Engine, Throw
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings, shaking_forces
 from .tolerances import UNIFORM_FIRING_DEG
+from .torques import torque
 from .units import round_degrees
 
 __all__ = ["Term", "parse_objective", "default_objective", "coefficients", "Arrangement",
@@ -91,7 +92,8 @@ MAX_WORKERS = 1024
 _COUNT_WORK = 10_000_000
 #: a block of (prefix × suffix × channel) values evaluated at once
 _BLOCK = 1 << 21
-_TERM = re.compile(r"^\s*([FM])(\d+)([+-]?)\s*(?::\s*(.+?))?\s*$")
+_TERM = re.compile(r"^\s*([FMHX])(\d+)([+-]?)\s*(?::\s*(.+?))?\s*$")
+_HALF_ORDER = re.compile(r"^\s*[FMHX]\s*\d*\.\d*")
 
 
 # --- objective ------------------------------------------------------------------------
@@ -100,8 +102,9 @@ _TERM = re.compile(r"^\s*([FM])(\d+)([+-]?)\s*(?::\s*(.+?))?\s*$")
 class Term:
     """One part of the objective: ``weight`` × the coefficient ``name``.
 
-    ``kind`` "F" (force) or "M" (moment); ``part`` "max" (the order's largest value,
-    |X⁺| + |X⁻|), "forward" (|X⁺|) or "backward" (|X⁻|).
+    ``kind`` "F" (force), "M" (moment), "H" (H-type guide-force moment) or "X" (X-type);
+    ``part`` "max" (the order's largest value, |X⁺| + |X⁻|), "forward" (|X⁺|) or "backward"
+    (|X⁻|); H and X are torques about one axis, "max" only (their amplitude).
     """
 
     kind: str
@@ -140,11 +143,22 @@ def parse_objective(text: str | None, max_order: int = DEFAULT_MAX_ORDER) -> tup
     terms: list[Term] = []
     for item in text.split(","):
         match = _TERM.match(item)
+        if not match and _HALF_ORDER.match(item):
+            # a four-stroke's half orders of a cylinder's couple turn with the revolution it
+            # fires in, which a throw's phase does not fix: no phasor per throw to sum
+            raise AnalysisError(f"term {item.strip()!r}: the search takes whole orders only (half "
+                                "orders of a four-stroke depend on which revolution each cylinder "
+                                "fires in, not on the crank alone)", "objective")
         if not match:
-            raise AnalysisError(f"term {item.strip()!r} is not a coefficient such as F2, M1, F1+ "
-                                "or F2:4 (F force, M moment, the order, + forward or - backward "
-                                "part only, :weight)", "objective")
+            raise AnalysisError(f"term {item.strip()!r} is not a coefficient such as F2, M1, F1+, "
+                                "H4 or F2:4 (F force, M moment, H and X the H- and X-type "
+                                "guide-force moments, the order, + forward or - backward part "
+                                "only, :weight)", "objective")
         kind, order, sign, weight_text = match.groups()
+        if kind in "HX" and sign:
+            raise AnalysisError(f"term {item.strip()!r}: a guide-force moment is a torque about "
+                                f"one axis, with no forward or backward part; write {kind}{order}",
+                                "objective")
         order = int(order)
         if order < 1:
             raise AnalysisError(f"term {item.strip()!r}: orders start at 1", "objective")
@@ -184,11 +198,13 @@ def _check_terms(terms, max_order):
         if not isinstance(term, Term):
             raise AnalysisError(f"must be a string such as 'M1,M2' or Terms, got {term!r}",
                                 "objective")
-        if (term.kind not in ("F", "M") or term.part not in ("max", "forward", "backward")
+        if (term.kind not in ("F", "M", "H", "X")
+                or term.part not in (("max",) if term.kind in ("H", "X") else
+                                     ("max", "forward", "backward"))
                 or isinstance(term.order, bool) or not isinstance(term.order, (int, np.integer))
                 or not 1 <= term.order <= max_order):
             raise AnalysisError(f"term {term!r} must be F or M, of an order from 1 to {max_order}, "
-                                "part max, forward or backward", "objective")
+                                "part max, forward or backward, or H or X, part max", "objective")
         if not _weight_ok(term.weight):
             raise AnalysisError(f"term {term.name}: the weight must be a positive number from "
                                 f"{WEIGHT_RANGE[0]:g} to {WEIGHT_RANGE[1]:g}, got {term.weight!r}",
@@ -418,6 +434,31 @@ def _throw_phasors(template, samples, max_order):
     return out
 
 
+def _guide_phasors(template, samples, max_order):
+    """Per throw and order, the H-type and X-type phasors (kinds 4 and 5): Σ over the throw's
+    cylinders of the couple's (cos − i·sin), whose modulus is the amplitude, and that times
+    z − z̄. Turning a throw by β shifts its cylinders' couples by β in θ (firing with them), so
+    these turn by e^{ikβ} like a forward force phasor. For a four-stroke a whole order of the
+    720° couple is the same whichever revolution a cylinder fires in; half orders are not
+    searched. The X-type's division by the guide distance cancels in its coefficient."""
+    guide = torque(template, samples, max_order, bearings=False).guide
+    out = np.zeros((2, len(template.throws), max_order), complex)
+    for cylinder, own in zip(template.cylinders, guide.cylinders):
+        for k in range(1, max_order + 1):
+            cos, sin = own.couple.order(k)
+            out[0, cylinder.throw, k - 1] += complex(cos, -sin)
+            out[1, cylinder.throw, k - 1] += complex(cos, -sin) * (cylinder.z_m - guide.mean_z_m)
+    return out
+
+
+def _couple_units(guide, floor):
+    """The order-k couple amplitude of one throw alone, N·m (0 below the noise floor: the two
+    cylinders of a 90° V throw cancel at order 2 to rounding, and a unit of 1e-10 made a
+    coefficient of noise)."""
+    largest = np.abs(guide[0]).max(axis=0)
+    return np.where(largest > floor, largest, 0.0)
+
+
 def _units(phasors, floor):
     """The largest order-k force of one throw alone, N (0 below the noise floor)."""
     largest = (np.abs(phasors[0]) + np.abs(phasors[1])).max(axis=0)
@@ -433,18 +474,21 @@ def _pitch(template):
     return pitch
 
 
-def _channels(objective, units, pitch):
-    """The complex sums the score needs, (kind 0..3, order index), and their weights, divided
+def _channels(objective, units, pitch, couple_units=None):
+    """The complex sums the score needs, (kind 0..5, order index), and their weights, divided
     by the largest term weight (the search compares scores of order one; see SCORE_TIE)."""
     weights = {}
     largest = max(term.weight for term in objective)
     for term in objective:
         k = term.order - 1
-        if units[k] == 0.0:
+        unit = couple_units[k] if term.kind in ("H", "X") else units[k]
+        if unit == 0.0:
             continue
-        scale = term.weight / largest / units[k] / (pitch if term.kind == "M" else 1.0)
-        first = 0 if term.kind == "F" else 2
+        scale = term.weight / largest / unit / (pitch if term.kind in ("M", "X") else 1.0)
+        first = {"F": 0, "M": 2, "H": 4, "X": 5}[term.kind]
         parts = {"max": (0, 1), "forward": (0,), "backward": (1,)}[term.part]
+        if term.kind in ("H", "X"):
+            parts = (0,)   # a real torque: its forward phasor alone carries the amplitude
         for p in parts:
             key = (first + p, k)
             weights[key] = weights.get(key, 0.0) + scale
@@ -539,7 +583,7 @@ def _check_mirror(phasors, offsets, base, floor):
         return False
     if any(sorted(offsets[j]) != sorted(offsets[n - 1 - j]) for j in range(n)):
         return False
-    for kind in range(4):
+    for kind in range(phasors.shape[0]):
         for k in range(phasors.shape[2]):
             row = phasors[kind, :, k]
             big = np.abs(row).max()
@@ -1189,14 +1233,19 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     phasors = _throw_phasors(flat, samples, max_order)
     units = _units(phasors, flat.noise_floor_n)
     pitch = _pitch(flat)
-    channels, weights = _channels(terms, units, pitch)
+    couple_units = None
+    if any(term.kind in ("H", "X") for term in terms):
+        guide = _guide_phasors(flat, samples, max_order)
+        couple_units = _couple_units(guide, flat.noise_floor_n * flat.crank_radius_m)
+        phasors = np.concatenate([phasors, guide])
+    channels, weights = _channels(terms, units, pitch, couple_units)
     P, s, capacity, base, offsets = _lattice(flat, allow_uneven, step_deg)
     reversal, shift = _check_reversal(phasors, offsets, base, P, flat.noise_floor_n)
     mirror = _check_mirror(phasors, offsets, base, flat.noise_floor_n)
     phase = base[:, None] + s * np.arange(P)[None, :]                 # (n, P) degrees
     rotated = np.zeros((n, P, len(channels)), complex)
     for i, (kind, k) in enumerate(channels):
-        sign = 1.0 if kind in (0, 2) else -1.0
+        sign = -1.0 if kind in (1, 3) else 1.0
         rotated[:, :, i] = phasors[kind, :, k][:, None] * np.exp(
             1j * sign * (k + 1) * np.radians(phase))
     split = 1 + (n - 1) // 2
@@ -1244,7 +1293,7 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         cut = orbits[top - 1][0]
         orbits = [o for o in orbits if o[0] <= cut + SCORE_TIE]
     arrangements = _final(template, flat, problem, orbits, shift, terms, top, samples,
-                          max_order, units, pitch, tick)
+                          max_order, units, pitch, tick, couple_units)
     total = (total_cranks or 0) * firing_per_crank
     distinct = _distinct(flat, problem, total, shift) if reversal else total
     return SearchResult(
@@ -1327,7 +1376,7 @@ def _distinct(flat, problem, total, shift):
 
 
 def _final(template, flat, problem, orbits, shift, terms, top, samples, max_order, units, pitch,
-           tick=None):
+           tick=None, couple_units=None):
     """The listed arrangements: expanded to firing orders and mirror images, analysed exactly
     as ``compare`` would, ranked by score and then firing order."""
     members = _expand(flat, problem, orbits, shift)
@@ -1349,7 +1398,7 @@ def _final(template, flat, problem, orbits, shift, terms, top, samples, max_orde
         result = analyse(engine, samples, max_order)
         if tick:
             tick(1)
-        values = _coefficients_of(result, units, pitch, terms)
+        values = _coefficients_of(result, units, pitch, terms, couple_units)
         score = float(sum(t.weight * values[t.name] for t in terms))
         suffix = f", arrangement {rank}"
         name = template.name[:MAX_NAME_LENGTH - len(suffix)].rstrip() + suffix
@@ -1373,8 +1422,9 @@ def _reversal_class(problem, crank):
     return min(crank, tuple((-p) % problem.lattice for p in crank))
 
 
-def _coefficients_of(result, units, pitch, terms):
-    """Every F_k, M_k by name (and the forward/backward parts the objective names)."""
+def _coefficients_of(result, units, pitch, terms, couple_units=None):
+    """Every F_k, M_k by name (and the forward/backward parts and H_k, X_k the objective
+    names)."""
     orders = result.shaking.orders
     engine = result.engine
     floors = (engine.noise_floor_n,) * 2 + (engine.noise_floor_nm,) * 2
@@ -1390,4 +1440,14 @@ def _coefficients_of(result, units, pitch, terms):
     for t in terms:
         if t.part != "max":
             values[t.name] = float(c[t.kind][1 if t.part == "forward" else 2][t.order - 1])
+    if couple_units is not None and any(t.kind in ("H", "X") for t in terms):
+        # the arrangement's own torques, not the template's phasors turned: a second method
+        guide = torque(result.engine, result.samples, len(orders), bearings=False).guide
+        for t in terms:
+            if t.kind in ("H", "X"):
+                unit = couple_units[t.order - 1]
+                series = guide.h_type if t.kind == "H" else guide.x_type
+                lever = 1.0 if t.kind == "H" else guide.lever_m / pitch
+                values[t.name] = (float(math.hypot(*series.order(t.order)) * lever / unit)
+                                  if unit > 0.0 else 0.0)
     return values

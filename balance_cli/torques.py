@@ -223,6 +223,9 @@ class TorqueResult:
         the speed with a flywheel and a load, when asked for
     flywheel_kgm2 : float or None
         the flywheel inertia that reaches a target steadiness, when asked for
+    guide : GuideForces or None
+        every cylinder's guide force and couple, and the H-type and X-type guide-force
+        moments (:mod:`balance_cli.guideforce`); None for a rotary
     """
 
     engine: Engine
@@ -238,6 +241,7 @@ class TorqueResult:
     max_order: int = DEFAULT_MAX_ORDER
     steadiness: Steadiness | None = None
     flywheel_kgm2: float | None = None
+    guide: object = None
 
     @property
     def period_deg(self) -> float:
@@ -262,6 +266,7 @@ class TorqueResult:
             },
             "steadiness": None if self.steadiness is None else {
                 **self.steadiness.to_dict(), "flywheel_for_target_kgm2": self.flywheel_kgm2},
+            "guide_force": None if self.guide is None else self.guide.to_dict(),
         }
 
 
@@ -519,6 +524,10 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
         _check_gas_sampling(engine, samples, turns, fire, curves, area, gas_curve)
         gas = series(gas_curve, tile=False)
         total = total + gas_curve
+    # imported here: guideforce builds its results with this module's Series
+    from .guideforce import guide_forces
+    guide = guide_forces(engine, state, net_pressure, area, turns,
+                         lambda values, unit: series(values, unit, tile=False))
     pins, crank_inertia = (_pin_forces(engine, state, angles, turns, net_pressure, area)
                            if bearings else ([], None))
     theta = np.arange(samples * turns) * 360.0 / samples
@@ -555,4 +564,4 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
     return TorqueResult(engine, samples, ReducedMass(np.degrees(angles), mu.real), series(inertia),
                         series(tilting), series(-total + np.tile(tilting, turns), tile=False), gas,
                         series(total, tile=False), tuple(pin_results), main, max_order, speed,
-                        flywheel)
+                        flywheel, guide)

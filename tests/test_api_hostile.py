@@ -132,7 +132,7 @@ def cases(w):
         ("search.template", lambda v: balance.search(v, "M1", workers=1), "template",
          COLLECTIONS + [r]),
         ("search.objective", lambda v: balance.search(t, v, workers=1), "objective",
-         [3, NAN, "", "M1:nan", "M1:-1", "M1:1e300", "M9", "M0", "X1", [], [3],
+         [3, NAN, "", "M1:nan", "M1:-1", "M1:1e300", "M9", "M0", "Q1", [], [3],
           [Term("M", 1, weight=NAN)], [Term("M", 1, weight=-1.0)], [Term("M", 1, weight=INF)],
           [Term("M", 99)], [Term("Q", 1)], [Term("M", 1, part="sideways")],
           [Term("M", 1), Term("M", 1)], [Term("M", True)]]),

@@ -260,7 +260,7 @@ def test_a_template_gives_no_phases_and_no_firing_order(tmp_path, text, key):
 
 
 @pytest.mark.parametrize("kwargs,parameter", [
-    ({"objective": "X1"}, "objective"), ({"objective": "F9"}, "objective"),
+    ({"objective": "Q1"}, "objective"), ({"objective": "F9"}, "objective"),
     ({"objective": "F2:-1"}, "objective"), ({"objective": "M1,M1"}, "objective"),
     ({"top": 0}, "top"), ({"workers": 0}, "workers"), ({"step_deg": 30.0}, "step_deg"),
     ({"allow_uneven": True}, "step_deg"), ({"allow_uneven": True, "step_deg": 7.0}, "step_deg"),

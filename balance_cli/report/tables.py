@@ -606,6 +606,27 @@ def _order_table(series, scale, fmt, largest):
     return render(["Order", f"cos ({ml})", f"sin ({ml})", f"Amplitude ({ml})", "Phase (°)"], rows, fmt)
 
 
+def _guide_force_lines(guide, scale, fmt):
+    """The H-type and X-type guide-force moments by order (MAN B&W project guides, 17.05)."""
+    ml = scale.moment_label
+    h, x = guide.h_type.to_dict()["orders"], guide.x_type.to_dict()["orders"]
+    largest = max([o["amplitude_Nm"] for o in h + x] + [0.0])
+    def phase(order):
+        # a vanished order has no phase to print
+        return f"{round_degrees(order['phase_deg'], 1):.1f}" if order["amplitude_Nm"] else "-"
+
+    rows = [[f"{a['order']:g}", figure(scale.moment(a["amplitude_Nm"])), phase(a),
+             figure(scale.moment(b["amplitude_Nm"])), phase(b)]
+            for a, b in zip(h, x)
+            if largest > 0 and max(a["amplitude_Nm"], b["amplitude_Nm"]) >= 1e-3 * largest]
+    return [f"Guide-force moments (the couples of the pistons' (crossheads') guide forces with the main "
+            f"bearings; H-type their sum, X-type their bimoment about the engine's centre over "
+            f"L = {guide.lever_m:.4g} m, the rod length; amplitude·cos(kθ − phase); orders below "
+            "a thousandth of the largest left out):", "",
+            render(["Order", f"H-type ({ml})", "H phase (°)", f"X-type ({ml})", "X phase (°)"],
+                   rows or [["-", "0", "-", "0", "-"]], fmt), ""]
+
+
 def torque_tables(results, scale, fmt):
     """``balance torque`` as text or Markdown, engine by engine."""
     heading = "#### " if fmt == "markdown" else ""
@@ -639,6 +660,8 @@ def torque_tables(results, scale, fmt):
                 "together:", "",
                 render(["Throw", f"Radial mean ({fl})", f"Tangential mean ({fl})", f"Largest ({fl})",
                         f"Smallest ({fl})"], rows, fmt), ""]
+        if r.guide is not None:
+            out += _guide_force_lines(r.guide, scale, fmt)
         if r.steadiness is not None:
             out += [steadiness_text(r.steadiness, r.flywheel_kgm2), ""]
     return "\n".join(out)
