@@ -52,8 +52,13 @@ _LAZY = {"plot": (".plot", None), "search": (".cranksearch", "search"),
          "Arrangement": (".cranksearch", "Arrangement"), "Term": (".cranksearch", "Term")}
 
 # the sweep loads on first use too; a statement of its own keeps merges of the lists above simple
-_LAZY.update({"sweep": (".sweeps", "sweep"), "SweepResult": (".sweeps", "SweepResult")})
-__all__ += ["sweep", "SweepResult", "SweepError"]
+_LAZY.update({"sweep": (".sweeps", "sweep"), "SweepResult": (".sweeps", "SweepResult"),
+              "family": (".family", "family"), "FamilyResult": (".family", "FamilyResult"),
+              "GuideForces": (".guideforce", "GuideForces")})
+__all__ += ["sweep", "SweepResult", "SweepError", "family", "FamilyResult", "GuideForces",
+            "load_data", "power_related_unbalance", "PowerRelatedUnbalance"]
+from .config import load_data  # noqa: E402
+from .marine import PowerRelatedUnbalance, power_related_unbalance  # noqa: E402
 from .errors import SweepError  # noqa: E402
 
 

@@ -560,7 +560,13 @@ def plot(paths, kind, output, order, quantity, units, samples, max_order, speed)
               help="Units of moments and torques (and of forces other than the per-cylinder "
                    "comparison): N, kN, MN, kgf or lbf with N·m, kN·m, MN·m, kgf·m or lbf·ft.")
 @_SPEED
-def report(paths, output, with_html, reference, star_order, samples, max_order, units, speed):
+@click.option("--family", "family_path", default=None, metavar="FILE.toml",
+              help="Also a section with the project-guide table of this engine family (as "
+                   "balance family, with --family-cylinders).")
+@click.option("--family-cylinders", default="5-12", show_default=True, metavar="N-M",
+              help="The numbers of cylinders of --family.")
+def report(paths, output, with_html, reference, star_order, samples, max_order, units, speed,
+           family_path, family_cylinders):
     """Write a comparison report: tables, counterweights, torques and pictures (Markdown,
     optionally HTML).
 
@@ -588,9 +594,18 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
     # the report shows no bearing forces: leaving them out halves the work
     torques = _run_each([r.engine for r in results], "Torques",
                         lambda e: torque_of(e, samples, max_order, bearings=False))
+    family_table = None
+    if family_path is not None:
+        from .config import load_data
+        from .family import family
+
+        with _reported(flags={"cylinders": "--family-cylinders", "template": family_path}):
+            family_table = family(load_data(family_path), str(family_path),
+                                  _counts_option(family_cylinders), samples=samples,
+                                  max_order=max_order)
     with _reported(), _drawing():
         written = write_report(target, comparison, balances, star_order, with_html, torques,
-                               Scale.of(False, units))
+                               Scale.of(False, units), family_table)
     for path in written:
         click.echo(f"wrote {path}", err=True)
 
@@ -1065,6 +1080,94 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
     _write(output, text)
     if drawing is not None:
         click.echo(f"wrote {picture}", err=True)
+
+
+def _counts_option(text):
+    """--cylinders: "5-12", "6,7,8" or both."""
+    counts = []
+    try:
+        for token in text.split(","):
+            low, _, high = token.strip().partition("-")
+            counts += range(int(low), int(high or low) + 1)
+    except ValueError:
+        raise click.BadParameter(f"{text!r}: give numbers of cylinders such as 5-12 or 6,7,8",
+                                 param_hint="--cylinders") from None
+    return counts
+
+
+def _firing_orders_option(values):
+    """--firing-order N:1-5-3-4-2-6, repeatable."""
+    orders = {}
+    for value in values:
+        count, _, order = value.partition(":")
+        try:
+            orders[int(count)] = [int(c) for c in order.replace(",", "-").split("-")]
+        except ValueError:
+            raise click.BadParameter(f"{value!r}: write the number of cylinders and the order, "
+                                     "such as 6:1-5-3-4-2-6", param_hint="--firing-order") from None
+    return orders
+
+
+@main.command("family")
+@click.argument("path", metavar="FILE.toml")
+@click.option("--cylinders", "counts", default="5-12", show_default=True, metavar="N-M|N,M,...",
+              help="The numbers of cylinders of the family (2 to 24).")
+@click.option("--objective", default=None, metavar="TERMS",
+              help="What each firing order minimises, as for balance search (M1,M2, X4, "
+                   "F2:4, ...)  [default: the first-order couple left with the rotating masses "
+                   "balanced plus the second-order couple, in N·m: M1-:w,M2].")
+@click.option("--firing-order", "firing_orders", multiple=True, metavar="N:ORDER",
+              help="Take this firing order for N cylinders instead of searching, e.g. "
+                   "6:1-5-3-4-2-6 (two-stroke, even firing). Repeatable.")
+@click.option("--pitch", default=None, metavar="LENGTH",
+              help="Cylinder pitch, e.g. '1020 mm'  [default: the file's mean throw pitch].")
+@click.option("--power-per-cylinder", "power", default=None, metavar="POWER",
+              help="Power of one cylinder at the file's speed, e.g. '2380 kW'  [default: the "
+                   "file's power over its cylinders].")
+@click.option("--workers", default=None, type=int, metavar="N",
+              help="Processes for the searches [default: every core].")
+@_SAMPLES
+@_MAX_ORDER
+@_UNITS
+@_FORMAT
+@_OUTPUT
+def family_(path, counts, objective, firing_orders, pitch, power, workers, samples, max_order,
+            units, fmt, output):
+    """A project-guide table of an engine family: for each number of cylinders, the firing
+    order (proved best for the objective, or given), the external moments M1V, M1H, M2V, M2H,
+    their power related unbalance and class, the largest H- and X-type guide-force moments
+    and whether a second-order compensator is indicated.
+
+    FILE.toml is a configuration or search template of the family's in-line engine: one
+    cylinder's data repeated at the pitch (its throws' phases and firing order are not used).
+    """
+    from .config import load_data
+    from .family import family
+    from .report.tables import family_tables
+
+    counts = _counts_option(counts)
+    given = _firing_orders_option(firing_orders)
+    _guard([output], [Path(path)])
+    _settings(samples, max_order)
+    pitch_m = _length_option(pitch, "--pitch")
+    power_w = _quantity_option(power, "--power-per-cylinder", "power")
+    flags = {"cylinders": "--cylinders", "pitch_m": "--pitch", "firing_orders": "--firing-order",
+             "objective": "--objective", "workers": "--workers", "template": path}
+    callback, bar = _search_progress()
+    with _reported():
+        data = load_data(path)
+    with _reported(flags=flags), bar:
+        result = family(data, str(path), counts, objective, pitch_m, power_w, given, samples,
+                        max_order, workers, progress=callback)
+    if fmt == "json":
+        text = to_json(result.to_dict())
+    elif fmt == "csv":
+        from .report.csvfile import family_csv
+
+        text = family_csv(result)
+    else:
+        text = family_tables(result, Scale.of(True, units), fmt)
+    _write(output, text)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -23,7 +23,8 @@ from .kinematics import check_assembly
 from .model import FRAMES, Cylinder, Engine, GasCycle, Parts, Throw
 from .units import parse_quantity
 
-__all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template", "arrangement_toml"]
+__all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template", "load_data",
+           "arrangement_toml"]
 
 _TOP_KEYS = {
     "name", "source", "cycle", "speed", "crank_radius", "rod_length", "pin_offset", "frame",
@@ -160,6 +161,25 @@ def load(path: "str | os.PathLike[str]") -> Engine:
         naming the file, the key and the fix
     """
     return loads(_read_text(Path(checks.path(path))), name=str(path))
+
+
+def load_data(path: "str | os.PathLike[str]") -> dict:
+    """The parsed TOML of the file at ``path``, checked as a configuration (its throws'
+    phases may be given or not): what :func:`balance_cli.family.family` repeats.
+
+    Raises
+    ------
+    ConfigError
+        naming the file, the key and the fix
+    """
+    text = _read_text(Path(checks.path(path)))
+    data = _parse(text, str(path))
+    template = {k: v for k, v in data.items() if k != "firing_order"}
+    if isinstance(template.get("throws"), list):
+        template["throws"] = [{k: v for k, v in t.items() if k != "phase"} if isinstance(t, dict)
+                              else t for t in template["throws"]]
+    build(template, str(path), template=True)
+    return data
 
 
 def load_template(path: "str | os.PathLike[str]") -> tuple[Engine, dict]:

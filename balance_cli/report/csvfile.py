@@ -5,7 +5,7 @@ import io
 
 from .tables import WEIGHT_COLUMNS, order_values
 
-__all__ = ["compare_csv", "balance_csv", "torque_csv", "search_csv"]
+__all__ = ["compare_csv", "balance_csv", "torque_csv", "search_csv", "family_csv"]
 
 #: key suffix of an SI record -> unit written in the CSV
 _UNITS = (("_kgm", "kg·m"), ("_kg", "kg"), ("_deg", "deg"), ("_m", "m"))
@@ -144,4 +144,29 @@ def search_csv(result):
                          " ".join(repr(float(x)) for x in record["firing"]["intervals_deg"]),
                          "" if a.mirror_of is None else a.mirror_of]
                         + [_value(a.coefficients[n]) for n in names])
+    return buffer.getvalue()
+
+
+def family_csv(result):
+    """One row per number of cylinders, SI, full precision."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    moments = [f"M{k}{d}_Nm" for k in (1, 2) for d in "VH"] + ["M1V_balanced_Nm",
+                                                                "M1H_balanced_Nm"]
+    pru = [f"PRU_M{k}{d}_Nm_per_kW" for k in (1, 2) for d in "VH"]
+    writer.writerow(["cylinders", "firing_order", "method", "score"] + moments + ["power_kW"]
+                    + pru + ["h_type_order", "h_type_Nm", "x_type_order", "x_type_Nm",
+                             "second_order_compensator"])
+    for row in result.to_dict()["rows"]:
+        entries = {} if row["pru"] is None else {e["order"]: e for e in row["pru"]["orders"]}
+        values = [entries[k][f"{side}_Nm_per_kW"] if k in entries else None
+                  for k in (1, 2) for side in ("vertical", "horizontal")]
+        guides = []
+        for key in ("h_type", "x_type"):
+            moment = row[key]
+            guides += [None, None] if moment is None else [moment["order"], moment["amplitude_Nm"]]
+        writer.writerow([row["cylinders"], "-".join(map(str, row["firing_order"])), row["method"],
+                         _value(row["score"])] + [_value(row.get(m)) for m in moments]
+                        + [_value(row["power_kW"])] + [_value(v) for v in values]
+                        + [_value(v) for v in guides] + [row["second_order_compensator"]])
     return buffer.getvalue()

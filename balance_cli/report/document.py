@@ -8,7 +8,7 @@ caption)``.
 from .. import __version__
 from ..units import rad_s_to_rpm
 from .display import Scale
-from .tables import balance_summary, compare_parts, torque_summary
+from .tables import balance_summary, compare_parts, family_parts, torque_summary
 
 __all__ = ["PICTURES", "blocks"]
 
@@ -33,7 +33,7 @@ PICTURES = [
 ]
 
 
-def blocks(comparison, balances, star_order, torques, scale=None):
+def blocks(comparison, balances, star_order, torques, scale=None, family=None):
     """The report: engines, comparison tables, counterweights, torques (the
     :class:`~balance_cli.torques.TorqueResult` of each engine), pictures; forces per cylinder,
     moments and torques in ``scale``'s units (default N·m)."""
@@ -76,6 +76,10 @@ def blocks(comparison, balances, star_order, torques, scale=None):
     out.append(("p", "Reduced mass μ of the moving parts (their kinetic energy is ½·μ·ω²), over "
                      "a revolution:"))
     out.append(("table", mass_headers, mass_rows))
+    if family is not None:
+        title, headers, rows, note = family_parts(family, Scale.of(True, scale.units))
+        out += [("h", 2, "Engine family"), ("table", ["Family"], [[title]]),
+                ("table", headers, rows), ("p", note)]
     out.append(("h", 2, "Pictures"))
     for file, _, title, caption in PICTURES:
         out.append(("figure", file, title.format(star=star_order), caption.format(star=star_order)))

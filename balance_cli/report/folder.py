@@ -11,11 +11,13 @@ __all__ = ["write_report", "REPORT_FILES"]
 REPORT_FILES = [file for file, *_ in PICTURES] + ["report.md", "report.html"]
 
 
-def write_report(target, comparison, balances, star_order, with_html, torques, scale=None):
+def write_report(target, comparison, balances, star_order, with_html, torques, scale=None,
+                 family=None):
     """Write the report of ``comparison`` (and its ``balances`` and ``torques``, one of each per
     engine) into the folder ``target``, its moments and torques in ``scale``'s units (a
     :class:`~balance_cli.report.display.Scale`, default N·m); nothing is left behind if any part
-    fails. Returns the paths written."""
+    fails; ``family`` a :class:`~balance_cli.family.FamilyResult` for a section of its own.
+    Returns the paths written."""
     results = comparison.results
     figures = {
         "locus": lambda: plot.locus(results),
@@ -30,7 +32,7 @@ def write_report(target, comparison, balances, star_order, with_html, torques, s
         for file, kind, _, _ in PICTURES:
             plot.save(figures[kind](), folder / file)
             names.append(file)
-        content = blocks(comparison, balances, star_order, torques, scale)
+        content = blocks(comparison, balances, star_order, torques, scale, family)
         write_text(folder / "report.md", markdown(content))
         names.append("report.md")
         if with_html:

@@ -755,3 +755,57 @@ def search_tables(result, comparison, scale, fmt):
     if comparison is not None:
         out.append(compare_tables(comparison, scale, fmt))
     return "\n".join(out)
+
+
+def family_parts(result, scale):
+    """``balance family`` as (title, headers, rows, note), rendered from
+    ``FamilyResult.to_dict``: one row per number of cylinders."""
+    record = result.to_dict()
+    ml = scale.moment_label
+    power = ("" if record["power_per_cylinder_kW"] is None else
+             f", {figure(record['power_per_cylinder_kW'])} kW a cylinder")
+    title = (f"{record['name']}: the family, objective {record['objective']}, pitch "
+             f"{m_to_mm(record['pitch_m']):g} mm{power}")
+    headers = ["Cyl", "Firing order", "Found", f"M1V* ({ml})", f"M1H* ({ml})", f"M2V ({ml})",
+               f"M2H ({ml})", "PRU M1V*", "PRU M1H*", "PRU M2V", "PRU M2H", "H-type (order)",
+               "X-type (order)", "2nd-order compensator"]
+    rows = []
+    for row in record["rows"]:
+        pru = row["pru"]
+        cells = [str(row["cylinders"]), "-".join(map(str, row["firing_order"])), row["method"]]
+        # the first order with the rotating masses balanced, as the project guides give it
+        first = "_balanced" if "M1V_balanced_Nm" in row else ""
+        cells += [figure(scale.moment(row[f"M1{d}{first}_Nm"])) for d in "VH"]
+        cells += [figure(scale.moment(row[f"M2{d}_Nm"])) for d in "VH"]
+        entries = {} if pru is None else {e["order"]: e for e in pru["orders"]}
+        if pru is not None and pru["first_order_balanced"] is not None:
+            entries[1] = pru["first_order_balanced"]
+        for k in (1, 2):
+            for side in ("vertical", "horizontal"):
+                cells.append(_pru_text(entries[k], side) if k in entries else "—")
+        for key in ("h_type", "x_type"):
+            moment = row[key]
+            cells.append("—" if moment is None else
+                         f"{figure(scale.moment(moment['amplitude_Nm']))} ({moment['order']:g})")
+        compensator = row["second_order_compensator"]
+        cells.append("—" if compensator is None else "yes" if compensator else "no")
+        rows.append(cells)
+    notes = ["Found: exhaustive (proved best for the objective), heuristic (the best found, not "
+             "proved) or given. M1*: the first-order couple with counterweights for the rotating "
+             "masses (balance factor 0), as the project guides give it; M2 as the crank stands; "
+             "PRU in N·m/kW with the need for a compensator; H-type and X-type: the largest "
+             "guide-force moment of the orders analysed and its order (—: none up to order "
+             f"{record['max_order']}); a second-order compensator is indicated where M2's PRU "
+             "is likely or most likely to need one."]
+    missing = sorted({row["pru_note"] for row in record["rows"] if row["pru"] is None})
+    if missing:
+        notes.append("PRU —: " + "; ".join(missing) + ".")
+    return title, headers, rows, " ".join(notes)
+
+
+def family_tables(result, scale, fmt):
+    """``balance family`` as text or Markdown."""
+    heading = "#### " if fmt == "markdown" else ""
+    title, headers, rows, note = family_parts(result, scale)
+    return "\n".join([f"{heading}{_safe(fmt)(title)}", "", render(headers, rows, fmt), "", note,
+                      ""])
