@@ -34,7 +34,8 @@ from the kinetic energy), the crank pins' masses turning at constant radius addi
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import functools
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -63,12 +64,26 @@ class CylinderGuide:
 
     number: int
     z_m: float
-    force: object
-    couple: object
+    force_curve: object
+    couple_curve: object
+    series: object = field(repr=False, compare=False, default=None)
+
+    # the orders of every cylinder's curves cost more than all else the JSON needs: they are
+    # found when asked for
+    @functools.cached_property
+    def force(self):
+        return self.series(self.force_curve, "N")
+
+    @functools.cached_property
+    def couple(self):
+        return self.series(self.couple_curve, "Nm")
 
     def to_dict(self) -> dict:
-        return {"cylinder": self.number, "z_m": self.z_m, "force": self.force.to_dict(),
-                "couple": self.couple.to_dict()}
+        """The cylinder's largest guide force and couple over the cycle (the orders are the
+        API's: :attr:`force`, :attr:`couple`)."""
+        return {"cylinder": self.number, "z_m": self.z_m,
+                "max_force_N": float(np.abs(self.force_curve).max()),
+                "max_couple_Nm": float(np.abs(self.couple_curve).max())}
 
 
 @dataclass(frozen=True)
@@ -132,6 +147,8 @@ def _lateral(engine, state, net_pressure, area, turns):
         row.setdefault(int(owner), index)   # a cylinder's piston comes before its knuckle
     rod_row = {int(c): i for i, c in enumerate(rods.cylinder)}
     rates = (np.conj(rods.directions) * _derivative(rods.directions)).imag
+    # every mass's acceleration in one transform
+    accelerations = _accelerations(masses.positions, omega)
     angular = omega**2 * _derivative(rates).real
     offset = engine.pin_offset_m
     link_moments: dict = {}
@@ -149,7 +166,7 @@ def _lateral(engine, state, net_pressure, area, turns):
         if n in link_moments:
             w = w - link_moments[n]
         w = w / length
-        a = np.tile(_accelerations(piston, omega) * np.conj(axis), turns)
+        a = np.tile(accelerations[row[n]] * np.conj(axis), turns)
         local = np.tile(u * np.conj(axis), turns)
         m = cyl.reciprocating_kg
         t = (w * local.imag - gas - m * a.real) / local.real
@@ -181,8 +198,8 @@ def guide_forces(engine, state, net_pressure, area, turns, series) -> GuideForce
     forces, couples = _lateral(engine, state, net_pressure, area, turns)
     mean = engine.mean_z_m
     lever = engine.rod_length_m
-    cylinders = tuple(CylinderGuide(c.number, c.z_m, series(forces[c.number], "N"),
-                                    series(couples[c.number], "Nm")) for c in engine.cylinders)
+    cylinders = tuple(CylinderGuide(c.number, c.z_m, forces[c.number], couples[c.number], series)
+                      for c in engine.cylinders)
     h = sum(couples[c.number] for c in engine.cylinders)
     x = sum(couples[c.number] * (c.z_m - mean) for c in engine.cylinders) / lever
     return GuideForces(series(h, "Nm"), series(x, "Nm"), lever, mean, cylinders)
