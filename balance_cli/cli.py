@@ -863,9 +863,10 @@ def _search_progress():
 @main.command()
 @click.argument("template_path", metavar="TEMPLATE.toml")
 @click.option("--objective", default=None, metavar="TERMS",
-              help="What to minimise: coefficients such as M1,M2 or F2:4,M1,M2 (F force, M moment, "
-                   "the order, + or - for the forward or backward part only, :weight, default "
-                   "1). Default: every F_k and M_k up to --max-order.")
+              help="What to minimise: coefficients such as M1,M2 or F2:4,M1,M2,X4 (F force, M "
+                   "moment, H and X the H- and X-type guide-force moments, the order, + or - for "
+                   "a force's or moment's forward or backward part only, :weight, default 1). "
+                   "Default: every F_k and M_k up to --max-order.")
 @click.option("--top", default=10, show_default=True, type=int, metavar="K",
               help="How many arrangements to list (ties ranked by firing order).")
 @click.option("--allow-uneven", is_flag=True,

@@ -749,7 +749,9 @@ def search_tables(result, comparison, scale, fmt):
     out = [safe(line) + ("  " if fmt == "markdown" else "") for line in search_summary(result)]
     headers, rows = search_rows(result)
     out += ["", f"{heading}Best arrangements (coefficients: F_k in one throw's largest order-k "
-            "force, M_k in that force × the mean throw pitch)", "", render(headers, rows, fmt), ""]
+            "force, M_k in that force × the mean throw pitch; H_k and X_k in one throw's order-k "
+            "guide-force couple, X_k also per mean throw pitch)", "", render(headers, rows, fmt),
+            ""]
     if _coefficient_names(result)[1]:
         out += ["The objective's other coefficients are 0 in every arrangement listed.", ""]
     if comparison is not None:
