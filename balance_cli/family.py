@@ -13,18 +13,15 @@ import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
-from .analysis import DOCUMENT_VERSION
+from .analysis import DOCUMENT_VERSION, analyse
 from .config import build
+from .cranksearch import DEFAULT_LIMIT, search
 from .errors import AnalysisError, BalanceError
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES
+from .torques import torque
 
-__all__ = ["FamilyRow", "FamilyResult", "family", "default_objective",
-           "DEFAULT_FAMILY_OBJECTIVE"]
+__all__ = ["FamilyRow", "FamilyResult", "family", "default_objective"]
 
-#: what the family's firing orders minimise by default, with weights that make it newton-metres
-#: (see :func:`default_objective`): the first-order couple left once counterweights balance
-#: the rotating masses, plus the second-order couple
-DEFAULT_FAMILY_OBJECTIVE = "M1-:w,M2"
 #: the PRU classes that call for a second-order compensator
 _COMPENSATOR = ("likely", "most likely")
 
@@ -121,8 +118,6 @@ def default_objective(data, path, samples, max_order):
     physically only weighted by those forces: 2·|M1⁻| is the first-order couple left with the
     rotating masses balanced (what the reciprocating masses make: forward and backward halves
     alike), |M2| the second-order couple. Returns "M1-:w,M2" with w = 2·F1/F2 of one throw."""
-    from .analysis import analyse
-
     one = {k: v for k, v in data.items() if k not in ("throws", "power", "firing_order")}
     one["throws"] = [{"z": "0 m"}]
     orders = analyse(build(one, path, template=True), samples, max(2, min(max_order, 2))).shaking
@@ -172,9 +167,6 @@ def family(data: dict, path: str, cylinders: Sequence[int], objective: str | Non
     AnalysisError, ConfigError
         naming the parameter, or the file and key
     """
-    from .cranksearch import DEFAULT_LIMIT, search
-    from .torques import torque
-
     counts = _counts(cylinders)
     data = {k: v for k, v in data.items() if k != "firing_order"}
     data["throws"] = [{k: v for k, v in t.items() if k != "phase"} for t in data.get("throws", [])]
@@ -214,8 +206,6 @@ def family(data: dict, path: str, cylinders: Sequence[int], objective: str | Non
             order = list(firing_orders[n])
             case["throws"] = [{**t, "phase": p} for t, p in zip(throws, _even_phases(order, n))]
             case["firing_order"] = order
-            from .analysis import analyse
-
             result = analyse(build(case, path), samples, max_order)
             method, score = "given", None
         else:
