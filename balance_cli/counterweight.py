@@ -125,7 +125,7 @@ class RollingMoment:
         return phasor_deg(complex(self.cos_nm, self.sin_nm))
 
     def to_dict(self) -> dict:
-        entry = {"order": self.order, "cos_Nm": self.cos_nm, "sin_Nm": self.sin_nm,
+        entry: dict = {"order": self.order, "cos_Nm": self.cos_nm, "sin_Nm": self.sin_nm,
                  "amplitude_Nm": self.amplitude_nm, "phase_deg": self.phase_deg}
         if self.speed_ratios:
             entry["speed_ratios"] = list(self.speed_ratios)

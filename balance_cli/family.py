@@ -12,6 +12,7 @@ indicated.
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 from .analysis import DOCUMENT_VERSION, analyse
 from .config import build
@@ -39,8 +40,8 @@ class FamilyRow:
     cylinders: int
     method: str
     score: float | None
-    result: object
-    guide: object
+    result: Any
+    guide: Any
 
     def to_dict(self) -> dict:
         record = self.result.to_dict()
@@ -210,13 +211,14 @@ def family(data: dict, path: str, cylinders: Sequence[int], objective: str | Non
             method, score = "given", None
         else:
             engine = build(case, path, template=True)
-            kwargs = dict(top=1, workers=workers, samples=samples, max_order=max_order)
             try:
-                found = search(engine, objective, limit=limit or DEFAULT_LIMIT, **kwargs)
+                found = search(engine, objective, top=1, workers=workers,
+                               limit=limit or DEFAULT_LIMIT, samples=samples, max_order=max_order)
             except BalanceError as exc:
                 if getattr(exc, "parameter", None) != "limit":
                     raise
-                found = search(engine, objective, heuristic=True, **kwargs)
+                found = search(engine, objective, top=1, heuristic=True, samples=samples,
+                               max_order=max_order)
             best = found.arrangements[0]
             result, method, score = best.result, found.method, best.score
         guide = torque(result.engine, samples, max_order, bearings=False).guide

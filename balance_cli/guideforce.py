@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import functools
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -64,9 +65,9 @@ class CylinderGuide:
 
     number: int
     z_m: float
-    force_curve: object
-    couple_curve: object
-    series: object = field(repr=False, compare=False, default=None)
+    force_curve: np.ndarray
+    couple_curve: np.ndarray
+    series: Any = field(repr=False, compare=False, default=None)
 
     # the orders of every cylinder's curves cost more than all else the JSON needs: they are
     # found when asked for
@@ -104,8 +105,8 @@ class GuideForces:
         in the engine's cylinder order
     """
 
-    h_type: object
-    x_type: object
+    h_type: Any
+    x_type: Any
     lever_m: float
     mean_z_m: float
     cylinders: tuple

@@ -365,8 +365,8 @@ class Engine:
     @property
     def power_at_speed_w(self) -> float | None:
         """``power_w`` when it is given at the speed the engine runs at, else None, W."""
-        if self.power_w is None or not math.isclose(self.power_speed_rad_s, self.speed_rad_s,
-                                                    rel_tol=1e-12):
+        if self.power_w is None or self.power_speed_rad_s is None or \
+                not math.isclose(self.power_speed_rad_s, self.speed_rad_s, rel_tol=1e-12):
             return None
         return self.power_w
 

@@ -24,6 +24,7 @@ import math
 import warnings
 from dataclasses import dataclass
 from functools import cached_property
+from typing import Any
 
 import numpy as np
 
@@ -241,7 +242,7 @@ class TorqueResult:
     max_order: int = DEFAULT_MAX_ORDER
     steadiness: Steadiness | None = None
     flywheel_kgm2: float | None = None
-    guide: object = None
+    guide: Any = None
 
     @property
     def period_deg(self) -> float:

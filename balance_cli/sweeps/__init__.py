@@ -22,6 +22,7 @@ import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -244,7 +245,8 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
     except ConfigError as exc:
         if exc.key not in (overrides or {}):
             raise
-        raise SweepError(f"{exc.key} = {overrides[exc.key]!r}: {exc.problem}", "overrides") from None
+        raise SweepError(f"{exc.key} = {(overrides or {})[exc.key]!r}: {exc.problem}",
+                         "overrides") from None
     wanted = quantities_of(quantities, max_order)
     if param.kind == FRACTION:
         # what the counterweights of each factor leave, not what an ideal one would
@@ -289,7 +291,7 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
             "what it would (a cylinder's own value overrides [links] and [masses], [parts] "
             "derive the lumped masses); vary that key instead", "parameter")
 
-    torque_of = None
+    torque_of: Any = None
     if torque_wanted:
         from ..torques import torque as torque_of   # the torques load scipy for the steadiness
 

@@ -235,7 +235,7 @@ def parameter_of(data: dict, key: str, path: str = "<config>") -> Parameter:
                  else f"no [[{head}]] tables")
         raise _refused(text, f"{path} has {where}" + (" (numbered from 1)" if count else ""),
                        data, path, listing=False)
-    row = rows[index - 1]
+    row = rows[index - 1] if isinstance(rows, list) else None
     return Parameter(text, SCHEMA[array][name], (head, index - 1, name),
                      row.get(name) if isinstance(row, dict) else None)
 
