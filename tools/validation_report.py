@@ -29,7 +29,8 @@ def _cell(text):
 def render():
     rows = evaluate.rows()
     papers = {p["paper"]["key"]: p["paper"]
-              for p in sorted(evaluate.papers(), key=lambda p: p["paper"]["seed"])}
+              for p in sorted(evaluate.papers(),
+                                     key=lambda p: p["paper"].get("seed", "~" + p["paper"]["key"]))}
     errata = evaluate.errata()
     verdicts = Counter("erratum" if r.erratum else r.verdict for r in rows)
     lines = [
@@ -50,8 +51,14 @@ def render():
     ]
     for key, paper in papers.items():
         mine = [r for r in rows if r.paper == key]
-        lines += [f"## {paper['title']}", "", f"Transcription: `shared/seeds/{paper['seed']}`.", "",
-                  "| id | where | quantity | unit | published | ours | deviation | tolerance | verdict | reason |",
+        # a seed paper's transcription, or a maker's document by its address (and a note of what
+        # its figures allow to be checked)
+        origin = (f"Transcription: `shared/seeds/{paper['seed']}`." if "seed" in paper
+                  else f"Source: <{paper['url']}>.")
+        lines += [f"## {paper['title']}", "", origin, ""]
+        if "note" in paper:
+            lines += [paper["note"].strip(), ""]
+        lines += ["| id | where | quantity | unit | published | ours | deviation | tolerance | verdict | reason |",
                   "|---|---|---|---|---:|---:|---:|---:|---|---|"]
         for r in mine:
             lines.append(

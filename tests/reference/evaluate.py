@@ -20,6 +20,7 @@ import fraeys_series
 
 from balance_cli import analyse, load
 from balance_cli.kinematics import linkage
+from balance_cli.marine import power_related_unbalance
 from balance_cli.flywheel import steadiness
 from balance_cli.torques import torque
 from balance_cli.model import Cylinder, Engine, Throw
@@ -260,7 +261,29 @@ def _quantity(record, frames):
         return _gamma_sum(record["radii_mm"], record["crank_radius_mm"], int(words[1]), int(words[2]))
     if kind == "series":
         return _series_check(words[1], record)
+    if kind == "pru":
+        return _pru(record, words[1], int(words[2]))
     raise ValueError(f"{record['id']}: unknown quantity {record['quantity']!r}")
+
+
+def _pru(record, part, k):
+    """``pru V K``, ``pru H K``, ``pru max K``: the power related unbalance (N·m/kW) of the
+    order-K pitching (V) or yawing (H) moment, or the larger of the two, from the library's
+    :func:`power_related_unbalance` and the configuration's ``power``. With ``over`` (a second
+    configuration), the ratio of the two engines' PRU: the project guides tabulate one engine
+    type at several cylinder numbers, and a ratio cancels the maker's masses and dimensions
+    that are common to the family, leaving the firing orders and cylinder numbers."""
+    def value(config):
+        engine = _variant({**record, "config": config})
+        pru, why = power_related_unbalance(_result(engine, record), orders=(k,))
+        if pru is None:
+            raise ValueError(f"{record['id']}: no PRU for {config}: {why}")
+        entry = pru.orders[0]
+        v, h = entry["vertical_Nm_per_kW"], entry["horizontal_Nm_per_kW"]
+        return {"V": v, "H": h, "max": max(v, h)}[part]
+
+    ours = value(record["config"])
+    return ours / value(record["over"]) if "over" in record else ours
 
 
 def _torque_value(result, part, words):
