@@ -340,7 +340,9 @@ def compare(results: "Iterable[EngineResult]", reference: str | None = None,
         pru_classes = check_classes(pru_classes)
     if pru_orders is None:
         pru_orders = tuple(k for k in (1, 2) if k <= results[0].max_order)
-    pru_orders = tuple(pru_orders) if isinstance(pru_orders, (list, tuple)) else pru_orders
+    # an order asked twice is judged once
+    pru_orders = (tuple(dict.fromkeys(pru_orders)) if isinstance(pru_orders, (list, tuple))
+                  else pru_orders)
     if not isinstance(pru_orders, tuple) or not pru_orders or not all(
             isinstance(k, int) and not isinstance(k, bool) and 1 <= k <= results[0].max_order
             for k in pru_orders):

@@ -1089,7 +1089,11 @@ def _counts_option(text):
     try:
         for token in text.split(","):
             low, _, high = token.strip().partition("-")
-            counts += range(int(low), int(high or low) + 1)
+            low, high = int(low), int(high or low)
+            if high < low:
+                raise click.BadParameter(f"{token.strip()!r} runs backwards: write the smaller "
+                                         f"number first ({high}-{low})", param_hint="--cylinders")
+            counts += range(low, high + 1)
     except ValueError:
         raise click.BadParameter(f"{text!r}: give numbers of cylinders such as 5-12 or 6,7,8",
                                  param_hint="--cylinders") from None
@@ -1102,10 +1106,15 @@ def _firing_orders_option(values):
     for value in values:
         count, _, order = value.partition(":")
         try:
-            orders[int(count)] = [int(c) for c in order.replace(",", "-").split("-")]
+            n = int(count)
+            cylinders = [int(c) for c in order.replace(",", "-").split("-")]
         except ValueError:
             raise click.BadParameter(f"{value!r}: write the number of cylinders and the order, "
                                      "such as 6:1-5-3-4-2-6", param_hint="--firing-order") from None
+        if n in orders:
+            raise click.BadParameter(f"{n} cylinders are given twice; give one firing order for "
+                                     "each number of cylinders", param_hint="--firing-order")
+        orders[n] = cylinders
     return orders
 
 
@@ -1150,7 +1159,7 @@ def family_(path, counts, objective, firing_orders, pitch, power, workers, sampl
     given = _firing_orders_option(firing_orders)
     _guard([output], [Path(path)])
     _settings(samples, max_order)
-    pitch_m = _length_option(pitch, "--pitch")
+    pitch_m = _quantity_option(pitch, "--pitch", "length")
     power_w = _quantity_option(power, "--power-per-cylinder", "power")
     flags = {"cylinders": "--cylinders", "pitch_m": "--pitch", "firing_orders": "--firing-order",
              "objective": "--objective", "workers": "--workers", "template": path}

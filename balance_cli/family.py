@@ -93,11 +93,13 @@ class FamilyResult:
     rows: tuple
     samples: int
     max_order: int
+    has_gas: bool = False
 
     def to_dict(self) -> dict:
         """What ``balance family --format json`` writes (SI; see the README)."""
         return {"balance_version": DOCUMENT_VERSION, "name": self.name, "config": self.config,
                 "objective": self.objective, "pitch_m": self.pitch_m,
+                "guide_forces_from": "gas and inertia" if self.has_gas else "inertia only",
                 "power_per_cylinder_kW": None if self.power_per_cylinder_w is None
                 else self.power_per_cylinder_w / 1e3,
                 "samples": self.samples, "max_order": self.max_order,
@@ -188,13 +190,15 @@ def family(data: dict, path: str, cylinders: Sequence[int], objective: str | Non
         power_per_cylinder_w = template.power_w / template.n_cylinders
     firing_orders = dict(firing_orders or {})
     for n, order in firing_orders.items():
-        if n not in counts or sorted(order) != list(range(1, n + 1)):
-            raise AnalysisError(f"{n}: {list(order)} is not a firing order of {n} cylinders "
-                                f"among the counts asked ({counts[0]} to {counts[-1]})",
-                                "firing_orders")
+        if n not in counts:
+            raise AnalysisError(f"gives {n} cylinders, which are not among the numbers asked "
+                                f"({', '.join(map(str, counts))})", "firing_orders")
+        if sorted(order) != list(range(1, n + 1)):
+            raise AnalysisError(f"{n}: {list(order)} is not a firing order of {n} cylinders: "
+                                f"name each of 1 to {n} once", "firing_orders")
         if template.cycle != 2:
-            raise AnalysisError("are taken at even intervals of a two-stroke; a four-stroke's "
-                                "firing order does not fix its crank", "firing_orders")
+            raise AnalysisError("fit a two-stroke only (its firing order at even intervals "
+                                "fixes the crank; a four-stroke's does not)", "firing_orders")
     objective = objective or default_objective(data, path, samples, max_order)
     rows = []
     for done, n in enumerate(counts):
@@ -221,10 +225,12 @@ def family(data: dict, path: str, cylinders: Sequence[int], objective: str | Non
                                max_order=max_order)
             best = found.arrangements[0]
             result, method, score = best.result, found.method, best.score
-        guide = torque(result.engine, samples, max_order, bearings=False).guide
+        # an n-cylinder's H-type moment lives at order n: analyse the torques that far
+        orders = max(max_order, n) if samples >= 4 * n + 1 else max_order
+        guide = torque(result.engine, samples, orders, bearings=False).guide
         rows.append(FamilyRow(n, method, score, result, guide))
         if progress is not None:
             progress(done + 1, len(counts))
     return FamilyResult(data.get("name", ""), path, objective, pitch_m, power_per_cylinder_w,
-                        tuple(rows), samples, max_order)
+                        tuple(rows), samples, max_order, template.gas is not None)
 

@@ -128,8 +128,8 @@ _CASE_SENSITIVE = {"m": "small m is milli (or metre), capital M mega",
 
 
 #: what may follow a prefix letter: the base symbols a milli-, mega-, pico- or peta- could
-#: stand before in balance's units (metre, gram, pascal, bar, newton), or nothing
-_PREFIXED = {"", "m", "g", "pa", "bar", "n"}
+#: stand before in balance's units (metre, gram, pascal, bar, newton, watt), or nothing
+_PREFIXED = {"", "m", "g", "pa", "bar", "n", "w"}
 
 
 def _case_clash(written, meant):

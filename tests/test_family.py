@@ -115,3 +115,32 @@ def test_table_csv_and_errors(tmp_path):
     out = run("family", CONFIGS / "inline-4-car.toml", "--cylinders", "4",
               "--firing-order", "4:1-3-4-2")
     assert out.exit_code == 1 and "two-stroke" in out.output
+
+
+def test_the_h_type_moment_of_n_cylinders_is_found_at_order_n():
+    """An N-cylinder two-stroke's H-type moment lies at order N (N × one cylinder's), above the
+    default eighth order for nine cylinders: the family analyses the torques that far."""
+    (row,) = family(load_data(MARINE), str(MARINE), [9], workers=1).rows
+    record = row.to_dict()
+    assert record["h_type"]["order"] == 9 and record["h_type"]["amplitude_Nm"] > 0
+
+
+def test_the_table_says_what_the_guide_forces_include_and_the_csv_has_the_balanced_pru():
+    text = run("family", MARINE, "--cylinders", "5").output
+    assert "guide-force moments from inertia only" in text
+    csv_lines = run("family", MARINE, "--cylinders", "5", "--format", "csv").output.splitlines()
+    header, values = csv_lines[0].split(","), csv_lines[1].split(",")
+    row = dict(zip(header, values))
+    # the table's PRU M1V* is the balanced one: M1V_balanced / (5 × 2380 kW)
+    assert_allclose(float(row["PRU_M1V_balanced_Nm_per_kW"]),
+                    float(row["M1V_balanced_Nm"]) / 11900.0, rtol=1e-12)
+
+
+def test_family_options_in_words():
+    for args, words in ((["--cylinders", "12-5"], "runs backwards"),
+                        (["--cylinders", "6", "--firing-order", "7:1-2-3-4-5-6-7"],
+                         "not among the numbers asked"),
+                        (["--cylinders", "6", "--firing-order", "6:1-5-3-4-2-6",
+                          "--firing-order", "6:1-4-2-6-3-5"], "given twice")):
+        out = run("family", MARINE, *args)
+        assert out.exit_code in (1, 2) and words in out.output, out.output

@@ -138,3 +138,16 @@ def test_no_power_no_table_and_a_rotary_has_no_balanced_first_order():
     record = json.loads(run("compare", CONFIGS / "clerget-rotary.toml", "--power", "97 kW",
                             "--format", "json").output)["engines"][0]
     assert record["pru"]["first_order_balanced"] is None
+
+
+def test_milliwatts_and_megawatts_are_not_guessed():
+    for text in ("14280 mW", "14.28 mw"):
+        with pytest.raises(balance.UnitError, match="milli"):
+            parse_quantity(text, "power")
+    assert parse_quantity("14.28 MW", "power") == pytest.approx(14.28e6, rel=1e-15)
+
+
+def test_an_order_asked_twice_is_judged_once():
+    record = json.loads(run("compare", MARINE, "--pru-orders", "2,2", "--format",
+                            "json").output)["engines"][0]
+    assert [e["order"] for e in record["pru"]["orders"]] == [2]

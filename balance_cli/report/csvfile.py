@@ -153,7 +153,8 @@ def family_csv(result):
     writer = csv.writer(buffer, lineterminator="\n")
     moments = [f"M{k}{d}_Nm" for k in (1, 2) for d in "VH"] + ["M1V_balanced_Nm",
                                                                 "M1H_balanced_Nm"]
-    pru = [f"PRU_M{k}{d}_Nm_per_kW" for k in (1, 2) for d in "VH"]
+    pru = [f"PRU_M{k}{d}_Nm_per_kW" for k in (1, 2) for d in "VH"] + [
+        "PRU_M1V_balanced_Nm_per_kW", "PRU_M1H_balanced_Nm_per_kW"]
     writer.writerow(["cylinders", "firing_order", "method", "score"] + moments + ["power_kW"]
                     + pru + ["h_type_order", "h_type_Nm", "x_type_order", "x_type_Nm",
                              "second_order_compensator"])
@@ -161,6 +162,9 @@ def family_csv(result):
         entries = {} if row["pru"] is None else {e["order"]: e for e in row["pru"]["orders"]}
         values = [entries[k][f"{side}_Nm_per_kW"] if k in entries else None
                   for k in (1, 2) for side in ("vertical", "horizontal")]
+        balanced = None if row["pru"] is None else row["pru"]["first_order_balanced"]
+        values += [None if balanced is None else balanced[f"{side}_Nm_per_kW"]
+                   for side in ("vertical", "horizontal")]
         guides = []
         for key in ("h_type", "x_type"):
             moment = row[key]

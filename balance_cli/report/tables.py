@@ -662,6 +662,9 @@ def torque_tables(results, scale, fmt):
                         f"Smallest ({fl})"], rows, fmt), ""]
         if r.guide is not None:
             out += _guide_force_lines(r.guide, scale, fmt)
+        elif engine.is_rotary:
+            out += ["Guide-force moments: none on a rotary; its cylinders turn with the crankcase, "
+                    "so the guide forces are the frame's own.", ""]
         if r.steadiness is not None:
             out += [steadiness_text(r.steadiness, r.flywheel_kgm2), ""]
     return "\n".join(out)
@@ -767,7 +770,8 @@ def family_parts(result, scale):
     power = ("" if record["power_per_cylinder_kW"] is None else
              f", {figure(record['power_per_cylinder_kW'])} kW a cylinder")
     title = (f"{record['name']}: the family, objective {record['objective']}, pitch "
-             f"{m_to_mm(record['pitch_m']):g} mm{power}")
+             f"{m_to_mm(record['pitch_m']):g} mm{power}; guide-force moments from "
+             f"{record['guide_forces_from']}")
     headers = ["Cyl", "Firing order", "Found", f"M1V* ({ml})", f"M1H* ({ml})", f"M2V ({ml})",
                f"M2H ({ml})", "PRU M1V*", "PRU M1H*", "PRU M2V", "PRU M2H", "H-type (order)",
                "X-type (order)", "2nd-order compensator"]
@@ -796,12 +800,13 @@ def family_parts(result, scale):
              "proved) or given. M1*: the first-order couple with counterweights for the rotating "
              "masses (balance factor 0), as the project guides give it; M2 as the crank stands; "
              "PRU in N·m/kW with the need for a compensator; H-type and X-type: the largest "
-             "guide-force moment of the orders analysed and its order (—: none up to order "
-             f"{record['max_order']}); a second-order compensator is indicated where M2's PRU "
+             f"guide-force moment ({record['guide_forces_from']}: a [gas] table adds the gas "
+             "forces) of the orders analysed (at least up to the number of cylinders) and its "
+             "order; a second-order compensator is indicated where M2's PRU "
              "is likely or most likely to need one."]
     missing = sorted({row["pru_note"] for row in record["rows"] if row["pru"] is None})
     if missing:
-        notes.append("PRU —: " + "; ".join(missing) + ".")
+        notes.append("PRU —: " + "; ".join(missing) + " (--power-per-cylinder gives it).")
     return title, headers, rows, " ".join(notes)
 
 
