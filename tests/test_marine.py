@@ -151,3 +151,16 @@ def test_an_order_asked_twice_is_judged_once():
     record = json.loads(run("compare", MARINE, "--pru-orders", "2,2", "--format",
                             "json").output)["engines"][0]
     assert [e["order"] for e in record["pru"]["orders"]] == [2]
+
+
+def test_a_sweep_of_power_gives_the_pru_by_hand():
+    """PRU2V = M2V / P at every point; the power alone changes nothing else, so a sweep of it
+    without a PRU quantity is refused; a sweep of speed does not carry the file's power to
+    other speeds."""
+    swept = balance.sweep(str(MARINE), "power", ["10 MW", "20 MW"], quantities="M2V,PRU2V")
+    for point, kw in zip(swept.points, (1e4, 2e4)):
+        assert_allclose(point["PRU2V_Nm_per_kW"], point["M2V_Nm"] / kw, rtol=1e-12)
+    with pytest.raises(balance.SweepError, match="PRU"):
+        balance.sweep(str(MARINE), "power", ["10 MW", "20 MW"], quantities="M2V")
+    with pytest.raises(balance.SweepError, match="given at 105 rpm"):
+        balance.sweep(str(MARINE), "speed", ["90 rpm", "105 rpm"], quantities="PRU2V")

@@ -16,7 +16,7 @@ __all__ = ["sweep_tables", "sweep_csv", "sweep_figure", "axis_values"]
 
 #: kinds of quantity drawn on one axes each, in this order, and their axis titles
 _GROUPS = (("force", "Force"), ("moment", "Free moment"), ("torque", "Torque"),
-           ("steadiness", "Steadiness"))
+           ("steadiness", "Steadiness"), ("pru", "PRU (N·m/kW)"))
 
 
 def _label(quantity, units):

@@ -271,6 +271,10 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
         raise SweepError(f"needs a gas torque to drive the engine, but {path} has no [gas] "
                          "table", "quantities")
 
+    if param.key == "power" and not any(q.kind == "pru" for q in wanted):
+        raise SweepError("power changes only the power related unbalance: ask for PRU<k>V or "
+                         "PRU<k>H (PRU2V), or vary another key", "parameter")
+
     # every point is built before any is analysed: a bad value is reported at once
     engines, values_si = [], []
     for value in values:
@@ -280,6 +284,10 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
                 engine = base
             else:
                 engine = build(_with_value(data, param, value), path)
+                if engine.power_w is not None and engine.speed_rad_s != base.speed_rad_s \
+                        and param.key != "power":
+                    # the file's power is given at the file's speed, not at the point's
+                    engine = engine.replace(power_speed_rad_s=base.speed_rad_s)
             values_si.append(_si(param, value) + 0.0)
         except BalanceError as exc:
             raise _point_error(exc, param, value, path) from None
@@ -329,7 +337,12 @@ def _measure(result, wanted, param, value, samples, max_order, torque_of, inerti
                             load=load, bearings=False)
     record = {}
     for q in wanted:
-        if q.order is not None:
+        if q.kind == "pru":
+            pru, why = result.power_related_unbalance(orders=(q.order,))
+            if pru is None:
+                raise SweepError(f"{q.name} at this point: {why}", "quantities")
+            record[q.column] = pru.orders[0][f"{q.part}_Nm_per_kW"]
+        elif q.order is not None:
             record[q.column] = orders[q.order - 1][q.kind][f"{q.part}_{q.unit}"]
         elif q.name == "largest_force":
             record[q.column] = largest_force

@@ -52,9 +52,10 @@ _NAMED = {
 }
 #: what ``quantities`` may name, for messages and help texts
 QUANTITY_NAMES = ("F<k>", "F<k>V", "F<k>H", "F<k>+", "F<k>-", "M<k>", "M<k>V", "M<k>H", "M<k>+",
-                  "M<k>-") + tuple(_NAMED)
+                  "M<k>-", "PRU<k>V", "PRU<k>H") + tuple(_NAMED)
 DEFAULT_QUANTITIES = ("largest_force", "largest_moment")
 _ORDER_QUANTITY = re.compile(r"^([FM])(\d+)(V|H|\+|-)?$", re.IGNORECASE)
+_PRU_QUANTITY = re.compile(r"^PRU(\d+)(V|H)$", re.IGNORECASE)
 
 
 def quantities_of(names, max_order: int = DEFAULT_MAX_ORDER) -> tuple:
@@ -97,6 +98,18 @@ def quantities_of(names, max_order: int = DEFAULT_MAX_ORDER) -> tuple:
             canonical = f"{letter}{order}{part}"
             out.append(Quantity(canonical, f"{canonical}_{unit}", unit, what,
                                 f"order-{order} free {what}, {words}", order, key))
+            continue
+        match = _PRU_QUANTITY.match(name)
+        if match:
+            order, part = int(match.group(1)), match.group(2).upper()
+            if not 1 <= order <= max_order:
+                raise SweepError(f"names {name!r}, order {order}, outside the orders analysed "
+                                 f"(1 to {max_order})", "quantities")
+            side = "vertical" if part == "V" else "horizontal"
+            out.append(Quantity(f"PRU{order}{part}", f"PRU{order}{part}_Nm_per_kW", "", "pru",
+                                f"power related unbalance of the order-{order} "
+                                f"{'pitching' if part == 'V' else 'yawing'} moment, N·m/kW",
+                                order, side))
             continue
         lowered = name.lower()
         if lowered in _NAMED:
