@@ -245,6 +245,12 @@ class TorqueResult:
     guide: Any = None
 
     @property
+    def indicated_power_kw(self) -> float | None:
+        """The gas's mean torque × ω, kW: the indicated power of the [gas] cycle or of a
+        pressure file (None without a gas torque)."""
+        return None if self.gas is None else self.gas.mean * self.engine.speed_rad_s / 1e3
+
+    @property
     def period_deg(self) -> float:
         return self.total.period_deg
 
@@ -259,6 +265,7 @@ class TorqueResult:
             "inertia": self.inertia.to_dict(), "frame": self.frame.to_dict(),
             "tilting": self.tilting.to_dict(),
             "gas": None if self.gas is None else self.gas.to_dict(),
+            "indicated_power_kW": self.indicated_power_kw,
             "total": self.total.to_dict(),
             "bearing": {
                 "crank_pins": [p.to_dict(self.max_order, engine.noise_floor_n) for p in self.pins],

@@ -164,3 +164,22 @@ def test_a_sweep_of_power_gives_the_pru_by_hand():
         balance.sweep(str(MARINE), "power", ["10 MW", "20 MW"], quantities="M2V")
     with pytest.raises(balance.SweepError, match="given at 105 rpm"):
         balance.sweep(str(MARINE), "speed", ["90 rpm", "105 rpm"], quantities="PRU2V")
+
+
+def test_torque_gives_the_indicated_power_of_a_pressure_file_or_gas_cycle(tmp_path):
+    """balance torque's indicated power is the mean gas torque × ω; for the Dragonfly's [gas]
+    cycle it is compare's imep · swept volume · cycles a second (the gas torque at 256 samples
+    is converged to about 5e-5)."""
+    engine = balance.load(CONFIGS / "abc-dragonfly.toml")
+    torques = balance.torque(engine)
+    assert_allclose(torques.indicated_power_kw, torques.gas.mean * engine.speed_rad_s / 1e3,
+                    rtol=1e-15)
+    compared = balance.analyse(engine).to_dict()["power_kW"]
+    assert_allclose(torques.indicated_power_kw, compared, rtol=1e-4)
+    document = json.loads(run("torque", CONFIGS / "abc-dragonfly.toml", "--format", "json").output)
+    assert_allclose(document["engines"][0]["indicated_power_kW"], torques.indicated_power_kw,
+                    rtol=1e-12)
+    assert "Indicated power (mean gas torque × ω): 282.1 kW." in run(
+        "torque", CONFIGS / "abc-dragonfly.toml").output
+    assert json.loads(run("torque", CONFIGS / "inline-4-car.toml", "--format",
+                          "json").output)["engines"][0]["indicated_power_kW"] is None

@@ -643,6 +643,8 @@ def torque_tables(results, scale, fmt):
                 "kg·m².", "",
                 render(["Torque", f"Mean ({ml})", f"Max ({ml})", f"Min ({ml})", f"Range ΔC ({ml})"],
                        _torque_rows(r, scale), fmt), ""]
+        if r.indicated_power_kw is not None:
+            out += [f"Indicated power (mean gas torque × ω): {figure(r.indicated_power_kw)} kW.", ""]
         largest = max(math.hypot(c, s) for _, c, s in r.total.orders) if r.total.orders else 0.0
         out += [f"Orders of the total torque ({'gas and inertia' if r.gas else 'inertia only'}; "
                 "amplitude·cos(kθ − phase); orders below a thousandth of the largest left out):", "",
