@@ -172,14 +172,19 @@ def load_data(path: "str | os.PathLike[str]") -> dict:
     ConfigError
         naming the file, the key and the fix
     """
-    text = _read_text(Path(checks.path(path)))
-    data = _parse(text, str(path))
+    data = _read_data(path)
+    build(as_template(data), str(path), template=True)
+    return data
+
+
+def as_template(data: dict) -> dict:
+    """A configuration's parsed TOML without its throws' phases and firing order: a search
+    template of the same engine."""
     template = {k: v for k, v in data.items() if k != "firing_order"}
     if isinstance(template.get("throws"), list):
         template["throws"] = [{k: v for k, v in t.items() if k != "phase"} if isinstance(t, dict)
                               else t for t in template["throws"]]
-    build(template, str(path), template=True)
-    return data
+    return template
 
 
 def load_template(path: "str | os.PathLike[str]") -> tuple[Engine, dict]:
@@ -192,9 +197,12 @@ def load_template(path: "str | os.PathLike[str]") -> tuple[Engine, dict]:
     ConfigError
         naming the file, the key and the fix
     """
-    text = _read_text(Path(checks.path(path)))
-    data = _parse(text, str(path))
+    data = _read_data(path)
     return build(data, str(path), template=True), data
+
+
+def _read_data(path):
+    return _parse(_read_text(Path(checks.path(path))), str(path))
 
 
 def _read_text(path: Path) -> str:

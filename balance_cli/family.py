@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from .analysis import DOCUMENT_VERSION, analyse
-from .config import build
+from .config import as_template, build
 from .cranksearch import DEFAULT_LIMIT, search
 from .errors import AnalysisError, BalanceError
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES
@@ -171,8 +171,7 @@ def family(data: dict, path: str, cylinders: Sequence[int], objective: str | Non
         naming the parameter, or the file and key
     """
     counts = _counts(cylinders)
-    data = {k: v for k, v in data.items() if k != "firing_order"}
-    data["throws"] = [{k: v for k, v in t.items() if k != "phase"} for t in data.get("throws", [])]
+    data = as_template(data)
     template = build(data, path, template=True)
     if template.is_rotary or len(template.bank_angles_rad) != 1 or "cylinders" in data:
         raise AnalysisError("must be an in-line template (one bank, no [[cylinders]] list): a "
