@@ -1,5 +1,6 @@
 """The analysis of one engine (shaking, firing, largest resultant) and the comparison of several."""
 
+import copy
 import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
@@ -114,12 +115,13 @@ class EngineResult:
         unit = "N" if part == "force" else "Nm"
         floor = engine.noise_floor_n if part == "force" else engine.noise_floor_nm
         best = None
+        records = self._records()
         for o in self.shaking.orders:
-            forward = o.force_forward if part == "force" else o.moment_forward
-            backward = o.force_backward if part == "force" else o.moment_backward
             if o.order == 1 and self.counterweight_cancels_first_order:
-                forward = 0j
-            values = part_values(forward, backward, floor, unit, engine.vertical_axis_rad)
+                backward = o.force_backward if part == "force" else o.moment_backward
+                values = part_values(0j, backward, floor, unit, engine.vertical_axis_rad)
+            else:
+                values = records[o.order - 1][part]
             if values[f"max_{unit}"] > (best["max"] if best else 0.0):
                 best = {"order": o.order, "max": values[f"max_{unit}"], "axis_deg": values["axis_deg"],
                         "min": values[f"min_{unit}"],
@@ -130,6 +132,14 @@ class EngineResult:
         best["direction"] = _direction_words(best, engine.vertical_axis_rad, part)
         del best["min"], best["sense"]
         return best
+
+    def _records(self) -> list:
+        """The orders' JSON records, made once (the summary and the PRU read them too)."""
+        cached = self.__dict__.get("_order_records")
+        if cached is None:
+            cached = self.shaking.records(self.engine)
+            object.__setattr__(self, "_order_records", cached)
+        return cached
 
     def power_related_unbalance(self, power_w: float | None = None, orders=(1, 2),
                                 classes=None):
@@ -178,7 +188,7 @@ class EngineResult:
             "pru": None if pru is None else pru.to_dict(),
             "pru_note": pru_note,
             "sampling_ok": self.shaking.sampling_ok,
-            "orders": self.shaking.records(engine),
+            "orders": copy.deepcopy(self._records()),
         }
 
 

@@ -158,7 +158,7 @@ def power_related_unbalance(result, power_w=None, orders=DEFAULT_PRU_ORDERS,
             for k in orders) or not orders:
         raise AnalysisError(f"must be orders from 1 to {result.max_order}, got {orders!r}",
                             "orders")
-    records = result.shaking.records(result.engine)
+    records = result._records()
     entries = tuple(_entry(k, records[k - 1], power.kilowatts, classes) for k in orders)
     balanced = None
     if not result.engine.is_rotary:
