@@ -526,7 +526,9 @@ def plot(paths, kind, output, order, quantity, units, samples, max_order, speed)
     if kind == "torque":
         from .torques import torque as torque_of
 
-        results = _run_each(engines, "Torques", lambda e: torque_of(e, samples, max_order))
+        # the picture draws the torques only
+        results = _run_each(engines, "Torques", lambda e: torque_of(
+            e, samples, max_order, bearings=False, guide=False))
     else:
         results = _analyse_all(engines, samples, max_order)
     with _reported(), _drawing():
@@ -593,7 +595,7 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
 
     # the report shows no bearing forces: leaving them out halves the work
     torques = _run_each([r.engine for r in results], "Torques",
-                        lambda e: torque_of(e, samples, max_order, bearings=False))
+                        lambda e: torque_of(e, samples, max_order, bearings=False, guide=False))
     family_table = None
     if family_path is not None:
         from .config import load_data

@@ -11,6 +11,7 @@ Kinds: :func:`locus` (Tanaka's Fig. 9), :func:`spectrum`, :func:`star`, :func:`f
 :func:`save` writes a figure in the format its file name's extension names.
 """
 
+import functools
 import math
 import os
 import sys
@@ -352,8 +353,10 @@ STAR_TITLE_CHARS = 44
 STAR_LABEL_MIN_PT = 5.0
 
 
+@functools.lru_cache(maxsize=1024)
 def _text_size_pt(text, fontsize):
-    """Width and height (points) of one line of ``text``, as a Text artist lays it out."""
+    """Width and height (points) of one line of ``text``, as a Text artist lays it out; the
+    same cylinder numbers recur on every engine, so each is measured once."""
     from matplotlib.font_manager import FontProperties
     from matplotlib.textpath import text_to_path
 

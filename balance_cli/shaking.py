@@ -77,25 +77,28 @@ def _component(amplitude, floor):
     return abs(amplitude), phasor_deg(amplitude.conjugate())
 
 
-def part_values(forward, backward, floor, unit, vertical_rad=0.0):
+def part_values(forward, backward, floor, unit, vertical_rad=0.0, components=True):
     """One quantity's entry of an order (the ``force`` or ``moment`` of ``compare``'s JSON):
-    magnitudes, phases and ellipse of forward and backward phasors, the vertical and
-    horizontal components, noise as exact zeros. ``axis_deg`` is None where the ellipse is a
-    circle (one of the phasors is zero) or nothing is left: there is no axis."""
+    magnitudes, phases and ellipse of forward and backward phasors, and (with ``components``)
+    the vertical and horizontal components, noise as exact zeros. ``axis_deg`` is None where
+    the ellipse is a circle (one of the phasors is zero) or nothing is left: there is no
+    axis."""
     clean = lambda z: z if abs(z) >= floor else 0j  # noqa: E731
     forward, backward = clean(forward), clean(backward)
     largest, smallest, axis = ellipse(forward, backward)
-    vertical, horizontal = directional(forward, backward, vertical_rad)
-    v_size, v_phase = _component(vertical, floor)
-    h_size, h_phase = _component(horizontal, floor)
-    return {
+    values = {
         f"forward_{unit}": abs(forward), "forward_deg": phasor_deg(forward),
         f"backward_{unit}": abs(backward), "backward_deg": phasor_deg(backward),
         f"max_{unit}": largest, f"min_{unit}": smallest if smallest >= floor else 0.0,
         "axis_deg": math.degrees(axis) if forward and backward else None,
-        f"vertical_{unit}": v_size, "vertical_deg": v_phase,
-        f"horizontal_{unit}": h_size, "horizontal_deg": h_phase,
     }
+    if components:
+        vertical, horizontal = directional(forward, backward, vertical_rad)
+        v_size, v_phase = _component(vertical, floor)
+        h_size, h_phase = _component(horizontal, floor)
+        values.update({f"vertical_{unit}": v_size, "vertical_deg": v_phase,
+                       f"horizontal_{unit}": h_size, "horizontal_deg": h_phase})
+    return values
 
 
 @dataclass(frozen=True)

@@ -194,7 +194,10 @@ class PinForce:
             if j == 0:
                 # the steady part: one phasor, kept as the forward one
                 backward = 0j
-            orders.append({"order": j / per_turn, "force": part_values(forward, backward, floor_n, "N")})
+            # a crank pin's force is read in the crank's terms (radial, tangential, forward,
+            # backward); the engine's vertical belongs to the free forces
+            orders.append({"order": j / per_turn,
+                           "force": part_values(forward, backward, floor_n, "N", components=False)})
         entry: dict = {"throw": self.throw, "orders": orders}
         if self.radial is not None and self.tangential is not None:
             entry["radial"] = self.radial.to_dict()
@@ -446,7 +449,7 @@ def _pin_forces(engine, state, angles, turns, net_pressure, area):
 
 def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressure=None,
            bore_m=None, inertia_kgm2=None, load="propeller", target=None,
-           bearings=True) -> TorqueResult:
+           bearings=True, guide=True) -> TorqueResult:
     """Inertia, tilting, gas, total and frame torques and the reduced mass of ``engine`` at
     its speed.
 
@@ -472,6 +475,8 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
     bearings : bool
         False leaves out the forces on the crank pins and main bearings (``pins`` empty,
         ``main_bearings`` None), half the work, for what needs the torques only
+    guide : bool
+        False leaves out the guide-force moments (``guide`` None), for what does not show them
 
     Raises
     ------
@@ -534,8 +539,9 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
         total = total + gas_curve
     # imported here: guideforce builds its results with this module's Series
     from .guideforce import guide_forces
-    guide = guide_forces(engine, state, net_pressure, area, turns,
-                         lambda values, unit: series(values, unit, tile=False))
+    guide = None if not guide else guide_forces(
+        engine, state, net_pressure, area, turns,
+        lambda values, unit: series(values, unit, tile=False))
     pins, crank_inertia = (_pin_forces(engine, state, angles, turns, net_pressure, area)
                            if bearings else ([], None))
     theta = np.arange(samples * turns) * 360.0 / samples

@@ -334,7 +334,7 @@ def _measure(result, wanted, param, value, samples, max_order, torque_of, inerti
     if torque_of is not None:
         steady = any(q.kind == "steadiness" for q in wanted)
         torques = torque_of(engine, samples, max_order, inertia_kgm2=inertia if steady else None,
-                            load=load, bearings=False)
+                            load=load, bearings=False, guide=False)
     record = {}
     for q in wanted:
         if q.kind == "pru":
