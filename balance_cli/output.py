@@ -31,16 +31,28 @@ _ONE_LINE = json.JSONEncoder(ensure_ascii=False).encode
 
 def to_json(document):
     """A JSON document as balance writes it: indented, UTF-8 text, a final newline; an object
-    or list inside it that holds only numbers and strings stays on one line (one line per order reads
-    better, and the C encoder writes those lines: the pure-Python indenting encoder took
-    longer than the analysis on a library's crank-pin forces)."""
+    or list inside it that holds only numbers and strings, or objects and lists of them (an
+    order with its force and moment), stays on one line (one line per order reads better,
+    and the C encoder writes those lines: the pure-Python indenting encoder took longer than
+    the analysis on a library's crank-pin forces)."""
     return _encode(document, "", top=True) + "\n"
+
+
+def _flat(value):
+    """A container of numbers and strings only."""
+    values = value.values() if type(value) is dict else value
+    return _NESTED.isdisjoint(map(type, values))
+
+
+def _shallow(values):
+    """Numbers, strings and flat containers: what one line holds."""
+    return all(type(v) not in _NESTED or _flat(v) for v in values)
 
 
 def _encode(value, margin, top=False):
     kind = type(value)
     if kind is dict:
-        if not top and _NESTED.isdisjoint(map(type, value.values())):
+        if not top and _shallow(value.values()):
             return _ONE_LINE(value)
         inner = margin + "  "
         body = ",\n".join(f"{inner}{_ONE_LINE(str(k))}: {_encode(v, inner)}"
