@@ -592,10 +592,14 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
         for tick in np.arange(0, cycle, cycle / 4):
             ax.text(*where(tick, 1.32), f"{tick:g}°", ha="center", va="center", fontsize=6,
                     color="0.5")
+        # every spoke in one line broken at NaN: one artist, not one per cylinder
+        xs, ys = [], []
         for angle, number in zip(fire.angles_deg, fire.order):
             x, y = where(angle, 1.0)
-            ax.plot([0, x], [0, y], color="C0", linewidth=1.2)
+            xs += [0.0, x, math.nan]
+            ys += [0.0, y, math.nan]
             ax.text(*where(angle, 1.13), str(number), ha="center", va="center", fontsize=8)
+        ax.plot(xs, ys, color="C0", linewidth=1.2)
         for angle, gap in zip(fire.angles_deg, fire.intervals_deg):
             ax.text(*where(angle + gap / 2, 0.65), f"{gap:.4g}°", ha="center", va="center",
                     fontsize=6, color="C3")
