@@ -574,7 +574,7 @@ def _scale_bar(ax, chains, unit=""):
 
 def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "Figure":
     """Firing angles on a dial of one working cycle (720° or 360°, clockwise from the top),
-    cylinder numbers outside, intervals in red."""
+    cylinder numbers outside, intervals in red (one, in the centre, when they are all equal)."""
     chosen = _results(results)
     columns, rows = grid_size(len(chosen))
     if fig is None:
@@ -600,9 +600,14 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
             ys += [0.0, y, math.nan]
             ax.text(*where(angle, 1.13), str(number), ha="center", va="center", fontsize=8)
         ax.plot(xs, ys, color="C0", linewidth=1.2)
-        for angle, gap in zip(fire.angles_deg, fire.intervals_deg):
-            ax.text(*where(angle + gap / 2, 0.65), f"{gap:.4g}°", ha="center", va="center",
+        if fire.uniform:
+            # one figure says it: a label in every gap of an even engine only repeats it
+            ax.text(0.0, 0.0, f"every\n{fire.intervals_deg[0]:.4g}°", ha="center", va="center",
                     fontsize=6, color="C3")
+        else:
+            for angle, gap in zip(fire.angles_deg, fire.intervals_deg):
+                ax.text(*where(angle + gap / 2, 0.65), f"{gap:.4g}°", ha="center", va="center",
+                        fontsize=6, color="C3")
         ax.set_xlim(-1.45, 1.45)
         ax.set_ylim(-1.45, 1.45)
         ax.set_aspect("equal")

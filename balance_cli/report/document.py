@@ -24,7 +24,8 @@ PICTURES = [
     ("star.svg", "star", "Star of order {star}",
      "Each cylinder's forward and backward phasor of order {star} at θ = 0, chained tip to tail; "
      "the dashed line is the engine's resultant."),
-    ("firing.svg", "firing", "Firing", "Firing angles over one working cycle, intervals in red."),
+    ("firing.svg", "firing", "Firing", "Firing angles over one working cycle, intervals in red (one in the centre when the "
+                 "firing is even)."),
     ("torque.svg", "torque", "Torques",
      "Above, the inertia, gas (from the [gas] cycle) and total torque on the crankshaft over one "
      "cycle against the crank angle of throw 1, and the mean total torque (dashed); below, the "
