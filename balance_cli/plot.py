@@ -440,6 +440,13 @@ def place_labels(segments, sizes, gap=STAR_LABEL_GAP_PT, shortest=STAR_LABEL_MIN
     return found
 
 
+def _cells(fig, rows, columns, count):
+    """Axes in the first ``count`` cells of a grid, row by row: the empty cells get none (an
+    axes costs more to make than most of what is drawn in it)."""
+    grid = fig.add_gridspec(rows, columns)
+    return [fig.add_subplot(grid[i // columns, i % columns]) for i in range(count)]
+
+
 def star(results: "Iterable[EngineResult]", order: int = 2, fig: "Figure | None" = None,
          of: str = "force") -> "Figure":
     """Each cylinder's forward (blue) and backward (red) phasor of ``order`` at θ = 0, chained
@@ -455,14 +462,12 @@ def star(results: "Iterable[EngineResult]", order: int = 2, fig: "Figure | None"
     if fig is None:
         fig = _grid_figure(len(chosen))
     # the layout first: labels are placed in the axes' final scale
-    axes = fig.subplots(rows, columns, squeeze=False)
+    axes = _cells(fig, rows, columns, len(chosen))
     # inches above the top row for the figure's two-line title, each picture's and its |Σ|
     fig.subplots_adjust(left=0.06, right=0.97, bottom=0.04, top=1 - 1.3 / (CELL_IN * rows),
                         wspace=0.3, hspace=0.4)
-    for ax in axes.flat[len(chosen):]:
-        ax.axis("off")
     unit = "N·m" if of == "moment" else ""
-    for ax, r in zip(axes.flat, chosen):
+    for ax, r in zip(axes, chosen):
         chains = star_chains(r, order, of)
         parts = (("forward", "C0"), ("backward", "C3"))
         for row, (part, colour) in enumerate(parts):
@@ -579,11 +584,11 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
     columns, rows = grid_size(len(chosen))
     if fig is None:
         fig = _grid_figure(len(chosen))
-    axes = fig.subplots(rows, columns, squeeze=False)
-    for ax in axes.flat:
+    axes = _cells(fig, rows, columns, len(chosen))
+    for ax in axes:
         ax.axis("off")
     ring = np.linspace(0, 2 * np.pi, 181)
-    for ax, r in zip(axes.flat, chosen):
+    for ax, r in zip(axes, chosen):
         cycle = r.engine.cycle_deg
         fire = r.firing
         where = lambda angle, radius: (radius * math.sin(2 * math.pi * angle / cycle),  # noqa: E731

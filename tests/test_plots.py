@@ -116,7 +116,7 @@ def test_star_figure_draws_the_chains(library):
             tails = np.array([a[1] for a in chains[part]])
             assert_allclose(quiver.X, tails.imag, atol=1e-15)    # across is horizontal
             assert_allclose(quiver.Y, tails.real, atol=1e-15)    # along is vertical
-    assert [ax.axison for ax in fig.axes[len(chosen):]] == [False, False]   # a 3 × 2 grid
+    assert len(fig.axes) == len(chosen)   # the empty cells of the grid get no axes
 
 
 def test_spectrum_data_is_the_orders_of_compare_in_each_unit(library):
