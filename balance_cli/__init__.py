@@ -53,7 +53,7 @@ _LAZY = {"plot": (".plot", None), "search": (".cranksearch", "search"),
 
 # the sweep loads on first use too; a statement of its own keeps merges of the lists above simple
 _LAZY.update({"sweep": (".sweeps", "sweep"), "SweepResult": (".sweeps", "SweepResult"),
-              "family": (".family", "family"), "FamilyResult": (".family", "FamilyResult"),
+              "family": (".families", "family"), "FamilyResult": (".families", "FamilyResult"),
               "GuideForces": (".guideforce", "GuideForces")})
 __all__ += ["sweep", "SweepResult", "SweepError", "family", "FamilyResult", "GuideForces",
             "load_data", "power_related_unbalance", "PowerRelatedUnbalance"]

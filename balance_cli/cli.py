@@ -599,7 +599,7 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
     family_table = None
     if family_path is not None:
         from .config import load_data
-        from .family import family
+        from .families import family
 
         with _reported(flags={"cylinders": "--family-cylinders", "template": family_path}):
             family_table = family(load_data(family_path), str(family_path),
@@ -1154,7 +1154,7 @@ def family_(path, counts, objective, firing_orders, pitch, power, workers, sampl
     cylinder's data repeated at the pitch (its throws' phases and firing order are not used).
     """
     from .config import load_data
-    from .family import family
+    from .families import family
     from .report.tables import family_tables
 
     counts = _counts_option(counts)

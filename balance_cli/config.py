@@ -165,7 +165,7 @@ def load(path: "str | os.PathLike[str]") -> Engine:
 
 def load_data(path: "str | os.PathLike[str]") -> dict:
     """The parsed TOML of the file at ``path``, checked as a configuration (its throws'
-    phases may be given or not): what :func:`balance_cli.family.family` repeats.
+    phases may be given or not): what :func:`balance_cli.families.family` repeats.
 
     Raises
     ------

@@ -2,6 +2,7 @@
 line's JSON, errors derive from one base and name parameters, modules are not shadowed."""
 
 import importlib
+import inspect
 import json
 import pkgutil
 import re
@@ -137,6 +138,17 @@ def test_modules_and_functions_do_not_shadow_each_other():
         imported = importlib.import_module(module.name)
         parent, _, name = module.name.rpartition(".")
         assert getattr(importlib.import_module(parent), name) is imported, module.name
+
+
+def test_public_names_stay_what_they_are_once_every_module_is_loaded():
+    """A lazily loaded function named like its module (balance.family in family.py) would be
+    replaced by the module as soon as the module is imported."""
+    for module in pkgutil.walk_packages(balance.__path__, "balance_cli."):
+        importlib.import_module(module.name)
+    modules = [name for name in balance.__all__
+               if name != "plot" and inspect.ismodule(getattr(balance, name))]
+    assert modules == []
+    assert callable(balance.family) and callable(balance.sweep) and callable(balance.search)
 
 
 def test_importing_the_library_does_not_import_matplotlib():
