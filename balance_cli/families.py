@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from .analysis import DOCUMENT_VERSION, analyse
+from .checks import instance, positive, whole
 from .config import as_template, build
 from .cranksearch import DEFAULT_LIMIT, search
 from .errors import AnalysisError, BalanceError
@@ -108,11 +109,10 @@ class FamilyResult:
 
 def _counts(cylinders):
     counts = list(cylinders) if isinstance(cylinders, (list, tuple, range)) else None
-    if not counts or not all(isinstance(n, int) and not isinstance(n, bool) and 2 <= n <= 24
-                             for n in counts):
+    if not counts:
         raise AnalysisError(f"must be numbers of cylinders from 2 to 24, got {cylinders!r}",
                             "cylinders")
-    return sorted(set(counts))
+    return sorted({whole(n, "cylinders", 2, 24) for n in counts})
 
 
 def default_objective(data, path, samples, max_order):
@@ -171,6 +171,12 @@ def family(data: dict, path: str, cylinders: Sequence[int], objective: str | Non
         naming the parameter, or the file and key
     """
     counts = _counts(cylinders)
+    instance(data, dict, "data", hint=" (balance.load_data(path))")
+    instance(path, str, "path")
+    if power_per_cylinder_w is not None:
+        power_per_cylinder_w = positive(power_per_cylinder_w, "power_per_cylinder_w", "power")
+    instance(firing_orders, (dict, type(None)), "firing_orders",
+             hint=" of cylinder counts to firing orders")
     data = as_template(data)
     template = build(data, path, template=True)
     if template.is_rotary or len(template.bank_angles_rad) != 1 or "cylinders" in data:
@@ -182,9 +188,7 @@ def family(data: dict, path: str, cylinders: Sequence[int], objective: str | Non
             raise AnalysisError("has no pitch to repeat: give two or more throws apart, or "
                                 "the pitch", "pitch_m")
         pitch_m = (zs[-1] - zs[0]) / (len(zs) - 1)
-    if isinstance(pitch_m, bool) or not isinstance(pitch_m, (int, float)) \
-            or not math.isfinite(pitch_m) or pitch_m <= 0:
-        raise AnalysisError(f"must be a length greater than zero, m, got {pitch_m!r}", "pitch_m")
+    pitch_m = positive(pitch_m, "pitch_m", "length")
     if power_per_cylinder_w is None and template.power_w is not None:
         power_per_cylinder_w = template.power_w / template.n_cylinders
     firing_orders = dict(firing_orders or {})

@@ -11,7 +11,8 @@ M1V, M2V) and horizontal (yawing, M1H, M2H) components of balance's exact free m
 import math
 from dataclasses import dataclass
 
-from .errors import AnalysisError
+from .checks import instance, positive
+from .errors import AnalysisError, BalanceError
 from .kinematics import engine_angles, piston_travel
 
 __all__ = ["DEFAULT_PRU_CLASSES", "DEFAULT_PRU_ORDERS", "Power", "PowerRelatedUnbalance",
@@ -60,6 +61,20 @@ def check_classes(bounds):
     return tuple(zip(values + [math.inf], _CLASS_WORDS))
 
 
+def _check_class_table(classes):
+    """A table of (bound, word) as :func:`check_classes` makes, the last bound infinite."""
+    try:
+        bounds = [bound for bound, _ in classes]
+        if len(bounds) == 4 and math.isinf(bounds[-1]) and all(
+                isinstance(word, str) for _, word in classes):
+            check_classes(bounds[:-1])
+            return
+    except (TypeError, ValueError, BalanceError):
+        pass
+    raise AnalysisError("must be (bound, class) pairs as check_classes((60, 120, 220)) "
+                            f"makes them, got {classes!r}", "classes")
+
+
 def pru_class(value, classes=DEFAULT_PRU_CLASSES):
     """The class of a PRU value (N·m/kW): the words of the first bound it stays below."""
     return next(word for bound, word in classes if value < bound)
@@ -74,11 +89,7 @@ def engine_power(engine, power_w=None):
     definition (its heat release is scaled so that ∮p dV = imep · swept volume).
     """
     if power_w is not None:
-        if isinstance(power_w, bool) or not isinstance(power_w, (int, float)) \
-                or not math.isfinite(power_w) or power_w <= 0:
-            raise AnalysisError(f"must be a power greater than zero, W, got {power_w!r}",
-                                "power_w")
-        return Power(float(power_w), "option"), None
+        return Power(positive(power_w, "power_w", "power"), "option"), None
     if engine.power_at_speed_w is not None:
         return Power(engine.power_at_speed_w, "given"), None
     gas = engine.gas
@@ -148,8 +159,12 @@ def power_related_unbalance(result, power_w=None, orders=DEFAULT_PRU_ORDERS,
     classes : tuple of (bound, word)
         :data:`DEFAULT_PRU_CLASSES` or :func:`check_classes` of other bounds
     """
+    from .analysis import EngineResult
     from .counterweight import counterweights
 
+    instance(result, EngineResult, "result", hint=" (balance.analyse(engine))")
+    if classes is not DEFAULT_PRU_CLASSES:
+        _check_class_table(classes)
     power, why = engine_power(result.engine, power_w)
     if power is None:
         return None, why

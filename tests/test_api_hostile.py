@@ -207,6 +207,21 @@ def cases(w):
          lambda v: balance.sweep(CONFIGS / "inline-4-car.toml", "speed", ["1000 rpm"],
                                  quantities=v), "quantities",
          [3, NAN, ["F0"], ["X2"], ["F99"], [3], ["F2", "F2"]]),
+        ("power_related_unbalance.result", lambda v: balance.power_related_unbalance(v),
+         "result", COLLECTIONS + [e]),
+        ("power_related_unbalance.power_w",
+         lambda v: balance.power_related_unbalance(r, power_w=v), "power_w", NUMBERS),
+        ("power_related_unbalance.classes",
+         lambda v: balance.power_related_unbalance(r, classes=v), "classes",
+         ["x", 3, NAN, [], ((1, "a"),), ((60, 1), (120, 2), (220, 3), (INF, 4))]),
+        ("family.data", lambda v: balance.family(v, "x.toml", [6]), "data", COLLECTIONS),
+        ("family.cylinders",
+         lambda v: balance.family(balance.load_data(CONFIGS / "marine-6-2stroke.toml"),
+                                  "x.toml", v, workers=1), "cylinders",
+         COLLECTIONS + ["5-12", [1], [25], [6.0]]),
+        ("family.pitch_m",
+         lambda v: balance.family(balance.load_data(CONFIGS / "marine-6-2stroke.toml"),
+                                  "x.toml", [6], pitch_m=v, workers=1), "pitch_m", NUMBERS),
         ("sweep.quantities.steadiness",
          lambda v: balance.sweep(CONFIGS / "inline-4-car.toml", "speed", ["1000 rpm"],
                                  quantities=v), "inertia_kgm2", [["steadiness"]]),
@@ -286,6 +301,11 @@ def test_the_good_values_the_cases_replace_work(world):
     assert e.replace(vertical_rad=np.float64(0.5)).vertical_axis_rad == 0.5
     assert r.main_order("moment") is None and r.main_order("force")["order"] == 2
     assert balance.counterweights(e, shaft_orders=[2], shaft_offsets=(0.1, 0.0)).balancer_shafts
+    pru, _ = balance.power_related_unbalance(r, power_w=np.float64(5e4))
+    assert pru.power.watts == 5e4
+    table = balance.family(balance.load_data(CONFIGS / "marine-6-2stroke.toml"), "x.toml",
+                           [np.int64(6)], pitch_m=np.float64(1.02), workers=1)
+    assert table.rows[0].cylinders == 6
     swept = balance.sweep(str(CONFIGS / "inline-4-car.toml"), "speed", ("1000 rpm", "2000 rpm"),
                           quantities="F2")
     assert len(swept.points) == 2
