@@ -36,6 +36,9 @@ z = "0 mm"
 phase = 180
 z = "90 mm"
 """
+#: the twin's first cylinder alone
+SINGLE = (TWIN.replace('name = "test twin"', 'name = "test single"')
+          .replace("firing_order = [1, 2]\n", "").split("[[throws]]")[0] + "[[throws]]\nphase = 0\n")
 CONFIGS = ROOT / "configs"
 PART3 = CONFIGS / "tanaka-part3"
 

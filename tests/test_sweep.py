@@ -21,24 +21,8 @@ import balance_cli as balance
 from balance_cli import config as config_module
 from balance_cli.cli import main
 from balance_cli.sweeps import SCHEMA, span
-from conftest import CONFIGS, ROOT, TWIN
+from conftest import CONFIGS, ROOT, SINGLE, TWIN
 
-SINGLE = """\
-name = "test single"
-cycle = 4
-speed = "3000 rpm"
-crank_radius = "40 mm"
-rod_length = "140 mm"
-
-[masses]
-reciprocating = "500 g"
-
-[[banks]]
-angle = 0
-
-[[throws]]
-phase = 0
-"""
 M_REC, R = 0.5, 0.040           # kg, m: SINGLE's and TWIN's reciprocating mass and crank radius
 TWIN_PITCH = 0.090              # m, TWIN's throw spacing
 

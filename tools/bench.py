@@ -72,16 +72,21 @@ def naive_rate(n=10, objective_orders=(1, 2, 3, 4)):
     return count / (time.perf_counter() - start)
 
 
+def median_run(command, runs=3):
+    """(wall time, JSON document) of the median of ``runs`` runs of a command writing JSON."""
+    results = []
+    for _ in range(runs):
+        start = time.perf_counter()
+        done = subprocess.run(command, cwd=ROOT, check=True, capture_output=True, text=True)
+        results.append((time.perf_counter() - start, json.loads(done.stdout)))
+    return sorted(results, key=lambda r: r[0])[runs // 2]
+
+
 def search_bench():
     command = [BALANCE, "search", "templates/inline-12-2stroke.toml", "--objective",
                "M1,M2,M3,M4", "--format", "json"]
     timed(command)
-    runs = []
-    for _ in range(3):
-        start = time.perf_counter()
-        done = subprocess.run(command, cwd=ROOT, check=True, capture_output=True, text=True)
-        runs.append((time.perf_counter() - start, json.loads(done.stdout)))
-    wall, document = sorted(runs, key=lambda r: r[0])[1]
+    wall, document = median_run(command)
     total = document["arrangements_total"]
     rate = total / wall
     naive = statistics.median(naive_rate() for _ in range(3))
@@ -102,12 +107,7 @@ def family_bench():
     under a minute on two cores)."""
     command = [BALANCE, "family", "configs/marine-6-2stroke.toml", "--cylinders", "5-12",
                "--format", "json"]
-    runs = []
-    for _ in range(3):
-        start = time.perf_counter()
-        done = subprocess.run(command, cwd=ROOT, check=True, capture_output=True, text=True)
-        runs.append((time.perf_counter() - start, json.loads(done.stdout)))
-    wall, document = sorted(runs, key=lambda r: r[0])[1]
+    wall, document = median_run(command)
     methods = {row["method"] for row in document["rows"]}
     verdict = "ok" if wall < 60.0 and methods == {"exhaustive"} else "TOO SLOW"
     print(f"{wall * 1000:8.1f} ms  median of 3  balance family configs/marine-6-2stroke.toml "
