@@ -18,7 +18,7 @@ import numpy as np
 from .errors import ModelError
 from .units import round_degrees
 
-__all__ = ["MassSet", "RodSet", "Linkage", "LinkageState", "linkage", "linkage_state",
+__all__ = ["MassSet", "RodSet", "Linkage", "LinkageState", "linkage", "linkage_state", "pin_angle",
            "mass_positions", "rod_directions",
            "crank_angles_of", "travel_at", "piston_travel", "check_assembly", "engine_angles"]
 
@@ -64,12 +64,15 @@ class RodSet:
     corrections_kgm2 : ndarray, shape (n_rods,)
         each rod's correcting moment of inertia (``Cylinder.rod_inertia_kgm2``), kg·m²
     cylinder : ndarray of int, shape (n_rods,)
-        the cylinder whose rod it is
+        the cylinder whose rod it is (an opposed-piston cylinder has two)
+    throw : ndarray of int, shape (n_rods,)
+        0-based index of the throw the rod's big end rides on (its master's, for a link rod)
     """
 
     directions: np.ndarray
     corrections_kgm2: np.ndarray
     cylinder: np.ndarray
+    throw: np.ndarray
 
 
 def engine_angles(samples):
@@ -77,21 +80,23 @@ def engine_angles(samples):
     return 2.0 * np.pi * np.arange(samples) / samples
 
 
-def _slider(point, axis_angle, length, offset, cylinder, crank_angles):
-    """Piston pin on a cylinder axis, joined by a rod of ``length`` to ``point``.
+def _slider(point, axis_angle, length, offset, cylinder, crank_angles, centre=0j):
+    """Piston pin on a cylinder axis through ``centre`` (its crank axis), joined by a rod of
+    ``length`` to ``point``.
 
-    Returns the pin position and the travel along the axis (both exact). The squared
+    Returns the pin position and the travel along the axis from ``centre`` (both exact). The squared
     half-chord ``length² − (offset − y)²`` must stay positive for the rod to reach the axis:
     where it does not, the linkage cannot be assembled and ModelError names the cylinder and
     the crank angle.
     """
     turn = np.exp(-1j * axis_angle)
-    local = point * turn
+    local = (point - centre if centre else point) * turn
     reach = length**2 - (offset - local.imag) ** 2
     if reach.size and reach.min() <= 0.0:
         _cannot_reach(cylinder, np.asarray(crank_angles).flat[int(np.argmin(reach))])
     travel = local.real + np.sqrt(reach)
-    return (travel + 1j * offset) / turn, travel
+    position = (travel + 1j * offset) / turn
+    return (position + centre if centre else position), travel
 
 
 def _cannot_reach(cylinder, crank_angle):
@@ -108,15 +113,26 @@ def _cannot_reach(cylinder, crank_angle):
 class Linkage(NamedTuple):
     """Points of the linkage in the crankcase frame, m (complex), keyed by cylinder number.
 
-    ``travel`` is the piston pin's distance from the crank axis along its cylinder axis;
-    ``knuckle`` exists for link rods only; ``crank_pins`` is per throw (None for a throw no
-    cylinder asked for rides on).
+    ``travel`` is the piston pin's distance from its crank axis along its cylinder axis; for
+    an opposed-piston cylinder, the two pistons' distances from their crank axes added (the
+    bore closes as it grows: inner dead centre at its largest). ``knuckle`` exists for link
+    rods only; ``opposed`` holds an opposed-piston cylinder's second piston as (position, its
+    own travel); ``crank_pins`` is per throw (None for a throw no cylinder asked for rides on).
     """
 
     piston: dict
     travel: dict
     knuckle: dict
     crank_pins: list
+    opposed: dict
+
+
+def pin_angle(engine, index, crank_angles):
+    """The direction of throw ``index``'s crank pin from its crankshaft's axis, rad from the
+    reference axis, at crank angles ``crank_angles`` of the first crankshaft."""
+    throw = engine.throws[index]
+    shaft = engine.crankshafts[throw.crankshaft]
+    return shaft.direction * (crank_angles + shaft.phase_rad + throw.phase_rad)
 
 
 def linkage(engine, crank_angles, numbers=None, pin_shift=None):
@@ -132,19 +148,35 @@ def linkage(engine, crank_angles, numbers=None, pin_shift=None):
     masters = {c.master for c in wanted if c.is_link}
     # only the pins the wanted cylinders ride on (None for the others): the TDC search asks
     # for one cylinder at a time
-    throws = {c.throw for c in wanted} | set(pin_shift or {})
-    pins = [r * np.exp(1j * (crank_angles + t.phase_rad)) if i in throws or numbers is None
-            else None for i, t in enumerate(engine.throws)]
+    throws = {c.throw for c in wanted} | {c.opposed_throw for c in wanted if c.is_opposed} \
+        | set(pin_shift or {})
+    pins = [None] * len(engine.throws)
+    for i in range(len(engine.throws)):
+        if i in throws or numbers is None:
+            pins[i] = r * np.exp(1j * pin_angle(engine, i, crank_angles))
+            centre = engine.crankshaft_of(i).centre
+            if centre:
+                pins[i] = pins[i] + centre
     for index, shift in (pin_shift or {}).items():
         pins[index] = pins[index] + shift
-    piston, travel, knuckle = {}, {}, {}
+    piston, travel, knuckle, opposed = {}, {}, {}, {}
     for cyl in engine.cylinders:
         if cyl.is_link or not (cyl in wanted or cyl.number in masters):
             continue
         axis = engine.bank_angles_rad[cyl.bank]
+        shaft = engine.crankshaft_of(cyl.throw)
+        # the offset is towards the crankshaft's own direction of rotation
+        offset = shaft.direction * engine.pin_offset_of(cyl)
         piston[cyl.number], travel[cyl.number] = _slider(
-            pins[cyl.throw], axis, engine.rod_length_m, engine.pin_offset_m, cyl, crank_angles
-        )
+            pins[cyl.throw], axis, engine.rod_length_m, offset, cyl, crank_angles, shaft.centre)
+        if cyl.is_opposed:
+            # the same bore line seen from the other end: the axis turned half a turn, the
+            # offset with it
+            far = engine.crankshaft_of(cyl.opposed_throw).centre
+            position, own = _slider(pins[cyl.opposed_throw], axis + np.pi, engine.rod_length_m,
+                                    -offset, cyl, crank_angles, far)
+            opposed[cyl.number] = (position, own)
+            travel[cyl.number] = travel[cyl.number] + own
     for cyl in wanted:
         if not cyl.is_link:
             continue
@@ -156,10 +188,11 @@ def linkage(engine, crank_angles, numbers=None, pin_shift=None):
             1j * cyl.knuckle_angle_rad
         )
         axis = engine.bank_angles_rad[cyl.bank]
+        shaft = engine.crankshaft_of(cyl.throw)
         piston[cyl.number], travel[cyl.number] = _slider(
-            knuckle[cyl.number], axis, cyl.link_length_m, engine.pin_offset_m, cyl, crank_angles
-        )
-    return Linkage(piston, travel, knuckle, pins)
+            knuckle[cyl.number], axis, cyl.link_length_m,
+            shaft.direction * engine.pin_offset_of(cyl), cyl, crank_angles, shaft.centre)
+    return Linkage(piston, travel, knuckle, pins, opposed)
 
 
 def crank_angles_of(engine, angles):
@@ -233,8 +266,9 @@ def linkage_state(engine, angles, pin_shift=None, throw=None) -> LinkageState:
     """
     check_assembly(engine)
     angles = np.asarray(angles, dtype=float)
-    chosen = engine.cylinders if throw is None else [c for c in engine.cylinders if c.throw == throw]
-    piston, travel, knuckle, pins = linkage(
+    chosen = engine.cylinders if throw is None else [c for c in engine.cylinders
+                                                     if throw in (c.throw, c.opposed_throw)]
+    piston, travel, knuckle, pins, opposed = linkage(
         engine, crank_angles_of(engine, angles), None if throw is None else [c.number for c in chosen],
         _case_shift(engine, angles, pin_shift))
     rows = []  # (position, mass, z, owner, throw)
@@ -242,17 +276,25 @@ def linkage_state(engine, angles, pin_shift=None, throw=None) -> LinkageState:
         rows.append((piston[cyl.number], cyl.reciprocating_kg, cyl.z_m, cyl.number, cyl.throw))
         if cyl.is_link and cyl.knuckle_kg:
             rows.append((knuckle[cyl.number], cyl.knuckle_kg, cyl.z_m, cyl.number, cyl.throw))
+        if cyl.is_opposed:
+            rows.append((opposed[cyl.number][0], cyl.opposed_reciprocating_kg, cyl.z_m, cyl.number,
+                         cyl.opposed_throw))
     for index, (crank, pin) in enumerate(zip(engine.throws, pins)):
         if throw is not None and index != throw:
             continue
         for owner, mass in ((0, engine.rotating_kg), (-1, engine.crank_kg)):
             if mass:
                 rows.append((pin, mass, crank.z_m, owner, index))
-    rods = []
+    rods, rod_rows = [], []  # unit vectors; (correction, cylinder, throw)
     for cyl in chosen:
         big_end = knuckle[cyl.number] if cyl.is_link else pins[cyl.throw]
         rod = piston[cyl.number] - big_end
         rods.append(rod / np.abs(rod))
+        rod_rows.append((cyl.rod_inertia_kgm2, cyl.number, cyl.throw))
+        if cyl.is_opposed:
+            rod = opposed[cyl.number][0] - pins[cyl.opposed_throw]
+            rods.append(rod / np.abs(rod))
+            rod_rows.append((cyl.rod_inertia_kgm2, cyl.number, cyl.opposed_throw))
     positions = np.array([np.broadcast_to(row[0], angles.shape) for row in rows])
     directions = np.array(rods)
     if engine.is_rotary:
@@ -261,8 +303,7 @@ def linkage_state(engine, angles, pin_shift=None, throw=None) -> LinkageState:
         turn = np.exp(1j * angles)
         positions, directions = positions * turn, directions * turn
     masses = MassSet(positions, *(np.array([row[i] for row in rows]) for i in range(1, 5)))
-    rod_set = RodSet(directions, np.array([c.rod_inertia_kgm2 for c in chosen]),
-                     np.array([c.number for c in chosen]))
+    rod_set = RodSet(directions, *(np.array([row[i] for row in rod_rows]) for i in range(3)))
     return LinkageState(masses, rod_set, travel)
 
 

@@ -17,7 +17,7 @@ from .errors import ModelError, UnitError
 from .tolerances import NOISE_FLOOR, SAME_DIRECTION_RAD, SAME_POSITION_M
 from .units import check_finite_range
 
-__all__ = ["Throw", "Cylinder", "Engine", "Parts", "GasCycle", "FRAMES"]
+__all__ = ["Crankshaft", "Throw", "Cylinder", "Engine", "Parts", "GasCycle", "FRAMES"]
 
 #: "fixed": the crank turns in a fixed crankcase; "rotary": the crankcase and its cylinders
 #: turn about a fixed crank
@@ -30,24 +30,73 @@ MAX_NAME_LENGTH = 120
 
 
 @dataclass(frozen=True)
+class Crankshaft:
+    """One crankshaft of an engine with several (an H engine, an opposed-piston engine, the
+    Napier Deltic), geared 1:1 to the first.
+
+    Every crankshaft makes one turn per turn of the first (the engine angle θ): the pistons it
+    drives share cylinders and a firing cycle with the others', which repeat only then.
+
+    Parameters
+    ----------
+    x_m, y_m : float
+        position of its axis in the transverse plane, m: along the reference axis (bank angle
+        0) and across it (bank angle 90°), from the first crankshaft's axis
+    direction : int
+        +1 turning with the first crankshaft, −1 against it
+    phase_rad : float
+        its angle when the first is at 0, measured in its own sense of turning, rad: a throw of
+        phase φ on it points at direction·(θ + phase_rad + φ) from the reference axis
+    """
+
+    x_m: float = 0.0
+    y_m: float = 0.0
+    direction: int = 1
+    phase_rad: float = 0.0
+
+    def __post_init__(self):
+        _quantity(self.x_m, "length", "x_m", sign="any")
+        _quantity(self.y_m, "length", "y_m", sign="any")
+        if isinstance(self.direction, bool) or self.direction not in (1, -1):
+            raise ModelError(f"must be +1 (with the first crankshaft) or -1 (against it), got "
+                             f"{self.direction!r}", "direction")
+        object.__setattr__(self, "direction", int(self.direction))
+        _angle(self.phase_rad, "phase_rad")
+
+    @property
+    def centre(self) -> complex:
+        """The axis position as a complex number, m (real along the reference axis)."""
+        return complex(self.x_m, self.y_m)
+
+
+@dataclass(frozen=True)
 class Throw:
     """One crank throw.
 
     Parameters
     ----------
     phase_rad : float
-        angle of the throw relative to throw 1, positive with rotation, rad
+        angle of the throw relative to throw 1, positive with rotation (of its own
+        crankshaft), rad
     z_m : float
         axial position, m
+    crankshaft : int
+        0-based index into ``Engine.crankshafts`` (0, the first, for an engine with one)
     """
 
     phase_rad: float
     z_m: float = 0.0
+    crankshaft: int = 0
 
     def __post_init__(self):
         # checked here too, not only in the Engine: a Throw of NaN once built without a word
         _angle(self.phase_rad, "phase_rad")
         _quantity(self.z_m, "length", "z_m", sign="any")
+        if isinstance(self.crankshaft, bool) or not isinstance(self.crankshaft, numbers.Integral) \
+                or self.crankshaft < 0:
+            raise ModelError(f"must be a 0-based crankshaft index, got {self.crankshaft!r}",
+                             "crankshaft")
+        object.__setattr__(self, "crankshaft", int(self.crankshaft))
 
 
 @dataclass(frozen=True)
@@ -84,6 +133,14 @@ class Cylinder:
         the correcting moment of inertia of this cylinder's rod (its link rod, for a link
         cylinder): what the rod's two point masses leave out of its rotational inertia, kg·m²
         (0 when only lumped masses are known; see :class:`Parts`)
+    pin_offset_m : float or None
+        this cylinder's piston-pin offset (desaxé), m, positive towards the direction of
+        rotation of its crankshaft; None takes the engine's ``pin_offset_m``
+    opposed_throw : int or None
+        an opposed-piston cylinder: the 0-based throw, on another crankshaft, whose rod drives
+        the second piston of this bore from the other end (plain rod of ``rod_length_m``)
+    opposed_reciprocating_kg : float
+        mass moving with the second piston's pin, kg (opposed-piston cylinders only)
     """
 
     number: int
@@ -97,6 +154,9 @@ class Cylinder:
     knuckle_angle_rad: float = 0.0
     knuckle_kg: float = 0.0
     rod_inertia_kgm2: float = 0.0
+    pin_offset_m: float | None = None
+    opposed_throw: int | None = None
+    opposed_reciprocating_kg: float = 0.0
 
     def __post_init__(self):
         # the types here, the ranges and references in the Engine that holds the cylinder
@@ -105,17 +165,40 @@ class Cylinder:
             raise ModelError(f"must be a whole number from 1, got {n!r}", "number")
         object.__setattr__(self, "number", int(n))   # numpy's whole numbers as Python's
         for name in ("z_m", "reciprocating_kg", "link_length_m", "knuckle_radius_m",
-                     "knuckle_angle_rad", "knuckle_kg", "rod_inertia_kgm2"):
+                     "knuckle_angle_rad", "knuckle_kg", "rod_inertia_kgm2",
+                     "opposed_reciprocating_kg"):
             value = getattr(self, name)
             if not is_real(value) or not math.isfinite(value):
                 raise ModelError(f"cylinder {n}: {name} must be a finite number, got {value!r}",
                                  cylinder=n)
         _quantity(self.reciprocating_kg, "mass", "reciprocating_kg", cylinder=n)
         _quantity(self.knuckle_kg, "mass", "knuckle_kg", sign="non-negative", cylinder=n)
+        if self.pin_offset_m is not None:
+            _quantity(self.pin_offset_m, "length", "pin_offset_m", sign="any", cylinder=n)
+        if self.opposed_throw is not None:
+            index = self.opposed_throw
+            if isinstance(index, bool) or not isinstance(index, numbers.Integral) or index < 0:
+                raise ModelError(f"cylinder {n}: opposed_throw is a 0-based throw index, got "
+                                 f"{index!r}", cylinder=n)
+            object.__setattr__(self, "opposed_throw", int(index))
+            if self.master is not None:
+                raise ModelError(f"cylinder {n}: an opposed-piston cylinder has plain rods; it "
+                                 "cannot be a link-rod cylinder too", cylinder=n)
+            _quantity(self.opposed_reciprocating_kg, "mass", "opposed_reciprocating_kg",
+                      cylinder=n)
+        elif self.opposed_reciprocating_kg:
+            raise ModelError(f"cylinder {n}: opposed_reciprocating_kg belongs to an opposed-piston "
+                             "cylinder; give its opposed_throw too, or leave the mass out",
+                             cylinder=n)
 
     @property
     def is_link(self) -> bool:
         return self.master is not None
+
+    @property
+    def is_opposed(self) -> bool:
+        """Two pistons in one bore, driven from its two ends by two crankshafts."""
+        return self.opposed_throw is not None
 
 
 @dataclass(frozen=True)
@@ -249,6 +332,9 @@ class Engine:
     power_speed_rad_s : float or None
         the speed ``power_w`` is given at, rad/s; an engine analysed at another speed (after
         :meth:`replace`) has no power until it is given at that speed
+    crankshafts : tuple of Crankshaft
+        the crankshafts, the first the reference (at the origin, turning forward, phase 0);
+        empty (the default) for the one crankshaft of most engines
 
     Raises
     ------
@@ -277,11 +363,12 @@ class Engine:
     vertical_rad: float | None = None
     power_w: float | None = None
     power_speed_rad_s: float | None = None
+    crankshafts: tuple = ()
     _by_number: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         # sequences given as lists become tuples: the engine stays immutable and hashable
-        for name in ("bank_angles_rad", "throws", "cylinders", "firing_order"):
+        for name in ("bank_angles_rad", "throws", "cylinders", "firing_order", "crankshafts"):
             value = getattr(self, name)
             if isinstance(value, list):
                 object.__setattr__(self, name, tuple(value))
@@ -290,6 +377,9 @@ class Engine:
                 raise ModelError(f"must be a list or tuple, got {value!r}", name)
         object.__setattr__(self, "_by_number", {c.number: c for c in self.cylinders
                                                 if isinstance(c, Cylinder)})
+        if not self.crankshafts:
+            # one way to say "one crankshaft": the reference, whether named or not
+            object.__setattr__(self, "crankshafts", (REFERENCE_CRANKSHAFT,))
         if self.power_w is not None and self.power_speed_rad_s is None:
             object.__setattr__(self, "power_speed_rad_s", self.speed_rad_s)
         _check(self)
@@ -326,10 +416,28 @@ class Engine:
         return any(c.master == cylinder.number for c in self.cylinders)
 
     def rod_type(self, cylinder):
-        """"plain", "master" or "link"."""
+        """"plain", "master", "link" or "opposed" (two plain rods, one from each end)."""
         if cylinder.is_link:
             return "link"
+        if cylinder.is_opposed:
+            return "opposed"
         return "master" if self.is_master(cylinder) else "plain"
+
+    def pin_offset_of(self, cylinder) -> float:
+        """The piston-pin offset of ``cylinder``: its own, else the engine's, m."""
+        return self.pin_offset_m if cylinder.pin_offset_m is None else cylinder.pin_offset_m
+
+    def crankshaft_of(self, throw_index) -> "Crankshaft":
+        """The crankshaft that carries throw ``throw_index`` (0-based)."""
+        return self.crankshafts[self.throws[throw_index].crankshaft]
+
+    @property
+    def has_several_crankshafts(self) -> bool:
+        return len(self.crankshafts) > 1
+
+    @property
+    def has_opposed_pistons(self) -> bool:
+        return any(c.is_opposed for c in self.cylinders)
 
     @property
     def vertical_axis_rad(self) -> float:
@@ -476,6 +584,7 @@ def _check(engine):
             f"of {engine.rod_length_m:g} m is not longer than the crank radius plus |pin offset| "
             f"({engine.crank_radius_m:g} m + {abs(engine.pin_offset_m):g} m), so the rod cannot "
             "reach the cylinder axis; make it longer or the crank shorter", "rod_length_m")
+    _check_crankshafts(engine)
     if not engine.bank_angles_rad:
         raise ModelError("needs at least one cylinder-axis direction", "bank_angles_rad")
     directions = []
@@ -491,9 +600,17 @@ def _check(engine):
         directions.append(direction)
     if not engine.throws or not all(isinstance(t, Throw) for t in engine.throws):
         raise ModelError("needs one or more Throw objects", "throws")
-    for throw in engine.throws:
+    for i, throw in enumerate(engine.throws, 1):
         _angle(throw.phase_rad, "throws")
         _quantity(throw.z_m, "length", "throws", sign="any")
+        if not throw.crankshaft < len(engine.crankshafts):
+            raise ModelError(f"throw {i} is on crankshaft {throw.crankshaft + 1}, but the engine "
+                             f"has {len(engine.crankshafts)}; add the crankshaft or give another",
+                             "throws")
+    idle = sorted(set(range(len(engine.crankshafts))) - {t.crankshaft for t in engine.throws})
+    if idle:
+        raise ModelError(f"crankshaft {idle[0] + 1} carries no throw; give it throws or remove it",
+                         "crankshafts")
     if not engine.cylinders or not all(isinstance(c, Cylinder) for c in engine.cylinders):
         raise ModelError("needs one or more Cylinder objects", "cylinders")
     numbers = [c.number for c in engine.cylinders]
@@ -519,6 +636,49 @@ def _check(engine):
                              f"{sorted(numbers)}; list every cylinder exactly once", "firing_order")
 
 
+def _check_crankshafts(engine):
+    shafts = engine.crankshafts
+    if not all(isinstance(s, Crankshaft) for s in shafts):
+        raise ModelError("needs Crankshaft objects", "crankshafts")
+    if shafts[0] != REFERENCE_CRANKSHAFT:
+        raise ModelError("the first crankshaft is the reference: at the origin, turning forward, "
+                         "at phase 0; place and phase the others relative to it", "crankshafts")
+    if len(shafts) > 1 and engine.is_rotary:
+        raise ModelError('a rotary engine turns its crankcase about one fixed crank; give one '
+                         'crankshaft or frame = "fixed"', "crankshafts")
+    for i, shaft in enumerate(shafts):
+        for j in range(i):
+            if abs(shaft.centre - shafts[j].centre) < SAME_POSITION_M:
+                raise ModelError(f"{j + 1} and {i + 1} share an axis; give each crankshaft its "
+                                 "own position", "crankshafts")
+
+
+def _check_opposed(engine, c):
+    """The second piston of an opposed-piston cylinder: on a throw of another crankshaft that
+    lies on the cylinder's axis, far enough out that the two pistons never meet."""
+    n = c.number
+    if not 0 <= c.opposed_throw < len(engine.throws):
+        raise ModelError(f"cylinder {n}: opposed_throw {c.opposed_throw + 1} is not one of the "
+                         f"engine's {len(engine.throws)} throws", cylinder=n)
+    own, other = engine.throws[c.throw].crankshaft, engine.throws[c.opposed_throw].crankshaft
+    if own == other:
+        raise ModelError(f"cylinder {n}: its opposed piston's throw {c.opposed_throw + 1} is on "
+                         f"the same crankshaft as throw {c.throw + 1}; an opposed piston is "
+                         "driven by another crankshaft, at the other end of the bore", cylinder=n)
+    span = (engine.crankshafts[other].centre - engine.crankshafts[own].centre) \
+        * complex(math.cos(engine.bank_angles_rad[c.bank]), -math.sin(engine.bank_angles_rad[c.bank]))
+    if abs(span.imag) > max(SAME_POSITION_M, 1e-9 * abs(span)):
+        raise ModelError(f"cylinder {n}: crankshaft {other + 1} lies {abs(span.imag):g} m off the "
+                         f"axis of the cylinder's bank {c.bank + 1}; an opposed piston's crankshaft "
+                         "must sit on the bore's axis, at the other end", cylinder=n)
+    reach = 2 * (engine.rod_length_m + engine.crank_radius_m)
+    if span.real <= reach:
+        where = "behind the first piston's crankshaft" if span.real <= 0 else "too close"
+        raise ModelError(f"cylinder {n}: crankshaft {other + 1} is {span.real:g} m along the bore "
+                         f"({where}); the two pistons could meet unless the crankshafts are more "
+                         f"than 2·(rod_length + crank_radius) = {reach:g} m apart", cylinder=n)
+
+
 def _check_cylinder(engine, c):
     n = c.number
     if isinstance(n, bool) or not isinstance(n, int) or n < 1:
@@ -536,6 +696,14 @@ def _check_cylinder(engine, c):
     _quantity(c.z_m, "length", "z_m", sign="any", cylinder=n)
     _quantity(c.reciprocating_kg, "mass", "reciprocating_kg", cylinder=n)
     _quantity(c.rod_inertia_kgm2, "moment of inertia", "rod_inertia_kgm2", sign="any", cylinder=n)
+    offset = engine.pin_offset_of(c)
+    if c.pin_offset_m is not None and engine.rod_length_m <= engine.crank_radius_m + abs(offset):
+        raise ModelError(f"cylinder {n}: its pin_offset_m ({offset:g} m) leaves the rod "
+                         f"({engine.rod_length_m:g} m) no longer than the crank radius plus "
+                         f"|pin offset|, so it cannot reach the cylinder axis; make the offset "
+                         "smaller", cylinder=n)
+    if c.is_opposed:
+        _check_opposed(engine, c)
     if not c.is_link:
         return
     master = engine._by_number.get(c.master)
@@ -557,3 +725,8 @@ def _check_cylinder(engine, c):
                          "pin sits on it", cylinder=n)
     _angle(c.knuckle_angle_rad, "knuckle_angle_rad", cylinder=n)
     _quantity(c.knuckle_kg, "mass", "knuckle_kg", sign="non-negative", cylinder=n)
+
+
+#: the one crankshaft of an engine that names none: the reference itself (built here, once
+#: the checks it runs are defined)
+REFERENCE_CRANKSHAFT = Crankshaft()

@@ -435,7 +435,8 @@ def _pin_forces(engine, state, angles, turns, net_pressure, area):
                      * angular_accelerations[rods_on_pin, None]
                      * (np.conj(rods.directions[rods_on_pin])[:, None] * du).imag).sum(axis=0)
         parts = np.tile(inertial, turns)                       # (along, across) × cycle
-        numbers = list(shifted.rods.cylinder)
+        # an opposed-piston cylinder has two rods but one pressure
+        numbers = list(dict.fromkeys(int(m) for m in shifted.rods.cylinder))
         if net_pressure and numbers:
             ds = _derivative(np.moveaxis(np.array([shifted.travel[m] for m in numbers])
                                          .reshape(-1, *size, n), 2, 0)) / step
