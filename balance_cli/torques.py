@@ -635,9 +635,11 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
         # the pin's direction: turning with θ on a crankshaft, fixed on a rotary's crank
         along = np.exp(1j * pin_angle(engine, index, 0.0 if engine.is_rotary else np.radians(theta)))
         local = force * np.conj(along)
+        # tangential: positive in the sense its own crankshaft turns
+        sense = engine.crankshaft_of(index).direction
         pin_results.append(PinForce(index + 1, engine.cycle_deg, theta, force,
                                     series(local.real, "N", tile=False),
-                                    series(local.imag, "N", tile=False)))
+                                    series(sense * local.imag, "N", tile=False)))
     bearing_loads = [None] * len(engine.crankshafts)
     if bearings and not engine.is_rotary:
         for s_index in range(len(engine.crankshafts)):

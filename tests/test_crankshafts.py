@@ -413,3 +413,24 @@ def test_bad_crankshafts_and_opposed_pistons_are_named(text, key, words):
         balance.loads(top + "\n" + BASE + text, name="bad.toml")
     assert info.value.key == key, str(info.value)
     assert words in str(info.value)
+
+
+@pytest.mark.parametrize("config", ["configs/today/opposed-piston/napier-deltic-d18.toml",
+                                    "configs/today/opposed-piston/junkers-jumo-205.toml",
+                                    "configs/today/h/brm-h16.toml"])
+def test_each_crankshafts_torque_is_r_times_its_pins_tangential_forces(config):
+    """Two methods per crankshaft: its torque from the kinetic energy of the parts it drives
+    (−½ω²·dμ_s/dθ plus the gas on its pistons) and r times the tangential forces of the rods
+    on its own pins (virtual shifts of each pin), positive in its own sense of turning; the
+    main-bearing load of each is its pins' forces plus its own masses'."""
+    engine = balance.load(config)
+    result = balance.torque(engine)
+    unit = engine.per_cylinder_unit_n * engine.crank_radius_m
+    for shaft in result.crankshafts:
+        pins = [p for p, t in zip(result.pins, engine.throws) if t.crankshaft == shaft.number - 1]
+        from_pins = sum(engine.crank_radius_m * p.tangential.curve for p in pins)
+        # the virtual shifts' finite differences are good to about 1e-11 of the forces
+        assert np.abs(from_pins - shaft.torque.curve).max() < 1e-9 * unit
+        assert_allclose(shaft.main_bearings.force_n, sum(p.force_n for p in pins),
+                        atol=1e-9 * unit / engine.crank_radius_m)
+    assert result.main_bearings is None and result.guide is None

@@ -206,9 +206,10 @@ def test_schema_covers_every_key_of_the_configuration_format():
     tables = {"": config_module._TOP_KEYS, "masses": config_module._MASS_KEYS,
               "parts": config_module._PART_KEYS, "gas": config_module._GAS_KEYS,
               "links": config_module._LINK_KEYS, "banks[]": config_module._BANK_KEYS,
-              "throws[]": config_module._THROW_KEYS, "cylinders[]": config_module._CYLINDER_KEYS}
+              "throws[]": config_module._THROW_KEYS, "cylinders[]": config_module._CYLINDER_KEYS,
+              "crankshafts[]": config_module._CRANKSHAFT_KEYS}
     text_or_tables = {"name", "source", "frame", "firing_order", "masses", "parts", "gas",
-                      "banks", "throws", "links", "cylinders"}
+                      "banks", "throws", "links", "cylinders", "crankshafts"}
     for table, keys in tables.items():
         extra = text_or_tables if table == "" else set()
         assert set(SCHEMA[table]) | extra == set(keys), table

@@ -38,11 +38,13 @@ SCHEMA = {
             "polytropic_exponent": NUMBER, "combustion_start": ANGLE,
             "combustion_duration": ANGLE, "wiebe_a": NUMBER, "wiebe_m": NUMBER},
     "links": {"master_bank": WHOLE, "length": "length", "knuckle_radius": "length"},
-    "banks[]": {"angle": ANGLE},
-    "throws[]": {"phase": ANGLE, "z": "length"},
+    "banks[]": {"angle": ANGLE, "pin_offset": "length"},
+    "throws[]": {"phase": ANGLE, "z": "length", "crankshaft": WHOLE},
     "cylinders[]": {"number": WHOLE, "bank": WHOLE, "throw": WHOLE, "z": "length",
                     "reciprocating": "mass", "master": WHOLE, "link_length": "length",
-                    "knuckle_radius": "length", "knuckle_angle": ANGLE},
+                    "knuckle_radius": "length", "knuckle_angle": ANGLE, "pin_offset": "length",
+                    "opposed_throw": WHOLE, "opposed_reciprocating": "mass"},
+    "crankshafts[]": {"x": "length", "y": "length", "direction": WHOLE, "phase": ANGLE},
 }
 #: configuration keys that hold text or lists: named in messages, never swept
 _NOT_SCALARS = {"name": "text", "source": "text", "frame": "text (fixed or rotary)",
