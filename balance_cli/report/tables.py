@@ -670,6 +670,16 @@ def torque_tables(results, scale, fmt):
                        _torque_rows(r, scale), fmt), ""]
         if r.indicated_power_kw is not None:
             out += [f"Indicated power (mean gas torque × ω): {figure(r.indicated_power_kw)} kW.", ""]
+        if r.crankshafts:
+            out += ["Each crankshaft's torque (gas and inertia of the parts it drives, positive in "
+                    "its own sense of turning; geared 1:1, their sum is the total on the first):",
+                    "", render(["Crankshaft", "Turning", f"Mean ({ml})", f"Max ({ml})", f"Min ({ml})",
+                                f"Range ΔC ({ml})"],
+                               [[str(c.number), "with the first" if c.direction == 1 else
+                                 "against the first"]
+                                + [figure(scale.moment(v)) for v in (c.torque.mean, c.torque.max,
+                                                                     c.torque.min, c.torque.range)]
+                                for c in r.crankshafts], fmt), ""]
         largest = max(math.hypot(c, s) for _, c, s in r.total.orders) if r.total.orders else 0.0
         out += [f"Orders of the total torque ({'gas and inertia' if r.gas else 'inertia only'}; "
                 "amplitude·cos(kθ − phase); orders below a thousandth of the largest left out):", "",
@@ -679,9 +689,13 @@ def torque_tables(results, scale, fmt):
             magnitude = np.abs(pin.force_n)
             rows.append([str(pin.throw)] + [figure(scale.force(v, 1.0)) for v in (
                 pin.radial.mean, pin.tangential.mean, float(magnitude.max()), float(magnitude.min()))])
-        if r.main_bearings is not None:
-            magnitude = np.abs(r.main_bearings.force_n)
-            rows.append(["main bearings", "-", "-", figure(scale.force(float(magnitude.max()), 1.0)),
+        bearings = [("main bearings", r.main_bearings)] + [
+            (f"main bearings, crankshaft {c.number}", c.main_bearings) for c in r.crankshafts]
+        for label, load in bearings:
+            if load is None:
+                continue
+            magnitude = np.abs(load.force_n)
+            rows.append([label, "-", "-", figure(scale.force(float(magnitude.max()), 1.0)),
                          figure(scale.force(float(magnitude.min()), 1.0))])
         out += ["Forces of the rods on the crank pins, and of the crankshaft on its main bearings "
                 "together:", "",
