@@ -640,7 +640,7 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
         pin_results.append(PinForce(index + 1, engine.cycle_deg, theta, force,
                                     series(local.real, "N", tile=False),
                                     series(sense * local.imag, "N", tile=False)))
-    bearing_loads = [None] * len(engine.crankshafts)
+    bearing_loads: list[PinForce | None] = [None] * len(engine.crankshafts)
     if bearings and not engine.is_rotary:
         for s_index in range(len(engine.crankshafts)):
             on_shaft = [f for f, t in zip(pins, engine.throws) if t.crankshaft == s_index]
