@@ -519,3 +519,48 @@ def test_w16_primary_couple_only():
     assert_allclose(abs(mp), math.sqrt(120), rtol=EXACT)
     assert_zero(*parts(name, 2, d)[:4])
     assert intervals(name) == (45.0,) * 16
+
+
+# ------------------------------------------------------------------ balance list, by folder
+
+
+def _listing(folder):
+    from click.testing import CliRunner
+
+    from balance_cli.cli import main
+    return CliRunner().invoke(main, ["list", str(folder)])
+
+
+def _headings(output):
+    return [line for line in output.splitlines() if line.endswith(")") and "engine" in line
+            and not line.startswith(("Config", "-", " "))]
+
+
+def test_list_prints_one_table_per_folder_in_path_order(tmp_path):
+    """Files at the top, in folders and in a nested folder: one headed table each, DIR's own
+    files first (headed by DIR as given), then the folders by path, a folder before its
+    subfolders (a/x.toml sorts after a/b/y.toml, but folder a comes before a/b)."""
+    twin = (ROOT / "configs" / "today" / "inline" / "inline-2-180.toml").read_text(encoding="utf-8")
+    for relative in ("b.toml", "a/x.toml", "a/b/y.toml", "a/b/z.toml", "c/w.toml"):
+        path = tmp_path / relative
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(twin.replace('name = "In-line 2, 180° crank (Kawasaki Ninja 650)"',
+                                     f'name = "twin {relative}"'), encoding="utf-8")
+    result = _listing(tmp_path)
+    assert result.exit_code == 0, result.output
+    assert _headings(result.output) == [f"{tmp_path} (1 engine)", "a (1 engine)", "a/b (2 engines)",
+                                        "c (1 engine)"]
+    blocks = result.output.split("\n\n")
+    assert "twin b.toml" in blocks[0] and "twin a/x.toml" not in blocks[0]
+    assert "twin a/x.toml" in blocks[1]
+    assert "twin a/b/y.toml" in blocks[2] and "twin a/b/z.toml" in blocks[2]
+
+
+def test_list_of_the_library_groups_today_by_family():
+    result = _listing(ROOT / "configs")
+    assert result.exit_code == 0, result.output
+    headings = _headings(result.output)
+    for family, count in (("inline", 8), ("v", 11), ("boxer", 4), ("w", 1)):
+        assert f"today/{family} ({count} engines)" in headings or f"today/{family} (1 engine)" in headings
+    assert headings.index("today/boxer (4 engines)") < headings.index("today/inline (8 engines)")
+    assert "tanaka-part3 (9 engines)" in headings
