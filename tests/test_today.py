@@ -592,3 +592,37 @@ def test_library_table_figures_match_the_hand_derivations():
     assert float(rows["today/v/v8-90-cross-plane.toml"][7]) == pytest.approx(m1, rel=5e-3)  # 3 digits
     assert float(rows["today/v/v-twin-90.toml"][6]) == pytest.approx(0.5, rel=5e-3)
     assert float(rows["today/inline/inline-2-270.toml"][6]) == pytest.approx(math.sqrt(2) / 2, rel=5e-3)
+
+
+@pytest.mark.parametrize("name", FILES)
+def test_each_file_names_its_engine_marks_estimates_and_states_its_balance(name):
+    """The issue asks for a source key, the real engine in a comment block, estimates said to
+    be estimates, and the textbook (or, for the W16, a derived) statement of the balance."""
+    engine = engine_of(name)
+    assert engine.source
+    comment = [line for line in (TODAY / name).read_text(encoding="utf-8").splitlines()
+               if line.startswith("#")]
+    text = " ".join(comment)
+    assert len(comment) >= 4
+    assert "estimate" in text
+    assert "Textbook" in text or "Derived statement" in text
+
+
+def test_list_reports_an_invalid_file_after_the_tables_of_the_valid_ones(tmp_path):
+    """One bad file in a folder: the other folders are still listed, the bad one is named on
+    standard error in one line, and the exit status is 1."""
+    from click.testing import CliRunner
+
+    from balance_cli.cli import main
+    twin = (TODAY / "inline" / "inline-2-180.toml").read_text(encoding="utf-8")
+    (tmp_path / "good").mkdir()
+    (tmp_path / "bad").mkdir()
+    (tmp_path / "good" / "twin.toml").write_text(twin, encoding="utf-8")
+    (tmp_path / "bad" / "twin.toml").write_text(twin.replace('speed = "8000 rpm"', 'speed = "8000 kg"'),
+                                                encoding="utf-8")
+    result = CliRunner().invoke(main, ["list", str(tmp_path)])
+    assert result.exit_code == 1
+    assert _headings(result.stdout) == ["good (1 engine)"]
+    errors = [line for line in result.stderr.splitlines() if line]
+    assert len(errors) == 1 and errors[0].startswith("invalid: ") and "bad" in errors[0]
+    assert "speed" in errors[0] and "Traceback" not in result.output
