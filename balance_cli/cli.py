@@ -28,7 +28,7 @@ from .regress import regression as regression_of
 from .report.csvfile import balance_csv, compare_csv, search_csv, torque_csv
 from .report.display import Scale
 from .report.junit import junit_xml
-from .report.tables import (balance_tables, compare_tables, list_table, regression_tables,
+from .report.tables import (balance_tables, compare_tables, list_tables, regression_tables,
                             search_tables, show_table, steadiness_text, torque_tables)
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings
 from .units import UNIT_SYSTEMS, parse_quantity, rad_s_to_rpm, unit_system
@@ -217,17 +217,27 @@ def list_(folder):
     """List the engines in DIR (default: configs, in the current folder): name, cylinders,
     cycle, frame, source.
 
+    One table per folder, headed by the folder's path relative to DIR (DIR itself for the
+    files directly in it): the files of DIR first, then each folder in path order, a folder
+    before its subfolders (configs, tanaka-part3, today/boxer, today/inline, ...).
+
     Invalid files are reported on standard error (exit status 1) after the listing.
     """
-    if not Path(folder).is_dir():
+    root = Path(folder)
+    if not root.is_dir():
         raise click.ClickException(f"{folder}: no such folder; give a folder of .toml files")
-    engines, errors = [], []
+    groups, errors = {}, []
     for path in _inputs([folder]):
         try:
-            engines.append(load(path))
+            engine = load(path)
         except ConfigError as exc:
             errors.append(str(exc))
-    click.echo(list_table(engines))
+            continue
+        groups.setdefault(Path(path).parent.relative_to(root).parts, []).append(engine)
+    # folders sorted by their path parts: DIR's own files first, a folder before its subfolders
+    if groups:
+        click.echo(list_tables((folder if not parts else "/".join(parts), groups[parts])
+                               for parts in sorted(groups)))
     for error in errors:
         click.echo(f"invalid: {error}", err=True)
     if errors:

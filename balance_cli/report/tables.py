@@ -14,7 +14,7 @@ from ..units import (kg_to_g, m_to_mm, pa_to_bar, rad_s_to_rpm, round_degrees, s
 from .display import Scale, figure, markdown_text, plain_text
 
 __all__ = ["render", "compare_parts", "compare_tables", "part_rows", "part_headers", "order_parts",
-           "balance_tables", "balance_summary", "list_table", "show_table", "regression_tables",
+           "balance_tables", "balance_summary", "list_table", "list_tables", "show_table", "regression_tables",
            "torque_tables", "torque_summary", "steadiness_text", "search_tables", "search_summary",
            "search_rows"]
 
@@ -252,6 +252,16 @@ def list_table(engines):
     rows = [[e.config_path, e.name, str(e.n_cylinders), str(e.cycle), e.frame, e.source]
             for e in engines]
     return render(["Config", "Name", "Cyl", "Cycle", "Frame", "Source"], rows, "table")
+
+
+def list_tables(groups):
+    """``balance list``: one table per folder, under its heading. ``groups`` is a sequence of
+    (heading, engines), in the order to print them."""
+    blocks = []
+    for heading, engines in groups:
+        count = len(engines)
+        blocks.append(f"{heading} ({count} engine{'s' if count != 1 else ''})\n{list_table(engines)}")
+    return "\n\n".join(blocks)
 
 
 def _mm(length_m):
