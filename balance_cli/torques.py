@@ -34,7 +34,7 @@ from .errors import AnalysisError, OrderError, SamplingWarning
 from .gas import PressureCurve, cycle_pressure
 from .harmonics import orders_of
 from .firing import firing_sequence
-from .kinematics import (check_assembly, crank_angles_of, engine_angles, linkage_state,
+from .kinematics import (BIG_ENDS, CRANKSHAFT_OWNERS, check_assembly, crank_angles_of, engine_angles, linkage_state,
                          piston_travel, travel_at)
 from .model import Engine
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings, part_values
@@ -412,7 +412,9 @@ def _pin_forces(engine, state, angles, turns, net_pressure, area):
     masses, rods = state.masses, state.rods
     k = orders_of(n)
     accelerations = np.fft.ifft(np.fft.fft(masses.positions, axis=-1) * -(k * omega) ** 2, axis=-1)
-    weights = np.where(masses.cylinder != -1, masses.masses_kg, 0.0)[:, None]  # not the crank's
+    # what rides on the pins: the cylinders' masses and the big ends (not the crankshaft's own
+    # masses, counterweights or balancer shafts)
+    weights = np.where(masses.cylinder >= BIG_ENDS, masses.masses_kg, 0.0)[:, None]
     rates = (np.conj(rods.directions) * periodic_derivative(rods.directions)).imag
     angular_accelerations = omega**2 * periodic_derivative(rates).real
     step = _SHIFT * engine.crank_radius_m
@@ -443,7 +445,9 @@ def _pin_forces(engine, state, angles, turns, net_pressure, area):
             parts = parts + sum(net_pressure[m] * area * np.tile(ds[i], turns)
                                 for i, m in enumerate(numbers))
         forces.append(-(parts[0] + 1j * parts[1]))
-    own = np.where(masses.cylinder == -1, masses.masses_kg, 0.0)[:, None]
+    # the crankshaft's own masses and its counterweights load the main bearings; a balancer
+    # shaft runs in bearings of its own
+    own = np.where(np.isin(masses.cylinder, CRANKSHAFT_OWNERS), masses.masses_kg, 0.0)[:, None]
     crank_inertia = np.tile(-(own * accelerations).sum(axis=0), turns)
     return forces, crank_inertia
 

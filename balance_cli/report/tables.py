@@ -335,6 +335,15 @@ WEIGHT_COLUMNS = [
     ("radius_m", "Radius (mm)", lambda v: f"{m_to_mm(v):g}"),
     ("angle_deg", "Angle (° from throw 1)", lambda v: f"{round_degrees(v, 2):.2f}"),
 ]
+#: one row per counterweight as built (``Balance.to_dict``'s ``as_built.counterweights``)
+BUILT_WEIGHT_COLUMNS = [
+    ("throw", "Throw", str),
+    ("z_m", "z (mm)", lambda v: f"{m_to_mm(v):g}"),
+    ("mass_radius_kgm", "m·ρ (kg·m)", figure),
+    ("mass_kg", "Mass (kg)", lambda v: "-" if v is None else figure(v)),
+    ("radius_m", "Radius (mm)", lambda v: "-" if v is None else f"{m_to_mm(v):g}"),
+    ("angle_deg", "Angle (° from its pin)", lambda v: f"{round_degrees(v, 2):.2f}"),
+]
 #: one row per mass of a balancer shaft (``Balance.to_dict``'s ``balancer_shafts``, each mass
 #: record with its shaft's ``shaft`` number, ``speed_ratio`` and ``offset_m``; None on the
 #: shaft's second mass and after, so that a shaft reads as one block)
@@ -418,6 +427,25 @@ def _plane_text(weight):
     return f"z = {m_to_mm(weight['z_m']):g} mm"
 
 
+def _as_built_lines(record, n_unit, scale, fmt):
+    """The counterweights and shafts the configuration gives as built, and what they leave."""
+    built = record.get("as_built")
+    if built is None:
+        return []
+    weights, shafts = built["counterweights"], built["balancer_shafts"]
+    out = [f"As built: {len(weights)} counterweight{'' if len(weights) == 1 else 's'} and "
+           f"{len(shafts)} balancer shaft{'' if len(shafts) == 1 else 's'} (from the "
+           "configuration). Everything proposed below is in addition to them.", ""]
+    if weights:
+        out += [_record_table(weights, BUILT_WEIGHT_COLUMNS, fmt), ""]
+    if shafts:
+        out += ["Balancer shafts as built (each mass's m·e, its angle from the reference axis when "
+                "θ = 0, positive with rotation, and its axial position):", "",
+                _record_table(_shaft_rows(shafts), SHAFT_COLUMNS, fmt), ""]
+    return out + _left(record["name"], "counterweights and shafts as built", built["orders"],
+                       n_unit, scale, fmt)
+
+
 def balance_tables(balances, scale, fmt):
     """``balance counterweight`` as text or Markdown, engine by engine, rendered from the
     records of ``Balance.to_dict``."""
@@ -434,9 +462,12 @@ def balance_tables(balances, scale, fmt):
                "ones per throw")
         carrier = "crankcase" if record["frame"] == "rotary" else "crank"
         out += [f"{heading}{safe(record['name'])}: counterweights on the {carrier}, {how}", ""]
+        out += _as_built_lines(record, n_unit, scale, fmt)
         if all(w["mass_kg"] == 0.0 for w in record["counterweights"]):
             out += [f"None needed: the forward first order is already zero on the {carrier}.", ""]
         else:
+            if "as_built" in record:
+                out += ["Counterweights to add to those built:", ""]
             out += [_record_table(record["counterweights"], WEIGHT_COLUMNS, fmt), ""]
         a = record["antivibrateur"]
         if a is not None:
