@@ -287,6 +287,21 @@ def _parts_lines(engine):
     return lines
 
 
+def _as_built_show_lines(engine):
+    """``balance show``'s lines for the counterweights and balancer shafts as built."""
+    lines = []
+    for weight in engine.counterweights:
+        lines.append(f"  counterweight: throw {weight.throw + 1}, m·ρ {figure(weight.mass_radius_kgm)} "
+                     f"kg·m at {math.degrees(weight.angle_rad):g}° from its pin, z "
+                     f"{_mm(engine.counterweight_z_m(weight))}")
+    for shaft in engine.balancer_shafts:
+        masses = "; ".join(f"m·e {figure(m.mass_radius_kgm)} kg·m at {math.degrees(m.angle_rad):g}°, "
+                           f"z {_mm(engine.balancer_z_m(m))}" for m in shaft.masses)
+        lines.append(f"  shaft:         ratio {shaft.ratio:+d}, axis lateral {_mm(shaft.lateral_m)}, "
+                     f"vertical {_mm(shaft.vertical_m)}; {masses}")
+    return lines
+
+
 def show_table(engine, firing):
     """One engine, one row per cylinder, with the engine's data above."""
     knuckles = sorted({c.knuckle_kg for c in engine.cylinders if c.is_link})
@@ -305,6 +320,7 @@ def show_table(engine, firing):
         f"{kg_to_g(engine.crank_kg):g} g per throw"
         + "".join(f", knuckle {kg_to_g(kg):g} g per link rod" for kg in knuckles),
         *_parts_lines(engine),
+        *_as_built_show_lines(engine),
         f"  firing:        {'-'.join(map(str, firing.order))} "
         f"({'given' if firing.given else 'most uniform the crank allows'})",
         f"  intervals (°): {', '.join(f'{i:.2f}' for i in firing.intervals_deg)}",
