@@ -305,21 +305,21 @@ class Balance:
             index = 0 if weight.plane.throw is None else weight.plane.throw - 1
             # Counterweight.angle_deg is measured from throw 1; a built one from its own throw
             angle = weight.angle_deg + first - math.degrees(engine.throws[index].phase_rad)
-            weights.append({"throw": index + 1, "mass": f"{weight.mass_kg!r} kg",
-                            "radius": f"{weight.radius_m!r} m",
-                            "angle": math.remainder(angle, 360.0) + 0.0,
-                            "z": f"{weight.plane.z_m!r} m"})
+            weights.append({"throw": index + 1, "mass": f"{float(weight.mass_kg)!r} kg",
+                            "radius": f"{float(weight.radius_m)!r} m",
+                            "angle": float(math.remainder(angle, 360.0)) + 0.0,
+                            "z": f"{float(weight.plane.z_m)!r} m"})
         tables: dict = {"counterweights": weights}
         if shafts:
             tables["shafts"] = [
-                {"ratio": shaft.speed_ratio, "lateral": f"{shaft.lateral_m!r} m",
-                 "vertical": f"{shaft.vertical_m!r} m",
+                {"ratio": shaft.speed_ratio, "lateral": f"{float(shaft.lateral_m)!r} m",
+                 "vertical": f"{float(shaft.vertical_m)!r} m",
                  # ShaftMass.phase_deg is measured with the crank; a built mass's angle in its
                  # shaft's own sense of turning
-                 "masses": [{"mass_radius": f"{m.mass_eccentricity_kgm!r} kg*m",
+                 "masses": [{"mass_radius": f"{float(m.mass_eccentricity_kgm)!r} kg*m",
                              "angle": math.remainder(math.copysign(1, shaft.speed_ratio)
                                                      * m.phase_deg, 360.0) + 0.0,
-                             "z": f"{m.z_m!r} m"} for m in shaft.masses]}
+                             "z": f"{float(m.z_m)!r} m"} for m in shaft.masses]}
                 for shaft in self.balancer_shafts]
         return tables
 
