@@ -535,3 +535,33 @@ def test_show_lists_what_is_built(tmp_path):
     assert result.exit_code == 0, result.output
     assert "counterweight: throw 1, m·ρ 0.04000 kg·m at 180° from its pin" in result.output
     assert "shaft:         ratio +2" in result.output
+
+
+def test_search_refuses_a_template_with_counterweights(tmp_path):
+    """A counterweight is sized for one crank; the search chooses the crank: refused, naming
+    the tables to remove."""
+    template = "\n".join(line for line in I4.splitlines()
+                         if not line.startswith(("phase", "firing_order")))
+    path = write(tmp_path, template + "\n" + ONE_WEIGHT)
+    result = run("search", path)
+    assert result.exit_code == 1
+    assert "remove the [[counterweights]] and [[shafts]] tables from the template" in result.output
+
+
+def test_sweep_turns_a_built_counterweight(tmp_path):
+    """Sweeping the rear end-web counterweight's angle (derivation above). At its right angle
+    (−161.57° from throw 4's pin) the forward primary force and couple are gone. Turned half a
+    turn, it equals the front one, c₁: the pair makes a force 2·c₁ and no couple about z̄ (they
+    sit at ∓1.5·d from it), so the engine's own couple √10·(m + ROT)·r·ω²·d is back and the
+    first-order force is 2·|c₁| = 2·(m + ROT)·r·ω²·√10/3."""
+    path = write(tmp_path, V8 + V8_WEIGHTS)
+    right = ALPHA_DEG - 180
+    result = run("sweep", path, "--vary", "counterweights[2].angle", "--values",
+                 f"{right!r},{right + 180!r}", "--quantity", "F1,M1", "--format", "json")
+    assert result.exit_code == 0, result.output
+    points = json.loads(result.output)["points"]
+    unit = (M + ROT) * R * W**2
+    assert_allclose([p["F1_N"] for p in points], [0.0, 2 * unit * math.sqrt(10) / 3],
+                    rtol=1e-9, atol=CANCEL * unit)
+    assert_allclose([p["M1_Nm"] for p in points], [0.0, math.sqrt(10) * unit * D],
+                    rtol=1e-9, atol=CANCEL * unit * D)
