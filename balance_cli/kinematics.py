@@ -20,7 +20,7 @@ import numpy as np
 from .errors import ModelError
 from .units import round_degrees
 
-__all__ = ["BIG_ENDS", "CRANK", "COUNTERWEIGHT", "BALANCER", "CRANKSHAFT_OWNERS",
+__all__ = ["BIG_ENDS", "CRANK", "COUNTERWEIGHT", "BALANCER", "CRANKSHAFT_OWNERS", "UNKNOWN_RADIUS_M",
            "counterweight_angle", "balancer_positions", "MassSet", "RodSet", "Linkage", "LinkageState", "linkage", "linkage_state", "pin_angle",
            "mass_positions", "rod_directions",
            "crank_angles_of", "travel_at", "piston_travel", "check_assembly", "engine_angles"]
@@ -30,6 +30,11 @@ __all__ = ["BIG_ENDS", "CRANK", "COUNTERWEIGHT", "BALANCER", "CRANKSHAFT_OWNERS"
 BIG_ENDS, CRANK, COUNTERWEIGHT, BALANCER = 0, -1, -2, -3
 #: the owners whose masses are the crankshaft's (they load the main bearings, not the pins)
 CRANKSHAFT_OWNERS = (CRANK, COUNTERWEIGHT)
+
+#: where an unbalance given without its radius (``mass_radius`` alone) is placed, m: its forces
+#: and moments depend on m·ρ only, and at a vanishing radius its moment of inertia m·ρ², which
+#: cannot be known without ρ, stays out of the reduced mass (it is 1e-6 of m·ρ in kg·m²)
+UNKNOWN_RADIUS_M = 1e-6
 
 #: crank angles at which a linkage is checked for assembly (0.1° apart)
 _CHECK_SAMPLES = 3600
@@ -156,10 +161,10 @@ def counterweight_angle(engine, weight, crank_angles):
 
 def _counterweight_rows(engine, crank_angles):
     """(position, mass, z, owner, throw) of every counterweight as built, in the crankcase's
-    frame; an unbalance given without its radius is placed at 1 m (only m·ρ matters)."""
+    frame; an unbalance given without its radius at :data:`UNKNOWN_RADIUS_M`."""
     rows = []
     for weight in engine.counterweights:
-        radius = 1.0 if weight.radius_m is None else weight.radius_m
+        radius = UNKNOWN_RADIUS_M if weight.radius_m is None else weight.radius_m
         position = radius * np.exp(1j * counterweight_angle(engine, weight, crank_angles))
         centre = engine.crankshaft_of(weight.throw).centre
         rows.append((position + centre if centre else position, weight.mass_radius_kgm / radius,
@@ -174,7 +179,7 @@ def balancer_positions(engine, shaft, angles):
     sign = 1 if shaft.ratio > 0 else -1
     out = []
     for mass in shaft.masses:
-        e = 1.0 if mass.eccentricity_m is None else mass.eccentricity_m
+        e = UNKNOWN_RADIUS_M if mass.eccentricity_m is None else mass.eccentricity_m
         out.append(centre + e * np.exp(1j * sign * (abs(shaft.ratio) * angles + mass.angle_rad)))
     return out
 
@@ -184,7 +189,7 @@ def _balancer_rows(engine, angles):
     rows = []
     for shaft in engine.balancer_shafts:
         for mass, position in zip(shaft.masses, balancer_positions(engine, shaft, angles)):
-            e = 1.0 if mass.eccentricity_m is None else mass.eccentricity_m
+            e = UNKNOWN_RADIUS_M if mass.eccentricity_m is None else mass.eccentricity_m
             rows.append((position, mass.mass_radius_kgm / e, engine.balancer_z_m(mass), BALANCER, -1))
     return rows
 

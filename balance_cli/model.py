@@ -222,8 +222,9 @@ class CounterweightMass:
     z_m : float or None
         axial position, m; None (the default) takes its throw's ``z_m``
     radius_m : float or None
-        radius of its centre of mass, m, when known (then ``mass_kg`` is m·ρ/ρ); None places
-        the unbalance at 1 m in the kinematics, which changes no force, moment or torque
+        radius of its centre of mass, m, when known (then ``mass_kg`` is m·ρ/ρ, and the
+        counterweight adds m·ρ² to the reduced mass like any point mass); None: only m·ρ is
+        known, which gives every force and moment, and its moment of inertia is left out
     """
 
     throw: int
@@ -266,8 +267,9 @@ class BalancerMass:
     z_m : float or None
         axial position, m; None (the default) takes z̄, the cylinders' mean
     eccentricity_m : float or None
-        its eccentricity e, m, when known; None places the unbalance at 1 m (no force, moment
-        or torque changes)
+        its eccentricity e, m, when known (then the mass adds m·e²·ratio² to the reduced mass,
+        its kinetic energy at the shaft's speed); None: only m·e is known, which gives every
+        force, moment and rolling moment, and its moment of inertia is left out
     """
 
     mass_radius_kgm: float

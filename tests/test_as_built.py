@@ -565,3 +565,39 @@ def test_sweep_turns_a_built_counterweight(tmp_path):
                     rtol=1e-9, atol=CANCEL * unit)
     assert_allclose([p["M1_Nm"] for p in points], [0.0, math.sqrt(10) * unit * D],
                     rtol=1e-9, atol=CANCEL * unit * D)
+
+
+def test_backward_shaft_above_the_crank_rolls_the_engine_by_hand():
+    """A shaft at −2ω, its axis at v along the vertical (the cylinder axis, 0°: x = v), one mass
+    m·e at α in its own sense (against the crank): at e·e^{−i(2θ+α)}, force
+    F = m·e·(2ω)²·e^{−i(2θ+α)}. Rolling moment Im(x̄·F) = v·Im F = −4·v·m·e·ω²·sin(2θ + α)
+    = c·cos 2θ + s·sin 2θ with c = −4·v·m·e·ω²·sin α, s = −4·v·m·e·ω²·cos α."""
+    me, alpha, v = 0.003, math.radians(40.0), -0.08
+    engine = balance.loads(I4).replace(balancer_shafts=(BalancerShaftSpec(
+        -2, (BalancerMass(me, alpha),), vertical_m=v),))
+    scale = 4 * abs(v) * me * W**2
+    expected = [-scale * math.copysign(1, v) * math.sin(alpha),
+                -scale * math.copysign(1, v) * math.cos(alpha)]
+    frame = np.subtract(balance.torque(engine).frame.order(2),
+                        balance.torque(balance.loads(I4)).frame.order(2))
+    assert_allclose(frame, expected, atol=1e-9 * scale)
+    moment = built_shafts(engine)[0].rolling_moment
+    assert_allclose([moment.cos_nm, moment.sin_nm], expected, atol=1e-12 * scale)
+
+
+def test_reduced_mass_counts_known_radii_only():
+    """μ = Σ m·|dx/dθ|²: a counterweight of mass m at radius ρ turning with the crank adds
+    m·ρ² (|dx/dθ| = ρ), a balancer mass at e on a ratio-k shaft m·e²·k² (|dx/dθ| = k·e). Given
+    as m·ρ alone the radius is unknown and so is that inertia: it is left out (at most 1e-6 of
+    m·ρ·k², in kg·m²: the unbalance sits at a vanishing radius of 1 µm)."""
+    bare = balance.loads(I4)
+    mean = balance.torque(bare, bearings=False).reduced_mass.mean_kgm2
+    known = bare.replace(
+        counterweights=(CounterweightMass(0, 0.02, math.pi, radius_m=0.05),),
+        balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(0.01, 0.0, eccentricity_m=0.02),)),))
+    added = balance.torque(known, bearings=False).reduced_mass.mean_kgm2 - mean
+    assert_allclose(added, 0.02 * 0.05 + 0.01 * 0.02 * 4, rtol=1e-9)
+    unknown = bare.replace(counterweights=(CounterweightMass(0, 0.02, math.pi),),
+                           balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(0.01, 0.0),)),))
+    added = balance.torque(unknown, bearings=False).reduced_mass.mean_kgm2 - mean
+    assert 0 <= added <= 1.001e-6 * (0.02 + 0.01 * 4)

@@ -206,11 +206,15 @@ def test_schema_covers_every_key_of_the_configuration_format():
     tables = {"": config_module._TOP_KEYS, "masses": config_module._MASS_KEYS,
               "parts": config_module._PART_KEYS, "gas": config_module._GAS_KEYS,
               "links": config_module._LINK_KEYS, "banks[]": config_module._BANK_KEYS,
-              "throws[]": config_module._THROW_KEYS, "cylinders[]": config_module._CYLINDER_KEYS}
+              "throws[]": config_module._THROW_KEYS, "cylinders[]": config_module._CYLINDER_KEYS,
+              "counterweights[]": config_module._COUNTERWEIGHT_KEYS,
+              "shafts[]": config_module._SHAFT_KEYS}
     text_or_tables = {"name", "source", "frame", "firing_order", "masses", "parts", "gas",
-                      "banks", "throws", "links", "cylinders"}
+                      "banks", "throws", "links", "cylinders", "counterweights", "shafts"}
+    # a shaft's [[shafts.masses]] are tables within its table: not swept
+    nested = {"": text_or_tables, "shafts[]": {"masses"}}
     for table, keys in tables.items():
-        extra = text_or_tables if table == "" else set()
+        extra = nested.get(table, set())
         assert set(SCHEMA[table]) | extra == set(keys), table
 
 
