@@ -504,7 +504,11 @@ def balance_tables(balances, scale, fmt):
         if "after_shafts" in record and not record["balancer_shafts"]:
             out += ["Balancer shafts: none needed; the orders asked for are already zero.", ""]
         elif "after_shafts" in record:
-            out += ["Balancer shafts as built (each mass's m·e, its angle from the reference axis "
+            # "as built": one shaft per speed ratio with its masses; on an engine that has
+            # shafts already, these are more of them
+            what = ("Balancer shafts to add to those built" if "as_built" in record
+                    else "Balancer shafts as built")
+            out += [f"{what} (each mass's m·e, its angle from the reference axis "
                     "when θ = 0, positive with rotation, and its axial position):", "",
                     _record_table(_shaft_rows(record["balancer_shafts"]), SHAFT_COLUMNS, fmt), ""]
             built = {s["order"] for s in record["balancer_shafts"]}
