@@ -290,13 +290,19 @@ class Balance:
         Raises
         ------
         CounterweightError
-            for an antivibrateur, which no configuration table describes
+            for an antivibrateur, which no configuration table describes, and for a rotary
+            engine, whose counterweights ride on its crankcase
         """
         if self.antivibrateur is not None:
             raise CounterweightError("has no configuration table, and the counterweights "
                                      "proposed include its mass; leave it out to write a "
                                      "configuration", "antivibrateur_radius_m")
         engine = self.engine
+        if engine.is_rotary:
+            raise CounterweightError(
+                "of a rotary engine cannot be written as configuration tables: its counterweights "
+                "ride on the turning crankcase, and [[counterweights]] and [[shafts]] describe "
+                "masses geared to a turning crank", "counterweights")
         first = math.degrees(engine.throws[0].phase_rad)
         weights = []
         for weight in self.counterweights:

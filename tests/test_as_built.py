@@ -601,3 +601,13 @@ def test_reduced_mass_counts_known_radii_only():
                            balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(0.01, 0.0),)),))
     added = balance.torque(unknown, bearings=False).reduced_mass.mean_kgm2 - mean
     assert 0 <= added <= 1.001e-6 * (0.02 + 0.01 * 4)
+
+
+def test_write_refuses_a_rotary(tmp_path):
+    """A rotary's counterweights ride on its turning crankcase, which [[counterweights]] does
+    not describe: nothing is written, rather than a file that cannot be loaded."""
+    target = tmp_path / "out.toml"
+    result = run("counterweight", CONFIGS / "clerget-rotary.toml", "--write", target)
+    assert result.exit_code == 1 and "rotary" in result.output, result.output
+    assert len(result.output.strip().splitlines()) == 1
+    assert not target.exists()
