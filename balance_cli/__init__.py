@@ -74,3 +74,8 @@ def __getattr__(name):
         loaded = importlib.import_module(module, __name__)
         return loaded if attribute is None else getattr(loaded, attribute)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+# several crankshafts (issue 19): a statement of its own, as above
+from .model import Crankshaft  # noqa: E402
+from .torques import CrankshaftTorque  # noqa: E402
+__all__ += ["Crankshaft", "CrankshaftTorque"]

@@ -194,8 +194,10 @@ class EngineResult:
 
 def _counterweight_cancels_first_order(engine):
     """An ideal crankshaft counterweight takes the forward first order away (not on a rotary,
-    whose crank does not turn)."""
-    return not engine.is_rotary
+    whose crank does not turn, nor where a crankshaft turns against the first: its
+    counterweights make backward forces, and an engine's first order does not split between
+    its crankshafts when opposed pistons join them)."""
+    return not engine.is_rotary and all(s.direction == 1 for s in engine.crankshafts)
 
 
 def _above_floor(value, floor):

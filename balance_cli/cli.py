@@ -620,7 +620,9 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
     results = _analyse_all(_load_all(files, speed), samples, max_order)
     with _reported():
         comparison = comparison_of(results, reference)
-    balances = _run_each(results, "Balancing", counterweights)
+    # counterweights are proposed for one crankshaft; the report names the engines left out
+    balances = _run_each([r for r in results if not r.engine.has_several_crankshafts],
+                         "Balancing", counterweights)
     from .torques import torque as torque_of
 
     # the report shows no bearing forces: leaving them out halves the work

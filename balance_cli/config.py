@@ -21,7 +21,7 @@ from . import checks
 from .errors import ConfigError, ModelError, UnitError
 from .kinematics import check_assembly
 from .model import (FRAMES, MAX_SHAFT_RATIO, BalancerMass, BalancerShaftSpec, CounterweightMass,
-                    Cylinder, Engine, GasCycle, Parts, Throw)
+                    Crankshaft, Cylinder, Engine, GasCycle, Parts, Throw)
 from .units import parse_quantity
 
 __all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template", "load_data",
@@ -30,22 +30,23 @@ __all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template
 _TOP_KEYS = {
     "name", "source", "cycle", "speed", "crank_radius", "rod_length", "pin_offset", "frame",
     "firing_order", "vertical", "power", "masses", "parts", "gas", "banks", "throws", "links", "cylinders",
-    "counterweights", "shafts",
+    "crankshafts", "counterweights", "shafts",
 }
 _MASS_KEYS = {"reciprocating", "rotating", "knuckle", "crank"}
 _PART_KEYS = {"piston", "rod_mass", "rod_cg", "rod_inertia", "link_mass", "link_cg", "link_inertia",
               "crank", "crankshaft_inertia", "flywheel_inertia"}
 _GAS_KEYS = {"bore", "compression_ratio", "imep", "intake_pressure", "crankcase_pressure",
              "polytropic_exponent", "combustion_start", "combustion_duration", "wiebe_a", "wiebe_m"}
-_BANK_KEYS = {"angle"}
-_THROW_KEYS = {"phase", "z"}
+_BANK_KEYS = {"angle", "pin_offset"}
+_THROW_KEYS = {"phase", "z", "crankshaft"}
+_CRANKSHAFT_KEYS = {"x", "y", "direction", "phase"}
 _LINK_KEYS = {"master_bank", "length", "knuckle_radius"}
 _COUNTERWEIGHT_KEYS = {"throw", "mass", "radius", "mass_radius", "angle", "z"}
 _SHAFT_KEYS = {"ratio", "lateral", "vertical", "masses"}
 _SHAFT_MASS_KEYS = {"mass", "eccentricity", "mass_radius", "angle", "z"}
 _CYLINDER_KEYS = {
     "number", "bank", "throw", "z", "reciprocating", "master", "link_length", "knuckle_radius",
-    "knuckle_angle",
+    "knuckle_angle", "pin_offset", "opposed_throw", "opposed_reciprocating",
 }
 #: model field -> configuration key, for the model's messages
 _KEYS = {
@@ -54,7 +55,9 @@ _KEYS = {
     "reciprocating_kg": "reciprocating", "knuckle_kg": "masses.knuckle",
     "link_length_m": "link_length", "knuckle_radius_m": "knuckle_radius",
     "knuckle_angle_rad": "knuckle_angle", "bank_angles_rad": "banks", "z_m": "z",
-    "vertical_rad": "vertical", "power_w": "power", "balancer_shafts": "shafts",
+    "vertical_rad": "vertical", "power_w": "power", "crankshafts": "crankshafts",
+    "opposed_throw": "opposed_throw", "opposed_reciprocating_kg": "opposed_reciprocating",
+    "balancer_shafts": "shafts",
 }
 _FIELD = re.compile(r"\b(" + "|".join(map(re.escape, _KEYS)) + r")\b")
 #: angles are plain numbers of degrees within one turn either way
@@ -296,8 +299,12 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
             for key in ("rotating", "knuckle", "crank"))
     gas = _read_gas(_Reader(path, data["gas"], "gas.", _GAS_KEYS)) if top.has("gas") else None
 
-    banks = [math.radians(_Reader(path, table, f"banks[{i}].", _BANK_KEYS).degrees("angle"))
-             for i, table in enumerate(top.tables("banks"), 1)]
+    banks, bank_offsets = [], []
+    for i, table in enumerate(top.tables("banks"), 1):
+        bank = _Reader(path, table, f"banks[{i}].", _BANK_KEYS)
+        banks.append(math.radians(bank.degrees("angle")))
+        bank_offsets.append(bank.quantity("pin_offset", "length", required=False, sign="any"))
+    crankshafts = _read_crankshafts(path, data, top)
     throws = []
     for i, table in enumerate(top.tables("throws"), 1):
         throw = _Reader(path, table, f"throws[{i}].", _THROW_KEYS)
@@ -305,7 +312,9 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
             raise throw.error("phase", "a search template gives only z for each throw (the "
                                        "search chooses the phases); remove phase")
         throws.append(Throw(0.0 if template else math.radians(throw.degrees("phase")),
-                            throw.quantity("z", "length", required=False, default=0.0, sign="any")))
+                            throw.quantity("z", "length", required=False, default=0.0, sign="any"),
+                            throw.integer("crankshaft", required=False, default=1, low=1,
+                                          high=max(len(crankshafts), 1)) - 1))
 
     links = None
     if top.has("links"):
@@ -319,9 +328,10 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
     listed = top.has("cylinders")
     if listed:
         cylinders, keys = _listed_cylinders(path, top.tables("cylinders"), banks, throws,
-                                            reciprocating, knuckle, links)
+                                            reciprocating, knuckle, links, bank_offsets)
     else:
         cylinders, keys = _grid_cylinders(banks, throws, reciprocating, knuckle, links), {}
+        cylinders = [dataclasses.replace(c, pin_offset_m=bank_offsets[c.bank]) for c in cylinders]
 
     if parts is not None:
         cylinders, rotating = _lumped(path, parts, cylinders, rod_length, len(throws),
@@ -351,12 +361,37 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
             config_path=str(path), parts=parts, gas=gas, vertical_rad=vertical, power_w=power,
             shaft_inertia_kgm2=(0.0 if parts is None else
                                 parts.crankshaft_inertia_kgm2 + parts.flywheel_inertia_kgm2),
+            crankshafts=tuple(crankshafts),
             counterweights=weights, balancer_shafts=shafts,
         )
         check_assembly(engine)
     except ModelError as exc:
         raise _translated(path, exc, keys) from None
     return engine
+
+
+def _read_crankshafts(path, data, top):
+    """The [[crankshafts]]: the first is the reference, at the origin, turning forward at
+    phase 0 (its keys may be left out); the others are placed, turned and phased against it."""
+    if not top.has("crankshafts"):
+        return []
+    shafts = []
+    for i, table in enumerate(top.tables("crankshafts"), 1):
+        r = _Reader(path, table, f"crankshafts[{i}].", _CRANKSHAFT_KEYS)
+        x = r.quantity("x", "length", required=False, default=0.0, sign="any")
+        y = r.quantity("y", "length", required=False, default=0.0, sign="any")
+        direction = r.integer("direction", required=False, default=1, low=-1, high=1)
+        if direction == 0:
+            raise r.error("direction", "must be 1 (turning with the first crankshaft) or -1 "
+                                       "(against it), got 0")
+        phase = r.degrees("phase", required=False) or 0.0
+        shaft = Crankshaft(x, y, direction, math.radians(phase))
+        if i == 1 and shaft != Crankshaft():
+            changed = next(k for k in ("x", "y", "direction", "phase") if r.has(k))
+            raise r.error(changed, "the first crankshaft is the reference (at x = y = 0, direction "
+                                   "1, phase 0); place, turn and phase the others against it")
+        shafts.append(shaft)
+    return shafts
 
 
 def _not_on_rotary(top, key, frame, what):
@@ -483,10 +518,13 @@ def _lumped(path, parts, cylinders, rod_length, n_throws, missing_link_keys=()):
                 knuckle_kg=(1 - share) * parts.link_kg,
                 rod_inertia_kgm2=parts.link_correction_kgm2(c.link_length_m)))
         else:
+            piston = parts.piston_kg + parts.small_end_share(rod_length) * parts.rod_kg
             lumped.append(dataclasses.replace(
-                c, reciprocating_kg=parts.piston_kg + parts.small_end_share(rod_length) * parts.rod_kg,
+                c, reciprocating_kg=piston,
+                opposed_reciprocating_kg=piston if c.is_opposed else 0.0,
                 rod_inertia_kgm2=parts.rod_correction_kgm2(rod_length)))
-    rods = [sum(1 for c in cylinders if not c.is_link and c.throw == t) for t in range(n_throws)]
+    rods = [sum((not c.is_link and c.throw == t) + (c.opposed_throw == t) for c in cylinders)
+            for t in range(n_throws)]
     if len(set(rods)) > 1:
         raise ConfigError(path, "parts", f"the throws carry different numbers of plain or master "
                                          f"rods ({rods}); give [masses] for such an engine")
@@ -548,7 +586,7 @@ def _grid_cylinders(banks, throws, reciprocating, knuckle, links):
     return cylinders
 
 
-def _listed_cylinders(path, tables, banks, throws, reciprocating, knuckle, links):
+def _listed_cylinders(path, tables, banks, throws, reciprocating, knuckle, links, bank_offsets):
     """The complete list of [[cylinders]] with link rods given their defaults, and the key of
     each cylinder's table by number (for the model's messages)."""
     rows = []
@@ -569,6 +607,9 @@ def _listed_cylinders(path, tables, banks, throws, reciprocating, knuckle, links
             link_length=r.quantity("link_length", "length", required=False),
             knuckle_radius=r.quantity("knuckle_radius", "length", required=False),
             knuckle_angle=r.degrees("knuckle_angle", required=False),
+            pin_offset=r.quantity("pin_offset", "length", required=False, sign="any"),
+            opposed_throw=r.integer("opposed_throw", required=False, low=1, high=len(throws)),
+            opposed_reciprocating=r.quantity("opposed_reciprocating", "mass", required=False),
         ))
     by_number = {row["number"]: row for row in rows}
     if links:
@@ -610,8 +651,19 @@ def _listed_cylinders(path, tables, banks, throws, reciprocating, knuckle, links
                 if row[key] is not None:
                     raise r.error(key, "only a link rod has this; give the cylinder a master "
                                   "(or [links]) or remove the key")
+        if row["opposed_throw"] is not None:
+            if row["master"] is not None:
+                raise r.error("opposed_throw", "an opposed-piston cylinder has two plain rods; it "
+                                               "cannot carry a link rod too (remove master or this)")
+            fields.update(opposed_throw=row["opposed_throw"] - 1,
+                          opposed_reciprocating_kg=(row["opposed_reciprocating"]
+                                                    or row["reciprocating"]))
+        elif row["opposed_reciprocating"] is not None:
+            raise r.error("opposed_reciprocating", "belongs to an opposed-piston cylinder; give "
+                                                   "its opposed_throw too, or remove the key")
+        offset = row["pin_offset"] if row["pin_offset"] is not None else bank_offsets[row["bank"]]
         cylinders.append(Cylinder(row["number"], row["bank"], row["throw"], row["z"],
-                                  row["reciprocating"], **fields))
+                                  row["reciprocating"], pin_offset_m=offset, **fields))
     return cylinders, keys
 
 

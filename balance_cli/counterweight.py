@@ -659,6 +659,12 @@ def counterweights(engine: "Engine | EngineResult",
         engine = engine.engine
     else:
         shaking = analyse(engine, samples, max_order).shaking
+    if engine.has_several_crankshafts:
+        # the planes, shafts and balance factor are about one crankshaft's throws; a second
+        # crankshaft (turning either way) needs its own counterweights, which are not proposed
+        raise CounterweightError(f"{engine.name!r} has {len(engine.crankshafts)} crankshafts; "
+                                 "counterweights are proposed for an engine with one (its free "
+                                 "forces and moments are in balance compare)", "engine")
     max_order = shaking.max_order
     check_options(radius_m, balance_factor, shaft_orders, antivibrateur_radius_m, max_order,
                   shaft_offsets)

@@ -1219,6 +1219,9 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     if template.is_rotary:
         raise AnalysisError("is a rotary engine: its crank does not turn, so there are no throw "
                             "phases to arrange; search a fixed-frame template", "template")
+    if template.has_several_crankshafts:
+        raise AnalysisError(f"has {len(template.crankshafts)} crankshafts; the search arranges "
+                            "the throws of one crankshaft: give a template with one", "template")
     if template.counterweights or template.balancer_shafts:
         # a counterweight is sized for one crank and a shaft's force does not turn with the
         # throws: the per-throw phasor sums would score a different engine than the one found

@@ -179,9 +179,11 @@ def family(data: dict, path: str, cylinders: Sequence[int], objective: str | Non
              hint=" of cylinder counts to firing orders")
     data = as_template(data)
     template = build(data, path, template=True)
-    if template.is_rotary or len(template.bank_angles_rad) != 1 or "cylinders" in data:
-        raise AnalysisError("must be an in-line template (one bank, no [[cylinders]] list): a "
-                            "family is the same cylinder repeated at a pitch", "template")
+    if template.is_rotary or len(template.bank_angles_rad) != 1 or "cylinders" in data \
+            or template.has_several_crankshafts:
+        raise AnalysisError("must be an in-line template (one bank, one crankshaft, no "
+                            "[[cylinders]] list): a family is the same cylinder repeated at a "
+                            "pitch", "template")
     zs = sorted(t.z_m for t in template.throws)
     if pitch_m is None:
         if len(zs) < 2 or zs[-1] == zs[0]:

@@ -229,11 +229,13 @@ def linkage(engine, crank_angles, numbers=None, pin_shift=None):
         piston[cyl.number], travel[cyl.number] = _slider(
             pins[cyl.throw], axis, engine.rod_length_m, offset, cyl, crank_angles, shaft.centre)
         if cyl.is_opposed:
-            # the same bore line seen from the other end: the axis turned half a turn, the
-            # offset with it
+            # the same bore line seen from the other end: the axis turned half a turn; the
+            # offset from that end is the far crankshaft's (tiny) distance off the axis less
+            # this end's offset
             far = engine.crankshaft_of(cyl.opposed_throw).centre
+            span = (far - shaft.centre) * np.exp(-1j * axis)
             position, own = _slider(pins[cyl.opposed_throw], axis + np.pi, engine.rod_length_m,
-                                    -offset, cyl, crank_angles, far)
+                                    span.imag - offset, cyl, crank_angles, far)
             opposed[cyl.number] = (position, own)
             travel[cyl.number] = travel[cyl.number] + own
     for cyl in wanted:

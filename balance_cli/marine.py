@@ -176,7 +176,8 @@ def power_related_unbalance(result, power_w=None, orders=DEFAULT_PRU_ORDERS,
     records = result._records()
     entries = tuple(_entry(k, records[k - 1], power.kilowatts, classes) for k in orders)
     balanced = None
-    if not result.engine.is_rotary:
+    # counterweights are proposed for an engine with one crankshaft only
+    if not result.engine.is_rotary and not result.engine.has_several_crankshafts:
         built = counterweights(result, balance_factor=0.0)
         balanced = _entry(1, built.residual.records(result.engine)[0], power.kilowatts, classes)
     return PowerRelatedUnbalance(power, entries, balanced, classes), None

@@ -27,6 +27,9 @@ FRAMES = ("fixed", "rotary")
 #: banks whose unit vectors add up to less than this fraction of their number have no
 #: bisector worth calling vertical (within about 6° of a boxer's 180°)
 BISECTOR_FLOOR = 0.05
+#: how far off the bore's axis (a fraction of the crankshafts' distance) an opposed piston's
+#: crankshaft may lie
+OPPOSED_AXIS_TOLERANCE = 1e-6
 #: a name is shown in table cells and picture titles
 MAX_NAME_LENGTH = 120
 #: the fastest balancer shaft, turns per crank turn: real ones run at 1 or 2 (a few at 4);
@@ -848,7 +851,9 @@ def _check_opposed(engine, c):
                          "driven by another crankshaft, at the other end of the bore", cylinder=n)
     span = (engine.crankshafts[other].centre - engine.crankshafts[own].centre) \
         * complex(math.cos(engine.bank_angles_rad[c.bank]), -math.sin(engine.bank_angles_rad[c.bank]))
-    if abs(span.imag) > max(SAME_POSITION_M, 1e-9 * abs(span)):
+    # decimal inputs put a crankshaft on a slanted axis only to within rounding: a micrometre
+    # a metre is accepted (the linkage then uses the exact line through the first crankshaft)
+    if abs(span.imag) > max(SAME_POSITION_M, OPPOSED_AXIS_TOLERANCE * abs(span)):
         raise ModelError(f"cylinder {n}: crankshaft {other + 1} lies {abs(span.imag):g} m off the "
                          f"axis of the cylinder's bank {c.bank + 1}; an opposed piston's crankshaft "
                          "must sit on the bore's axis, at the other end", cylinder=n)

@@ -34,16 +34,17 @@ from .errors import AnalysisError, OrderError, SamplingWarning
 from .gas import PressureCurve, cycle_pressure
 from .harmonics import orders_of
 from .firing import firing_sequence
-from .kinematics import (BIG_ENDS, CRANKSHAFT_OWNERS, check_assembly, crank_angles_of, engine_angles, linkage_state,
-                         piston_travel, travel_at)
+from .kinematics import (BIG_ENDS, CRANKSHAFT_OWNERS, check_assembly, crank_angles_of,
+                         engine_angles, linkage, linkage_state, pin_angle, piston_travel,
+                         travel_at)
 from .model import Engine
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings, part_values
 from .flywheel import LOADS, Steadiness, flywheel_for, steadiness
 from .tolerances import NOISE_FLOOR
 from .units import phasor_deg, rad_s_to_rpm
 
-__all__ = ["Series", "ReducedMass", "PinForce", "TorqueResult", "TorqueSet", "torque",
-           "periodic_derivative"]
+__all__ = ["Series", "ReducedMass", "PinForce", "CrankshaftTorque", "TorqueResult", "TorqueSet",
+           "torque", "periodic_derivative"]
 
 
 def periodic_derivative(values, period=2 * math.pi):
@@ -206,6 +207,30 @@ class PinForce:
 
 
 @dataclass(frozen=True)
+class CrankshaftTorque:
+    """The torque one crankshaft of several passes on to the gears, and its main bearings'
+    load.
+
+    ``torque`` is the gas and inertia torque of the parts this crankshaft drives (its pistons,
+    rods and pins; the first crankshaft also carries ``Engine.shaft_inertia_kgm2``), positive
+    in its own sense of turning; geared 1:1, the output torque on the first crankshaft's
+    sense is their sum (the engine's ``total``). ``main_bearings`` is the crankshaft's force
+    on its main bearings together (None when the bearing loads were not asked for).
+    """
+
+    number: int
+    direction: int
+    torque: Series
+    main_bearings: "PinForce | None" = None
+
+    def to_dict(self, max_order, floor_n) -> dict:
+        return {"crankshaft": self.number, "direction": self.direction,
+                "torque": self.torque.to_dict(),
+                "main_bearings": (None if self.main_bearings is None else
+                                  self.main_bearings.to_dict(max_order, floor_n))}
+
+
+@dataclass(frozen=True)
 class TorqueResult:
     """Torques of one engine at constant speed.
 
@@ -221,7 +246,8 @@ class TorqueResult:
     pins : tuple of PinForce
         the force of the rods on each crank pin
     main_bearings : PinForce or None
-        the crankshaft's force on its main bearings together (fixed frame only)
+        the crankshaft's force on its main bearings together (fixed frame, one crankshaft
+        only; an engine with several has them in ``crankshafts``)
     max_order : int
     steadiness : Steadiness or None
         the speed with a flywheel and a load, when asked for
@@ -229,7 +255,11 @@ class TorqueResult:
         the flywheel inertia that reaches a target steadiness, when asked for
     guide : GuideForces or None
         every cylinder's guide force and couple, and the H-type and X-type guide-force
-        moments (:mod:`balance_cli.guideforce`); None for a rotary
+        moments (:mod:`balance_cli.guideforce`); None for a rotary, and for an engine with
+        several crankshafts
+    crankshafts : tuple of CrankshaftTorque
+        each crankshaft's torque and main-bearing load, for an engine with several (empty
+        for one)
     """
 
     engine: Engine
@@ -246,6 +276,7 @@ class TorqueResult:
     steadiness: Steadiness | None = None
     flywheel_kgm2: float | None = None
     guide: Any = None
+    crankshafts: tuple = ()
 
     @property
     def indicated_power_kw(self) -> float | None:
@@ -278,6 +309,8 @@ class TorqueResult:
             "steadiness": None if self.steadiness is None else {
                 **self.steadiness.to_dict(), "flywheel_for_target_kgm2": self.flywheel_kgm2},
             "guide_force": None if self.guide is None else self.guide.to_dict(),
+            "crankshafts": [c.to_dict(self.max_order, engine.noise_floor_n)
+                            for c in self.crankshafts],
         }
 
 
@@ -304,9 +337,20 @@ def _torque_unit(engine):
     return engine.per_cylinder_unit_n * engine.crank_radius_m
 
 
-def _reduced_mass_and_momentum(engine, state):
-    """μ(θ) and h(θ) = H/θ̇ from the linkage ``state`` over one revolution, kg·m²."""
+def _reduced_mass_and_momentum(engine, state, crankshaft=None):
+    """μ(θ) and h(θ) = H/θ̇ from the linkage ``state`` over one revolution, kg·m²; of the parts
+    one ``crankshaft`` (an index) drives, if given."""
     masses, rods = state.masses, state.rods
+    if crankshaft is not None:
+        shaft_of = np.array([t.crankshaft for t in engine.throws])
+        # a balancer-shaft mass (throw −1) rides on no crankshaft
+        mine = (masses.throw >= 0) & (shaft_of[masses.throw] == crankshaft)
+        masses = dataclasses.replace(masses, **{
+            name: getattr(masses, name)[mine]
+            for name in ("positions", "masses_kg", "z_m", "cylinder", "throw")})
+        rods = dataclasses.replace(rods, **{
+            name: getattr(rods, name)[shaft_of[rods.throw] == crankshaft]
+            for name in ("directions", "corrections_kgm2", "cylinder", "throw")})
     rates = periodic_derivative(masses.positions)
     weights = masses.masses_kg[:, None]
     mu = (weights * np.abs(rates) ** 2).sum(axis=0)
@@ -317,7 +361,44 @@ def _reduced_mass_and_momentum(engine, state):
         corrections = rods.corrections_kgm2[:, None]
         mu = mu + (corrections * turning**2).sum(axis=0)
         h = h + (corrections * turning).sum(axis=0)
-    return mu + engine.shaft_inertia_kgm2, h + engine.shaft_inertia_kgm2
+    # the crankshaft and flywheel inertia belongs to the first (output) crankshaft
+    shaft = engine.shaft_inertia_kgm2 if crankshaft in (None, 0) else 0.0
+    return mu + shaft, h + shaft
+
+
+def _piston_travels(engine, angles):
+    """Each piston's own travel over engine angles ``angles``, by crankshaft index and then
+    cylinder number, m: an opposed-piston cylinder has one on each of its two crankshafts."""
+    link = linkage(engine, crank_angles_of(engine, angles))
+    out: dict = {}
+    for c in engine.cylinders:
+        travel = link.travel[c.number]
+        if c.is_opposed:
+            own = link.opposed[c.number][1]
+            out.setdefault(engine.throws[c.opposed_throw].crankshaft, {})[c.number] = own
+            travel = travel - own
+        out.setdefault(engine.throws[c.throw].crankshaft, {}).setdefault(c.number, 0.0)
+        out[engine.throws[c.throw].crankshaft][c.number] = \
+            out[engine.throws[c.throw].crankshaft][c.number] + travel
+    return out
+
+
+def _crankshaft_torques(engine, state, angles, turns, net_pressure, area, series):
+    """Each crankshaft's gas and inertia torque over the cycle, in its own sense of turning:
+    the virtual work of the parts it alone drives (the gas presses on each piston; the two
+    pistons of an opposed cylinder load their two crankshafts)."""
+    omega = engine.speed_rad_s
+    travels = _piston_travels(engine, angles)
+    out = []
+    for index, shaft in enumerate(engine.crankshafts):
+        mu, _ = _reduced_mass_and_momentum(engine, state, index)
+        curve = np.tile(-0.5 * omega**2 * periodic_derivative(mu).real, turns)
+        if net_pressure:
+            for number, travel in travels.get(index, {}).items():
+                rate = periodic_derivative(np.asarray(travel)).real
+                curve = curve - net_pressure[number] * area * np.tile(rate, turns)
+        out.append((index + 1, shaft.direction, series(curve)))
+    return out
 
 
 def _firing_angles_deg(engine, firing):
@@ -445,10 +526,14 @@ def _pin_forces(engine, state, angles, turns, net_pressure, area):
             parts = parts + sum(net_pressure[m] * area * np.tile(ds[i], turns)
                                 for i, m in enumerate(numbers))
         forces.append(-(parts[0] + 1j * parts[1]))
-    # the crankshaft's own masses and its counterweights load the main bearings; a balancer
-    # shaft runs in bearings of its own
-    own = np.where(np.isin(masses.cylinder, CRANKSHAFT_OWNERS), masses.masses_kg, 0.0)[:, None]
-    crank_inertia = np.tile(-(own * accelerations).sum(axis=0), turns)
+    # each crankshaft's own masses and its counterweights load its own main bearings; a
+    # balancer shaft runs in bearings of its own (its rows, throw −1, are masked out first)
+    shaft_of = np.array([t.crankshaft for t in engine.throws])[masses.throw]
+    crank_inertia = []
+    for s_index in range(len(engine.crankshafts)):
+        own = np.where(np.isin(masses.cylinder, CRANKSHAFT_OWNERS) & (shaft_of == s_index),
+                       masses.masses_kg, 0.0)
+        crank_inertia.append(np.tile(-(own[:, None] * accelerations).sum(axis=0), turns))
     return forces, crank_inertia
 
 
@@ -544,22 +629,36 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
         total = total + gas_curve
     # imported here: guideforce builds its results with this module's Series
     from .guideforce import guide_forces
-    guide = None if not guide else guide_forces(
+    several = engine.has_several_crankshafts
+    # the guide-force couples are about one crank axis, as the project guides give them
+    guide = None if not guide or several else guide_forces(
         engine, state, net_pressure, area, turns,
         lambda values, unit: series(values, unit, tile=False))
     pins, crank_inertia = (_pin_forces(engine, state, angles, turns, net_pressure, area)
                            if bearings else ([], None))
     theta = np.arange(samples * turns) * 360.0 / samples
     pin_results = []
-    for index, (throw, force) in enumerate(zip(engine.throws, pins)):
+    for index, force in enumerate(pins):
         # the pin's direction: turning with θ on a crankshaft, fixed on a rotary's crank
-        along = np.exp(1j * (throw.phase_rad + (0.0 if engine.is_rotary else np.radians(theta))))
+        along = np.exp(1j * pin_angle(engine, index, 0.0 if engine.is_rotary else np.radians(theta)))
         local = force * np.conj(along)
+        # tangential: positive in the sense its own crankshaft turns
+        sense = engine.crankshaft_of(index).direction
         pin_results.append(PinForce(index + 1, engine.cycle_deg, theta, force,
                                     series(local.real, "N", tile=False),
-                                    series(local.imag, "N", tile=False)))
-    main = None if engine.is_rotary or not bearings else PinForce(
-        None, engine.cycle_deg, theta, sum(pins) + crank_inertia, None, None)
+                                    series(sense * local.imag, "N", tile=False)))
+    bearing_loads: list[PinForce | None] = [None] * len(engine.crankshafts)
+    if bearings and not engine.is_rotary:
+        for s_index in range(len(engine.crankshafts)):
+            on_shaft = [f for f, t in zip(pins, engine.throws) if t.crankshaft == s_index]
+            bearing_loads[s_index] = PinForce(None, engine.cycle_deg, theta,
+                                              sum(on_shaft) + crank_inertia[s_index], None, None)
+    main = None if several else bearing_loads[0]
+    shafts = () if not several else tuple(
+        CrankshaftTorque(number, direction, curve, bearing_loads[number - 1])
+        for number, direction, curve in _crankshaft_torques(
+            engine, state, angles, turns, net_pressure, area,
+            lambda values: series(values, tile=False)))
     speed, flywheel = None, None
     if inertia_kgm2 is not None or target is not None:
         if gas is None:
@@ -583,4 +682,4 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
     return TorqueResult(engine, samples, ReducedMass(np.degrees(angles), mu.real), series(inertia),
                         series(tilting), series(-total + np.tile(tilting, turns), tile=False), gas,
                         series(total, tile=False), tuple(pin_results), main, max_order, speed,
-                        flywheel, guide)
+                        flywheel, guide, shafts)

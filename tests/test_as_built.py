@@ -611,3 +611,34 @@ def test_write_refuses_a_rotary(tmp_path):
     assert result.exit_code == 1 and "rotary" in result.output, result.output
     assert len(result.output.strip().splitlines()) == 1
     assert not target.exists()
+
+
+@pytest.mark.parametrize("direction", [1, -1])
+def test_a_counterweight_turns_with_its_own_crankshaft(direction):
+    """Two crankshafts (the second at x = 1 m, turning with or against the first, the opposed
+    single of tests/test_crankshafts.py). A counterweight of unbalance m·ρ at angle α on throw 2
+    (phase β = 180° on crankshaft 2) sits at direction·(θ + β + α) about that crankshaft's
+    axis: its inertia force m·ρ·ω²·e^{i·direction·(θ + β + α)} is a forward first order of
+    m·ρ·ω²·e^{i(β+α)} when the shaft turns with the first, a backward one of
+    m·ρ·ω²·e^{−i(β+α)} against it; it loads crankshaft 2's main bearings by that much and
+    crankshaft 1's not at all."""
+    from test_crankshafts import OMEGA, opposed_single
+
+    me, alpha, beta = 0.05, math.radians(30.0), math.pi
+    bare = opposed_single(0.0, direction)
+    built = bare.replace(counterweights=(CounterweightMass(1, me, alpha, radius_m=0.06),))
+    expected = me * OMEGA**2 * np.exp(1j * (beta + alpha) * direction)
+    before, after = balance.analyse(bare).order(1), balance.analyse(built).order(1)
+    added = (after.force_forward - before.force_forward if direction == 1
+             else after.force_backward - before.force_backward)
+    other = (after.force_backward - before.force_backward if direction == 1
+             else after.force_forward - before.force_forward)
+    assert_allclose(added, expected, rtol=1e-9)
+    assert abs(other) < 1e-9 * abs(expected)
+    plain, weighted = balance.torque(bare), balance.torque(built)
+    first = [np.asarray(t.crankshafts[0].main_bearings.force_n) for t in (plain, weighted)]
+    second = [t.crankshafts[1].main_bearings for t in (plain, weighted)]
+    assert_allclose(first[1], first[0], atol=1e-9 * abs(expected))
+    part = 0 if direction == 1 else 1    # PinForce.order gives (forward, backward)
+    change = second[1].order(1)[part] - second[0].order(1)[part]
+    assert_allclose(change, expected, rtol=1e-9)

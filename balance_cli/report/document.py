@@ -68,7 +68,12 @@ def blocks(comparison, balances, star_order, torques, scale=None, family=None):
                             b.engine.counterweights or b.engine.balancer_shafts for b in balances)
                         else "") + "."))
     headers, rows = balance_summary(balances)
-    out.append(("table", headers, rows))
+    if rows:
+        out.append(("table", headers, rows))
+    several = [r.engine.name for r in comparison.results if r.engine.has_several_crankshafts]
+    if several:
+        out.append(("p", "None proposed for the engines with several crankshafts (each crankshaft "
+                         "needs its own): " + ", ".join(several) + "."))
     out.append(("h", 2, "Torques"))
     out.append(("p", "Torques at each engine's speed over one cycle (720° for a four-stroke), from "
                      "the exact kinetic energy: the inertia torque, the gas torque of the "

@@ -168,7 +168,8 @@ def compare_parts(comparison, scale):
              "Largest: the resultant's largest magnitude over a revolution, all orders; main "
              "order: the order with the largest ellipse, its max and direction (rotating: a "
              "circle, turning with the crank (forward) or against it (backward)). A turning crank's ideal counterweight has taken the forward first order of "
-             "force and moment away (a rotary's crank does not turn)."]
+             "force and moment away (a rotary's crank does not turn, and none is taken where a "
+             "crankshaft turns against the first)."]
     if any(record[share] is None for record in records):
         notes.append("n/a: the reference engine has no resultant to compare with.")
     if any((record[share] or 0.0) > PERCENT_LIMIT for record in records):
@@ -287,6 +288,21 @@ def _parts_lines(engine):
     return lines
 
 
+def _crankshaft_lines(engine):
+    """The crankshafts of an engine with several: position, sense of turning and gear phase."""
+    if not engine.has_several_crankshafts:
+        return []
+    lines = []
+    for i, shaft in enumerate(engine.crankshafts, 1):
+        turning = "with the first" if shaft.direction == 1 else "against the first"
+        lines.append(f"  crankshaft {i}:  at ({_mm(shaft.x_m)}, {_mm(shaft.y_m)}), turning "
+                     f"{turning}, phase {math.degrees(shaft.phase_rad):g}°"
+                     + (" (the reference)" if i == 1 else ""))
+    if engine.has_opposed_pistons:
+        lines.append("  opposed:       TDC is the inner dead centre (the bore at its smallest)")
+    return lines
+
+
 def _as_built_show_lines(engine):
     """``balance show``'s lines for the counterweights and balancer shafts as built."""
     lines = []
@@ -320,26 +336,35 @@ def show_table(engine, firing):
         f"{kg_to_g(engine.crank_kg):g} g per throw"
         + "".join(f", knuckle {kg_to_g(kg):g} g per link rod" for kg in knuckles),
         *_parts_lines(engine),
+        *_crankshaft_lines(engine),
         *_as_built_show_lines(engine),
         f"  firing:        {'-'.join(map(str, firing.order))} "
         f"({'given' if firing.given else 'most uniform the crank allows'})",
         f"  intervals (°): {', '.join(f'{i:.2f}' for i in firing.intervals_deg)}",
         "",
     ]
+    offsets = any(c.pin_offset_m is not None and c.pin_offset_m != engine.pin_offset_m
+                  for c in engine.cylinders)
+    several = engine.has_several_crankshafts
     rows = []
     for c in engine.cylinders:
         rod = engine.rod_type(c)
         if c.is_link:
             rod = (f"link on {c.master} ({_mm(c.link_length_m)}, knuckle {_mm(c.knuckle_radius_m)} "
                    f"at {math.degrees(c.knuckle_angle_rad):g}°)")
+        elif c.is_opposed:
+            rod = f"opposed: throw {c.opposed_throw + 1}, {kg_to_g(c.opposed_reciprocating_kg):g} g"
         bank = math.degrees(engine.bank_angles_rad[c.bank])
-        rows.append([
-            str(c.number), f"{c.bank + 1} ({bank:g}°)", str(c.throw + 1),
-            f"{math.degrees(engine.throws[c.throw].phase_rad):g}", f"{m_to_mm(c.z_m):g}",
-            f"{kg_to_g(c.reciprocating_kg):g}", rod, f"{round_degrees(firing.tdc_deg[c.number], 2):.2f}",
-        ])
-    table = render(["Cyl", "Bank (angle)", "Throw", "Phase (°)", "z (mm)", "Recip. (g)", "Rod",
-                    "TDC (°)"], rows, "table")
+        throw = str(c.throw + 1) + (f" (shaft {engine.throws[c.throw].crankshaft + 1})"
+                                    if several else "")
+        row = [str(c.number), f"{c.bank + 1} ({bank:g}°)", throw,
+               f"{math.degrees(engine.throws[c.throw].phase_rad):g}", f"{m_to_mm(c.z_m):g}",
+               f"{kg_to_g(c.reciprocating_kg):g}", rod]
+        if offsets:
+            row.append(f"{m_to_mm(engine.pin_offset_of(c)):g}")
+        rows.append(row + [f"{round_degrees(firing.tdc_deg[c.number], 2):.2f}"])
+    table = render(["Cyl", "Bank (angle)", "Throw", "Phase (°)", "z (mm)", "Recip. (g)", "Rod"]
+                   + (["Pin offset (mm)"] if offsets else []) + ["TDC (°)"], rows, "table")
     return "\n".join(header) + table + "\n"
 
 
@@ -696,6 +721,16 @@ def torque_tables(results, scale, fmt):
                        _torque_rows(r, scale), fmt), ""]
         if r.indicated_power_kw is not None:
             out += [f"Indicated power (mean gas torque × ω): {figure(r.indicated_power_kw)} kW.", ""]
+        if r.crankshafts:
+            out += ["Each crankshaft's torque (gas and inertia of the parts it drives, positive in "
+                    "its own sense of turning; geared 1:1, their sum is the total on the first):",
+                    "", render(["Crankshaft", "Turning", f"Mean ({ml})", f"Max ({ml})", f"Min ({ml})",
+                                f"Range ΔC ({ml})"],
+                               [[str(c.number), "with the first" if c.direction == 1 else
+                                 "against the first"]
+                                + [figure(scale.moment(v)) for v in (c.torque.mean, c.torque.max,
+                                                                     c.torque.min, c.torque.range)]
+                                for c in r.crankshafts], fmt), ""]
         largest = max(math.hypot(c, s) for _, c, s in r.total.orders) if r.total.orders else 0.0
         out += [f"Orders of the total torque ({'gas and inertia' if r.gas else 'inertia only'}; "
                 "amplitude·cos(kθ − phase); orders below a thousandth of the largest left out):", "",
@@ -705,9 +740,13 @@ def torque_tables(results, scale, fmt):
             magnitude = np.abs(pin.force_n)
             rows.append([str(pin.throw)] + [figure(scale.force(v, 1.0)) for v in (
                 pin.radial.mean, pin.tangential.mean, float(magnitude.max()), float(magnitude.min()))])
-        if r.main_bearings is not None:
-            magnitude = np.abs(r.main_bearings.force_n)
-            rows.append(["main bearings", "-", "-", figure(scale.force(float(magnitude.max()), 1.0)),
+        bearings = [("main bearings", r.main_bearings)] + [
+            (f"main bearings, crankshaft {c.number}", c.main_bearings) for c in r.crankshafts]
+        for label, load in bearings:
+            if load is None:
+                continue
+            magnitude = np.abs(load.force_n)
+            rows.append([label, "-", "-", figure(scale.force(float(magnitude.max()), 1.0)),
                          figure(scale.force(float(magnitude.min()), 1.0))])
         out += ["Forces of the rods on the crank pins, and of the crankshaft on its main bearings "
                 "together:", "",

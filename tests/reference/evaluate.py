@@ -245,6 +245,12 @@ def _quantity(record, frames):
     if kind == "interval":
         intervals = _result(_variant(record), record).firing.intervals_deg
         return {"max": max(intervals), "min": min(intervals)}[words[1]]
+    if kind == "lead":       # an opposed-piston bore's exhaust lead, degrees
+        return _lead(_variant(record), int(words[1]))
+    if kind == "split":      # the angle between two throws' pins, degrees in [0, 360)
+        engine = _variant(record)
+        a, b = (engine.throws[int(w) - 1].phase_rad for w in words[1:3])
+        return math.degrees(b - a) % 360.0
     if kind == "torque":
         return _torque_quantity(record, words[1:])
     if kind == "fraeys":
@@ -264,6 +270,20 @@ def _quantity(record, frames):
     if kind == "pru":
         return _pru(record, words[1], int(words[2]))
     raise ValueError(f"{record['id']}: unknown quantity {record['quantity']!r}")
+
+
+def _lead(engine, number):
+    """How many degrees the dead centre of cylinder ``number``'s first piston comes before its
+    opposed piston's, each found as the maximum of its own exact travel on a 0.001° grid."""
+    import numpy as np
+
+    from balance_cli.kinematics import linkage
+
+    theta = np.radians(np.arange(0.0, 360.0, 0.001))
+    link = linkage(engine, theta, [number])
+    own = link.opposed[number][1]
+    first = link.travel[number] - own
+    return (math.degrees(theta[np.argmax(own)] - theta[np.argmax(first)])) % 360.0
 
 
 def _pru(record, part, k):
