@@ -642,3 +642,25 @@ def test_a_counterweight_turns_with_its_own_crankshaft(direction):
     part = 0 if direction == 1 else 1    # PinForce.order gives (forward, backward)
     change = second[1].order(1)[part] - second[0].order(1)[part]
     assert_allclose(change, expected, rtol=1e-9)
+
+
+def test_the_shipped_lanchester_engine_cancels_its_secondary_force_and_frame_torque():
+    """configs/inline-4-car-lanchester.toml: the car in-line 4 with m·e = 3.6397 kg·mm on a +2
+    shaft at h₊ = 70 mm above the crank axis and a −2 shaft at h₋ = −69.8 mm, both masses at
+    180° in their own sense. Each shaft's force is P = 4·m·e·ω² along the vertical at its
+    height: the +2 one −P·e^{i2θ}, the −2 one −P·e^{−i2θ}; their rolling moments Im(x̄·F) are
+    −P·h₊·sin 2θ and +P·h₋·sin 2θ, together −P·(h₊ − h₋)·sin 2θ: the frame torque's change.
+    Their forces add to −2P·cos 2θ against the engine's 4·m·r·ω²·B₂·cos 2θ (m·e rounded to
+    5 figures: the force is left at 1e-4 of itself, and so is the frame torque's order 2)."""
+    me, h_plus, h_minus = 3.6397e-3, 0.070, -0.0698
+    car = balance.load(CONFIGS / "inline-4-car.toml")
+    balanced = balance.load(CONFIGS / "inline-4-car-lanchester.toml")
+    omega = car.speed_rad_s
+    p = 4 * me * omega**2
+    change = np.subtract(balance.torque(balanced).frame.order(2), balance.torque(car).frame.order(2))
+    assert_allclose(change, [0.0, -p * (h_plus - h_minus)], atol=1e-9 * p * 0.14)
+    second = 4 * 0.55 * 0.043 * omega**2 * exact_b(43 / 143, 2)
+    left = balance.analyse(balanced).order(2)
+    assert abs(left.force_forward) + abs(left.force_backward) < 1e-4 * second
+    frame_left = math.hypot(*balance.torque(balanced).frame.order(2))
+    assert frame_left < 1e-3 * p * (h_plus - h_minus)
