@@ -20,9 +20,9 @@ import numpy as np
 from .errors import ModelError
 from .units import round_degrees
 
-__all__ = ["BIG_ENDS", "CRANK", "COUNTERWEIGHT", "BALANCER", "CRANKSHAFT_OWNERS", "UNKNOWN_RADIUS_M",
-           "counterweight_angle", "balancer_positions", "MassSet", "RodSet", "Linkage", "LinkageState", "linkage", "linkage_state", "pin_angle",
-           "mass_positions", "rod_directions",
+__all__ = ["MassSet", "RodSet", "Linkage", "LinkageState", "linkage", "linkage_state", "pin_angle",
+           "BIG_ENDS", "CRANK", "COUNTERWEIGHT", "BALANCER", "CRANKSHAFT_OWNERS", "UNKNOWN_RADIUS_M",
+           "counterweight_angle", "balancer_positions", "mass_positions", "rod_directions",
            "crank_angles_of", "travel_at", "piston_travel", "check_assembly", "engine_angles"]
 
 #: owner codes of MassSet.cylinder for masses of no cylinder: big ends at a pin, the
@@ -33,7 +33,8 @@ CRANKSHAFT_OWNERS = (CRANK, COUNTERWEIGHT)
 
 #: where an unbalance given without its radius (``mass_radius`` alone) is placed, m: its forces
 #: and moments depend on m·ρ only, and at a vanishing radius its moment of inertia m·ρ², which
-#: cannot be known without ρ, stays out of the reduced mass (it is 1e-6 of m·ρ in kg·m²)
+#: cannot be known without ρ, stays out of the reduced mass (what is left, 1e-6·m·ρ·ratio²
+#: kg·m², is far below any engine's)
 UNKNOWN_RADIUS_M = 1e-6
 
 #: crank angles at which a linkage is checked for assembly (0.1° apart)

@@ -527,7 +527,8 @@ def _pin_forces(engine, state, angles, turns, net_pressure, area):
                                 for i, m in enumerate(numbers))
         forces.append(-(parts[0] + 1j * parts[1]))
     # each crankshaft's own masses and its counterweights load its own main bearings; a
-    # balancer shaft runs in bearings of its own (its rows, throw −1, are masked out first)
+    # balancer shaft runs in bearings of its own: its rows (throw −1, which picks the last
+    # throw's crankshaft here) fall out by their owner code
     shaft_of = np.array([t.crankshaft for t in engine.throws])[masses.throw]
     crank_inertia = []
     for s_index in range(len(engine.crankshafts)):
