@@ -664,3 +664,21 @@ def test_the_shipped_lanchester_engine_cancels_its_secondary_force_and_frame_tor
     assert abs(left.force_forward) + abs(left.force_backward) < 1e-4 * second
     frame_left = math.hypot(*balance.torque(balanced).frame.order(2))
     assert frame_left < 1e-3 * p * (h_plus - h_minus)
+
+
+def test_star_shares_name_the_counterweights_and_shafts():
+    """The star's shares: the built counterweights and shaft masses are their own arrows
+    ("counterweights", "shafts"), and all shares still add up to the engine's phasors (the
+    second order: the pair's −2·P·cos 2θ against the engine's 4·m·r·ω²·B₂·cos 2θ)."""
+    result = balance.analyse(balance.load(CONFIGS / "inline-4-car-lanchester.toml"))
+    shares = result.shaking.cylinder_phasors(2)
+    labels = [label for label, _, _ in shares]
+    assert labels == ["1", "2", "3", "4", "pins", "shafts"]
+    order = result.order(2)
+    assert_allclose(sum(f for _, f, _ in shares), order.force_forward, atol=1e-9 * 11495)
+    assert_allclose(sum(b for _, _, b in shares), order.force_backward, atol=1e-9 * 11495)
+    shafts = dict((label, (f, b)) for label, f, b in shares)["shafts"]
+    p = 4 * 3.6397e-3 * result.engine.speed_rad_s**2
+    assert_allclose(shafts, [-p, -p], rtol=1e-12)
+    weighted = balance.analyse(balance.loads(V8 + V8_WEIGHTS))
+    assert "counterweights" in [label for label, _, _ in weighted.shaking.cylinder_phasors(1)]
