@@ -60,6 +60,9 @@ __all__ += ["sweep", "SweepResult", "SweepError", "family", "FamilyResult", "Gui
 from .config import load_data  # noqa: E402
 from .marine import PowerRelatedUnbalance, power_related_unbalance  # noqa: E402
 from .errors import SweepError  # noqa: E402
+# counterweights and balancer shafts as built (a statement of its own, for the same reason)
+__all__ += ["CounterweightMass", "BalancerMass", "BalancerShaftSpec"]
+from .model import BalancerMass, BalancerShaftSpec, CounterweightMass  # noqa: E402
 
 
 def __getattr__(name):

@@ -17,7 +17,7 @@ import numpy as np
 
 from . import __version__
 from .analysis import analyse, compare as comparison_of
-from .config import find_configs, load
+from .config import as_built_toml, find_configs, load, load_data
 from .counterweight import Balances, check_options, counterweights
 from .errors import (BalanceError, ConfigError, FiringError, ModelError, OutputError,
                      SamplingWarning)
@@ -421,6 +421,10 @@ def _length_option(text, flag):
               help="Eccentricity of the antivibrateur's mass (with --antivibrateur).")
 @click.option("--test-masses", is_flag=True,
               help="Also give the balancing-machine mass to hang on each crank pin (not for a rotary).")
+@click.option("--write", "write_path", default=None, metavar="FILE.toml",
+              help="Write the engine's configuration (one input file) with the proposed "
+                   "counterweights added as [[counterweights]] and, with --shafts, the proposed "
+                   "shafts as [[shafts]]: loading it gives the residual reported here. Atomic.")
 @_SAMPLES
 @_MAX_ORDER
 @_ABSOLUTE
@@ -429,16 +433,32 @@ def _length_option(text, flag):
 @_FORMAT
 @_OUTPUT
 def counterweight(paths, planes, radius, balance_factor, shafts, shaft_offsets, antivibrateur,
-                  antivibrateur_radius, test_masses, samples, max_order, absolute, units, speed, fmt,
-                  output):
+                  antivibrateur_radius, test_masses, write_path, samples, max_order, absolute, units,
+                  speed, fmt, output):
     """Counterweights that cancel the forward first order, and what is left.
 
     Two planes cancel the forward first-order force and moment; one plane the force only.
     Optionally: balancer shafts for residual orders (placed off the crank axis with
     --shaft-offset), the antivibrateur of radial engines, and the balancing-machine test masses.
+
+    An engine whose configuration has counterweights ([[counterweights]]) or balancer shafts
+    ([[shafts]]) as built is balanced as built: the report first gives what they leave, order
+    by order, and every counterweight or shaft proposed is an ADDITION to them (the built ones
+    stay). --write puts the additions into a copy of the configuration, after the built ones.
     """
     files = _inputs(paths)
-    _guard([output], files)
+    if write_path is not None:
+        if len(files) != 1:
+            raise click.BadParameter(f"writes one configuration, but {len(files)} files were "
+                                     "given; give one file", param_hint="--write")
+        if antivibrateur:
+            raise click.BadParameter("cannot describe the antivibrateur in a configuration, and "
+                                     "the counterweights proposed with it include its mass; leave "
+                                     "out --antivibrateur", param_hint="--write")
+        if write_path == "-" or write_path == output:
+            raise click.BadParameter("needs a file of its own (not standard output, not "
+                                     "--output)", param_hint="--write")
+    _guard([output] + ([write_path] if write_path else []), files)
     _settings(samples, max_order)
     plane_specs = _planes(planes)
     orders = _orders_option(shafts)
@@ -462,6 +482,16 @@ def counterweight(paths, planes, radius, balance_factor, shafts, shaft_offsets, 
         text = balance_csv(balances, scale)
     else:
         text = balance_tables(balances, scale, fmt)
+    configuration = None
+    if write_path is not None:
+        # built before anything is written: a failure leaves no file and no report half done
+        with _reported(balances[0].engine):
+            configuration = as_built_toml(
+                load_data(files[0]), balances[0].configuration_tables(shafts=bool(orders)),
+                f"{balances[0].engine.name}, with the counterweights{' and shafts' if orders else ''}"
+                f" proposed by\nbalance counterweight added as built (from {files[0]}).")
+    if configuration is not None:
+        _write(write_path, configuration)
     _write(output, text)
 
 

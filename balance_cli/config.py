@@ -20,16 +20,17 @@ from pathlib import Path
 from . import checks
 from .errors import ConfigError, ModelError, UnitError
 from .kinematics import check_assembly
-from .model import FRAMES, Crankshaft, Cylinder, Engine, GasCycle, Parts, Throw
+from .model import (FRAMES, MAX_SHAFT_RATIO, BalancerMass, BalancerShaftSpec, CounterweightMass,
+                    Crankshaft, Cylinder, Engine, GasCycle, Parts, Throw)
 from .units import parse_quantity
 
 __all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template", "load_data",
-           "arrangement_toml"]
+           "arrangement_toml", "as_built_toml"]
 
 _TOP_KEYS = {
     "name", "source", "cycle", "speed", "crank_radius", "rod_length", "pin_offset", "frame",
     "firing_order", "vertical", "power", "masses", "parts", "gas", "banks", "throws", "links", "cylinders",
-    "crankshafts",
+    "crankshafts", "counterweights", "shafts",
 }
 _MASS_KEYS = {"reciprocating", "rotating", "knuckle", "crank"}
 _PART_KEYS = {"piston", "rod_mass", "rod_cg", "rod_inertia", "link_mass", "link_cg", "link_inertia",
@@ -40,6 +41,9 @@ _BANK_KEYS = {"angle", "pin_offset"}
 _THROW_KEYS = {"phase", "z", "crankshaft"}
 _CRANKSHAFT_KEYS = {"x", "y", "direction", "phase"}
 _LINK_KEYS = {"master_bank", "length", "knuckle_radius"}
+_COUNTERWEIGHT_KEYS = {"throw", "mass", "radius", "mass_radius", "angle", "z"}
+_SHAFT_KEYS = {"ratio", "lateral", "vertical", "masses"}
+_SHAFT_MASS_KEYS = {"mass", "eccentricity", "mass_radius", "angle", "z"}
 _CYLINDER_KEYS = {
     "number", "bank", "throw", "z", "reciprocating", "master", "link_length", "knuckle_radius",
     "knuckle_angle", "pin_offset", "opposed_throw", "opposed_reciprocating",
@@ -53,6 +57,7 @@ _KEYS = {
     "knuckle_angle_rad": "knuckle_angle", "bank_angles_rad": "banks", "z_m": "z",
     "vertical_rad": "vertical", "power_w": "power", "crankshafts": "crankshafts",
     "opposed_throw": "opposed_throw", "opposed_reciprocating_kg": "opposed_reciprocating",
+    "balancer_shafts": "shafts",
 }
 _FIELD = re.compile(r"\b(" + "|".join(map(re.escape, _KEYS)) + r")\b")
 #: angles are plain numbers of degrees within one turn either way
@@ -151,7 +156,8 @@ class _Reader:
         if raw is None:
             return []
         if not isinstance(raw, list) or not raw or not all(isinstance(t, dict) for t in raw):
-            raise self.error(key, f"expected one or more [[{key}]] tables")
+            table = re.sub(r"\[\d+\]", "", self.prefix + key)   # shafts[2].masses: [[shafts.masses]]
+            raise self.error(key, f"expected one or more [[{table}]] tables")
         return raw
 
 
@@ -343,6 +349,9 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
             raise top.error("firing_order", "expected a list of cylinder numbers such as [1, 3, 4, 2]")
         firing_order = tuple(raw)
 
+    weights = _read_counterweights(top, path, throws, frame)
+    shafts = _read_shafts(top, path, frame)
+
     try:
         engine = Engine(
             name=name, cycle=cycle, speed_rad_s=speed, crank_radius_m=crank_radius,
@@ -353,6 +362,7 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
             shaft_inertia_kgm2=(0.0 if parts is None else
                                 parts.crankshaft_inertia_kgm2 + parts.flywheel_inertia_kgm2),
             crankshafts=tuple(crankshafts),
+            counterweights=weights, balancer_shafts=shafts,
         )
         check_assembly(engine)
     except ModelError as exc:
@@ -382,6 +392,83 @@ def _read_crankshafts(path, data, top):
                                    "1, phase 0); place, turn and phase the others against it")
         shafts.append(shaft)
     return shafts
+
+
+def _not_on_rotary(top, key, frame, what):
+    if top.has(key) and frame == "rotary":
+        raise top.error(key, f"cannot be given for a rotary engine: {what}, and a rotary's crank "
+                             'stands still; remove the tables, or use frame = "fixed"')
+
+
+def _unbalance(reader, radius_key):
+    """m·ρ (kg·m) and ρ (m, or None) from ``mass`` with ``radius_key``, or ``mass_radius``."""
+    if reader.has("mass_radius"):
+        for key in ("mass", radius_key):
+            if reader.has(key):
+                raise reader.error(key, f"give mass with {radius_key}, or mass_radius, not both; "
+                                        "remove one")
+        return reader.quantity("mass_radius", "unbalance"), None
+    if not reader.has("mass"):
+        raise reader.error("mass", f'missing; give mass with {radius_key} ("1.2 kg", "60 mm"), '
+                                   'or mass_radius ("0.072 kg*m")')
+    mass = reader.quantity("mass", "mass")
+    if not reader.has(radius_key):
+        raise reader.error(radius_key, f"missing; a mass needs its {radius_key} (or give "
+                                       "mass_radius instead of both)")
+    radius = reader.quantity(radius_key, "length")
+    return mass * radius, radius
+
+
+def _built(reader, kind, **values):
+    """A model object built from values read at ``reader``, its errors put in the file's keys."""
+    try:
+        return kind(**values)
+    except ModelError as exc:
+        key = {"mass_radius_kgm": "mass_radius", "angle_rad": "angle", "z_m": "z",
+               "radius_m": "radius", "eccentricity_m": "eccentricity", "ratio": "ratio",
+               "lateral_m": "lateral", "vertical_m": "vertical"}.get(exc.parameter, "")
+        raise reader.error(key, exc.problem) from None
+
+
+def _read_counterweights(top, path, throws, frame):
+    """The [[counterweights]] as built: each on a throw, measured from its pin."""
+    _not_on_rotary(top, "counterweights", frame, "a counterweight turns with the crank")
+    weights = []
+    for i, table in enumerate(top.tables("counterweights", required=False), 1):
+        r = _Reader(path, table, f"counterweights[{i}].", _COUNTERWEIGHT_KEYS)
+        throw = r.integer("throw", low=1, high=len(throws)) - 1
+        mass_radius, radius = _unbalance(r, "radius")
+        weights.append(_built(r, CounterweightMass, throw=throw, mass_radius_kgm=mass_radius,
+                              angle_rad=math.radians(r.degrees("angle")),
+                              z_m=r.quantity("z", "length", required=False, sign="any"),
+                              radius_m=radius))
+    return tuple(weights)
+
+
+def _read_shafts(top, path, frame):
+    """The [[shafts]] as built, each with its [[shafts.masses]]."""
+    _not_on_rotary(top, "shafts", frame, "a balancer shaft is geared to a turning crank")
+    shafts = []
+    for i, table in enumerate(top.tables("shafts", required=False), 1):
+        r = _Reader(path, table, f"shafts[{i}].", _SHAFT_KEYS)
+        ratio = r.integer("ratio", low=-MAX_SHAFT_RATIO, high=MAX_SHAFT_RATIO)
+        if ratio == 0:
+            raise r.error("ratio", "must not be 0: give the shaft's turns per crank turn, such as "
+                                   "2 (with the crank at twice its speed) or -2 (against it)")
+        masses = []
+        for j, entry in enumerate(r.tables("masses"), 1):
+            m = _Reader(path, entry, f"shafts[{i}].masses[{j}].", _SHAFT_MASS_KEYS)
+            mass_radius, eccentricity = _unbalance(m, "eccentricity")
+            masses.append(_built(m, BalancerMass, mass_radius_kgm=mass_radius,
+                                 angle_rad=math.radians(m.degrees("angle")),
+                                 z_m=m.quantity("z", "length", required=False, sign="any"),
+                                 eccentricity_m=eccentricity))
+        shafts.append(_built(r, BalancerShaftSpec, ratio=ratio, masses=tuple(masses),
+                             lateral_m=r.quantity("lateral", "length", required=False,
+                                                  default=0.0, sign="any"),
+                             vertical_m=r.quantity("vertical", "length", required=False,
+                                                   default=0.0, sign="any")))
+    return tuple(shafts)
 
 
 def _read_parts(reader, rod_length):
@@ -638,20 +725,49 @@ def arrangement_toml(template: dict, phases_deg: "Iterable[float]",
     data.pop("firing_order", None)
     if firing_order is not None:
         data["firing_order"] = list(firing_order)
+    return _dump(data, header)
+
+
+def as_built_toml(data: dict, tables: dict, header: str = "") -> str:
+    """A complete configuration: the parsed ``data`` of one (see :func:`load_data`) with the
+    rows of ``tables`` (``{"counterweights": [...], "shafts": [...]}``, in the file's keys, as
+    :meth:`balance_cli.counterweight.Balance.configuration_tables` gives them) added after its
+    own ``[[counterweights]]`` and ``[[shafts]]``; ``header`` becomes comment lines at the top.
+    The file's comments are not kept (TOML readers drop them)."""
+    data = dict(data)
+    for key, rows in tables.items():
+        if rows:
+            data[key] = list(data.get(key, [])) + list(rows)
+    return _dump(data, header)
+
+
+def _is_tables(value):
+    return isinstance(value, list) and value and all(isinstance(v, dict) for v in value)
+
+
+def _dump(data, header=""):
+    """TOML text of parsed configuration ``data``: plain keys first, then its tables and arrays
+    of tables (``[[shafts]]`` with their ``[[shafts.masses]]``)."""
     lines = [f"# {line}".rstrip() for line in header.splitlines()]
-    tables = []
-    for key, value in data.items():
+    lines += _table_lines(data, "")
+    return "\n".join(lines) + "\n"
+
+
+def _table_lines(table, prefix):
+    lines, tables = [], []
+    for key, value in table.items():
         if isinstance(value, dict):
             tables.append((key, [value], False))
-        elif isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+        elif _is_tables(value):
             tables.append((key, value, True))
         else:
             lines.append(f"{key} = {_toml_value(value)}")
     for key, rows, array in tables:
+        name = prefix + key
         for row in rows:
-            lines += ["", f"[[{key}]]" if array else f"[{key}]"]
-            lines += [f"{k} = {_toml_value(v)}" for k, v in row.items()]
-    return "\n".join(lines) + "\n"
+            lines += ["", f"[[{name}]]" if array else f"[{name}]"]
+            lines += _table_lines(row, name + ".")
+    return lines
 
 
 def _toml_value(value):

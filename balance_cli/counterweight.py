@@ -19,14 +19,15 @@ from dataclasses import dataclass
 from .analysis import DOCUMENT_VERSION, EngineResult, analyse
 from . import checks
 from .errors import CounterweightError, UnitError
-from .model import Engine
+from .kinematics import BIG_ENDS, COUNTERWEIGHT
+from .model import Engine, offset_position
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, Shaking
 from .tolerances import SAME_POSITION_M
 from .units import check_finite_range, phasor_deg, rad_s_to_rpm
 
 __all__ = ["Plane", "Counterweight", "Shaft", "ShaftMass", "BalancerShaft", "RollingMoment",
            "Antivibrateur", "Balance", "Balances", "counterweights", "check_options",
-           "plane_at_throw", "plane_at", "offset_position", "rolling_moment_phasor"]
+           "plane_at_throw", "plane_at", "offset_position", "rolling_moment_phasor", "built_shafts"]
 
 #: the balance factor is a fraction of the reciprocating masses
 _BALANCE_FACTOR_RANGE = (0.0, 1.0)
@@ -215,6 +216,13 @@ class Balance:
         (a Lanchester pair's couple); zero when they sit on the crank axis
     shaft_orders : tuple of int
         the orders shafts were asked for (an order already zero gets none)
+    built_shafts : tuple of BalancerShaft
+        the engine's own balancer shafts as built (``Engine.balancer_shafts``), with the force
+        and rolling moment each makes
+
+    With counterweights or balancer shafts as built in the engine, ``original`` is what they
+    leave, and everything proposed (``counterweights``, ``shafts``) is **in addition** to them:
+    built and proposed together leave ``residual`` and ``after_shafts``.
     """
 
     engine: Engine
@@ -230,6 +238,7 @@ class Balance:
     balancer_shafts: tuple = ()
     rolling_moments: tuple = ()
     shaft_orders: tuple = ()
+    built_shafts: tuple = ()
 
     @property
     def max_order(self) -> int:
@@ -263,7 +272,93 @@ class Balance:
             entry["shaft_rolling_moments"] = [m.to_dict() for m in self.rolling_moments]
         if self.test_masses_kg is not None:
             entry["test_masses_kg"] = list(self.test_masses_kg)
+        if engine.counterweights or engine.balancer_shafts:
+            entry["as_built"] = {
+                "counterweights": [_built_weight_record(engine, w) for w in engine.counterweights],
+                "balancer_shafts": [s.to_dict() for s in self.built_shafts],
+                **stage(self.original)}
         return entry
+
+    def configuration_tables(self, shafts: bool = False) -> dict:
+        """The proposal as configuration tables, in the file's keys and units: ``counterweights``
+        (each on a throw, its angle from that throw's pin) and, with ``shafts``, ``shafts``
+        (each with its ``masses``), ready to be added to the engine's own
+        ``[[counterweights]]`` and ``[[shafts]]``. Lengths in m, unbalances in kg·m, angles in
+        degrees, at full precision: the file read back leaves exactly ``residual`` (and
+        ``after_shafts``).
+
+        Raises
+        ------
+        CounterweightError
+            for an antivibrateur, which no configuration table describes, and for a rotary
+            engine, whose counterweights ride on its crankcase
+        """
+        if self.antivibrateur is not None:
+            raise CounterweightError("has no configuration table, and the counterweights "
+                                     "proposed include its mass; leave it out to write a "
+                                     "configuration", "antivibrateur_radius_m")
+        engine = self.engine
+        if engine.is_rotary:
+            raise CounterweightError(
+                "of a rotary engine cannot be written as configuration tables: its counterweights "
+                "ride on the turning crankcase, and [[counterweights]] and [[shafts]] describe "
+                "masses geared to a turning crank", "counterweights")
+        first = math.degrees(engine.throws[0].phase_rad)
+        weights = []
+        for weight in self.counterweights:
+            if weight.mass_kg == 0.0:
+                continue
+            index = 0 if weight.plane.throw is None else weight.plane.throw - 1
+            # Counterweight.angle_deg is measured from throw 1; a built one from its own throw
+            angle = weight.angle_deg + first - math.degrees(engine.throws[index].phase_rad)
+            weights.append({"throw": index + 1, "mass": f"{float(weight.mass_kg)!r} kg",
+                            "radius": f"{float(weight.radius_m)!r} m",
+                            "angle": float(math.remainder(angle, 360.0)) + 0.0,
+                            "z": f"{float(weight.plane.z_m)!r} m"})
+        tables: dict = {"counterweights": weights}
+        if shafts:
+            tables["shafts"] = [
+                {"ratio": shaft.speed_ratio, "lateral": f"{float(shaft.lateral_m)!r} m",
+                 "vertical": f"{float(shaft.vertical_m)!r} m",
+                 # ShaftMass.phase_deg is measured with the crank; a built mass's angle in its
+                 # shaft's own sense of turning
+                 "masses": [{"mass_radius": f"{float(m.mass_eccentricity_kgm)!r} kg*m",
+                             "angle": math.remainder(math.copysign(1, shaft.speed_ratio)
+                                                     * m.phase_deg, 360.0) + 0.0,
+                             "z": f"{float(m.z_m)!r} m"} for m in shaft.masses]}
+                for shaft in self.balancer_shafts]
+        return tables
+
+
+def _built_weight_record(engine, weight) -> dict:
+    """A counterweight as built, as ``counterweight --format json`` lists it under ``as_built``."""
+    return {"throw": weight.throw + 1, "mass_radius_kgm": weight.mass_radius_kgm,
+            "mass_kg": weight.mass_kg, "radius_m": weight.radius_m,
+            "angle_deg": math.degrees(weight.angle_rad), "z_m": engine.counterweight_z_m(weight)}
+
+
+def built_shafts(engine) -> tuple:
+    """The engine's balancer shafts as built, each as a :class:`BalancerShaft` with the force
+    its masses make and its rolling moment about the crank axis (the same quantities a
+    proposed shaft reports)."""
+    out = []
+    spin = engine.speed_rad_s**2
+    for shaft in engine.balancer_shafts:
+        sign = 1 if shaft.ratio > 0 else -1
+        masses, force = [], 0j
+        for mass in shaft.masses:
+            # the mass is at e·exp(i·s·angle) when θ = 0: its force phasor points there
+            phasor = mass.mass_radius_kgm * shaft.ratio**2 * spin * cmath.exp(1j * sign * mass.angle_rad)
+            masses.append(ShaftMass(mass.mass_radius_kgm, phasor_deg(phasor),
+                                    engine.balancer_z_m(mass)))
+            force += phasor
+        position = offset_position(shaft.lateral_m, shaft.vertical_m, engine.vertical_axis_rad)
+        moment = RollingMoment.from_phasor(abs(shaft.ratio),
+                                           rolling_moment_phasor(position, force, shaft.ratio),
+                                           engine.noise_floor_nm)
+        out.append(BalancerShaft(shaft.ratio, tuple(masses), shaft.lateral_m, shaft.vertical_m,
+                                 abs(force), moment))
+    return tuple(out)
 
 
 def plane_at_throw(engine, number) -> Plane:
@@ -356,6 +451,17 @@ def _rotating_target(engine, factor, pin_kg=0.0):
     return force, moment
 
 
+def _built_first_order(engine, shaking):
+    """Forward first-order force and moment (N, N·m) of the counterweights as built, read off
+    the engine's own analysis (their rows of the point masses)."""
+    if not engine.counterweights:
+        return 0j, 0j
+    mine = shaking.masses.cylinder == COUNTERWEIGHT
+    forces = shaking.mass_coefficients[mine, 1]
+    levers = shaking.masses.z_m[mine] - engine.mean_z_m
+    return complex(forces.sum()), complex((levers * forces).sum())
+
+
 def _antivibrateur(engine, shaking, eccentricity):
     """Size the rotor to cancel the forward second order exactly; return it and its phasors."""
     second = shaking.order(2).force_forward
@@ -388,13 +494,6 @@ def _shafts_for(order, shaking, planes, engine):
         if masses:
             out.append((sign * order, masses))
     return out
-
-
-def offset_position(lateral_m, vertical_m, vertical_rad):
-    """A point of the transverse plane as a complex number (real part along the reference
-    axis), from its lateral and vertical distances to the crank axis, the vertical lying at
-    ``vertical_rad`` from the reference axis and the lateral 90° on from it with rotation."""
-    return complex(vertical_m, lateral_m) * cmath.exp(1j * vertical_rad)
 
 
 def rolling_moment_phasor(position, force, speed_ratio):
@@ -481,7 +580,8 @@ def _test_masses(engine, shaking):
     unit = engine.crank_radius_m * engine.speed_rad_s**2
     out = []
     for index, throw in enumerate(engine.throws):
-        mine = (masses.throw == index) & (masses.cylinder != -1)
+        # the crankshaft's own unbalance and its counterweights stay on the machine
+        mine = (masses.throw == index) & (masses.cylinder >= BIG_ENDS)
         forward = coefficients[mine, 1].sum()
         # the equivalent mass sits on the pin; its share along the pin's direction
         out.append(float((forward * cmath.exp(-1j * throw.phase_rad)).real / unit))
@@ -520,7 +620,8 @@ def counterweights(engine: "Engine | EngineResult",
         radius of the counterweights' centre of mass, m; default the crank radius
     balance_factor : float, optional
         size for the rotating masses plus this fraction (0 to 1) of the reciprocating ones
-        per throw, instead of cancelling the forward first order exactly
+        per throw, instead of cancelling the forward first order exactly; counterweights as
+        built count towards that size, and the rest is proposed
     shaft_orders : sequence of int
         residual orders to cancel with balancer shafts: per order and turning sense one shaft
         (speed ratio +k with the crank, −k against it) carrying one mass at z̄, or two in the
@@ -538,6 +639,10 @@ def counterweights(engine: "Engine | EngineResult",
         from speed ratio (+k, −k) to a pair, the key None for every shaft not named; default
         on the crank axis. The offset changes no force and no pitching or yawing moment, only
         the rolling moment about the crank axis
+
+    An engine with counterweights or balancer shafts as built (``Engine.counterweights``,
+    ``Engine.balancer_shafts``) is balanced as it is: ``Balance.original`` is what they leave,
+    and the counterweights and shafts proposed are what to add to them.
 
     Raises
     ------
@@ -594,6 +699,9 @@ def counterweights(engine: "Engine | EngineResult",
     else:
         target_force, target_moment = _rotating_target(
             engine, balance_factor, rotor.mass_kg if rotor is not None else 0.0)
+        # the counterweights as built already give part of the target: propose the rest
+        built_force, built_moment = _built_first_order(engine, shaking)
+        target_force, target_moment = target_force - built_force, target_moment - built_moment
     throw_one = cmath.exp(-1j * engine.throws[0].phase_rad)
     weights = []
     for plane, phasor in zip(planes, _share(target_force, target_moment, planes, z_mean)):
@@ -622,7 +730,7 @@ def counterweights(engine: "Engine | EngineResult",
     masses = _test_masses(engine, shaking) if test_masses else None
     return Balance(engine, shaking, rotor, tuple(weights), balance_factor, residual,
                    tuple(shafts), current if orders else None, masses, samples, tuple(built),
-                   _rolling_totals(engine, built, rolling), tuple(orders))
+                   _rolling_totals(engine, built, rolling), tuple(orders), built_shafts(engine))
 
 
 def check_options(radius_m=None, balance_factor=None, shaft_orders=(),

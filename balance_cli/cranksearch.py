@@ -1222,6 +1222,13 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     if template.has_several_crankshafts:
         raise AnalysisError(f"has {len(template.crankshafts)} crankshafts; the search arranges "
                             "the throws of one crankshaft: give a template with one", "template")
+    if template.counterweights or template.balancer_shafts:
+        # a counterweight is sized for one crank and a shaft's force does not turn with the
+        # throws: the per-throw phasor sums would score a different engine than the one found
+        raise AnalysisError("has counterweights or balancer shafts as built; they belong to one "
+                            "arrangement, which the search is to choose: remove the "
+                            "[[counterweights]] and [[shafts]] tables from the template",
+                            "template")
     n = len(template.throws)
     if n < 2:
         raise AnalysisError("has one throw: with throw 1 at 0° there is nothing to arrange; give "

@@ -6,7 +6,9 @@ rod ratio, piston-pin offset and link-rod geometry is exact.
 Masses (point masses, as in Tanaka 1925 and Fraeys de Veubeke 1949 §8):
 - per cylinder, ``reciprocating_kg`` at its piston pin;
 - per link rod, ``knuckle_kg`` at its knuckle pin on the master rod;
-- per throw, ``rotating_kg`` (big ends) and ``crank_kg`` (the crankshaft's own) at the crank pin.
+- per throw, ``rotating_kg`` (big ends) and ``crank_kg`` (the crankshaft's own) at the crank pin;
+- per counterweight as built, its unbalance turning with its throw;
+- per balancer-shaft mass as built, its unbalance turning about the shaft's axis.
 """
 
 from dataclasses import dataclass
@@ -19,8 +21,21 @@ from .errors import ModelError
 from .units import round_degrees
 
 __all__ = ["MassSet", "RodSet", "Linkage", "LinkageState", "linkage", "linkage_state", "pin_angle",
-           "mass_positions", "rod_directions",
+           "BIG_ENDS", "CRANK", "COUNTERWEIGHT", "BALANCER", "CRANKSHAFT_OWNERS", "UNKNOWN_RADIUS_M",
+           "counterweight_angle", "balancer_positions", "mass_positions", "rod_directions",
            "crank_angles_of", "travel_at", "piston_travel", "check_assembly", "engine_angles"]
+
+#: owner codes of MassSet.cylinder for masses of no cylinder: big ends at a pin, the
+#: crankshaft's own unbalance, counterweights as built, balancer-shaft masses
+BIG_ENDS, CRANK, COUNTERWEIGHT, BALANCER = 0, -1, -2, -3
+#: the owners whose masses are the crankshaft's (they load the main bearings, not the pins)
+CRANKSHAFT_OWNERS = (CRANK, COUNTERWEIGHT)
+
+#: where an unbalance given without its radius (``mass_radius`` alone) is placed, m: its forces
+#: and moments depend on m·ρ only, and at a vanishing radius its moment of inertia m·ρ², which
+#: cannot be known without ρ, stays out of the reduced mass (what is left, 1e-6·m·ρ·ratio²
+#: kg·m², is far below any engine's)
+UNKNOWN_RADIUS_M = 1e-6
 
 #: crank angles at which a linkage is checked for assembly (0.1° apart)
 _CHECK_SAMPLES = 3600
@@ -40,9 +55,11 @@ class MassSet:
         axial position, m
     cylinder : ndarray of int, shape (n_masses,)
         number of the cylinder the mass belongs to; 0 for the big ends at a crank pin
-        (``rotating_kg``), −1 for the crankshaft's own (``crank_kg``)
+        (``rotating_kg``), −1 for the crankshaft's own (``crank_kg``), −2 for a counterweight
+        as built (:data:`COUNTERWEIGHT`), −3 for a balancer-shaft mass (:data:`BALANCER`)
     throw : ndarray of int, shape (n_masses,)
-        0-based index of the throw the mass rides on
+        0-based index of the throw the mass rides on (a counterweight: the throw it is
+        measured from; −1 for a balancer-shaft mass)
     """
 
     positions: np.ndarray
@@ -133,6 +150,49 @@ def pin_angle(engine, index, crank_angles):
     throw = engine.throws[index]
     shaft = engine.crankshafts[throw.crankshaft]
     return shaft.direction * (crank_angles + shaft.phase_rad + throw.phase_rad)
+
+
+def counterweight_angle(engine, weight, crank_angles):
+    """The direction of counterweight ``weight`` from its crankshaft's axis, rad from the
+    reference axis: its throw's pin direction turned by its own angle, in the sense its
+    crankshaft turns."""
+    shaft = engine.crankshaft_of(weight.throw)
+    return pin_angle(engine, weight.throw, crank_angles) + shaft.direction * weight.angle_rad
+
+
+def _counterweight_rows(engine, crank_angles):
+    """(position, mass, z, owner, throw) of every counterweight as built, in the crankcase's
+    frame; an unbalance given without its radius at :data:`UNKNOWN_RADIUS_M`."""
+    rows = []
+    for weight in engine.counterweights:
+        radius = UNKNOWN_RADIUS_M if weight.radius_m is None else weight.radius_m
+        position = radius * np.exp(1j * counterweight_angle(engine, weight, crank_angles))
+        centre = engine.crankshaft_of(weight.throw).centre
+        rows.append((position + centre if centre else position, weight.mass_radius_kgm / radius,
+                     engine.counterweight_z_m(weight), COUNTERWEIGHT, weight.throw))
+    return rows
+
+
+def balancer_positions(engine, shaft, angles):
+    """Each mass of balancer ``shaft`` at engine angles ``angles``, in the fixed frame, m:
+    centre + e·exp(i·s·(|ratio|·θ + angle)), s the sign of the ratio (its own sense of turning)."""
+    centre = engine.balancer_centre(shaft)
+    sign = 1 if shaft.ratio > 0 else -1
+    out = []
+    for mass in shaft.masses:
+        e = UNKNOWN_RADIUS_M if mass.eccentricity_m is None else mass.eccentricity_m
+        out.append(centre + e * np.exp(1j * sign * (abs(shaft.ratio) * angles + mass.angle_rad)))
+    return out
+
+
+def _balancer_rows(engine, angles):
+    """(position, mass, z, owner, throw) of every balancer-shaft mass as built, fixed frame."""
+    rows = []
+    for shaft in engine.balancer_shafts:
+        for mass, position in zip(shaft.masses, balancer_positions(engine, shaft, angles)):
+            e = UNKNOWN_RADIUS_M if mass.eccentricity_m is None else mass.eccentricity_m
+            rows.append((position, mass.mass_radius_kgm / e, engine.balancer_z_m(mass), BALANCER, -1))
+    return rows
 
 
 def linkage(engine, crank_angles, numbers=None, pin_shift=None):
@@ -264,7 +324,8 @@ def linkage_state(engine, angles, pin_shift=None, throw=None) -> LinkageState:
     it once per shift for all three is what keeps ``balance torque`` fast.
 
     With ``throw`` (an index), only what rides on that throw: its cylinders' masses and rods
-    and the masses at its pin, in the order they have in the whole engine's state.
+    and the masses at its pin, in the order they have in the whole engine's state (no
+    counterweight or balancer-shaft mass: they ride on no pin).
     """
     check_assembly(engine)
     angles = np.asarray(angles, dtype=float)
@@ -284,9 +345,14 @@ def linkage_state(engine, angles, pin_shift=None, throw=None) -> LinkageState:
     for index, (crank, pin) in enumerate(zip(engine.throws, pins)):
         if throw is not None and index != throw:
             continue
-        for owner, mass in ((0, engine.rotating_kg), (-1, engine.crank_kg)):
+        for owner, mass in ((BIG_ENDS, engine.rotating_kg), (CRANK, engine.crank_kg)):
             if mass:
                 rows.append((pin, mass, crank.z_m, owner, index))
+    if throw is None:
+        # after the pins: they turn with the crankshaft but ride on no pin (a shifted pin
+        # leaves them where they are); neither exists on a rotary, so the frames agree
+        rows += _counterweight_rows(engine, crank_angles_of(engine, angles))
+        rows += _balancer_rows(engine, angles)
     rods, rod_rows = [], []  # unit vectors; (correction, cylinder, throw)
     for cyl in chosen:
         big_end = knuckle[cyl.number] if cyl.is_link else pins[cyl.throw]

@@ -17,7 +17,9 @@ from .errors import ModelError, UnitError
 from .tolerances import NOISE_FLOOR, SAME_DIRECTION_RAD, SAME_POSITION_M
 from .units import check_finite_range
 
-__all__ = ["Crankshaft", "Throw", "Cylinder", "Engine", "Parts", "GasCycle", "FRAMES"]
+__all__ = ["Crankshaft", "Throw", "Cylinder", "Engine", "Parts", "GasCycle", "FRAMES",
+           "CounterweightMass", "BalancerMass", "BalancerShaftSpec", "MAX_SHAFT_RATIO",
+           "offset_position"]
 
 #: "fixed": the crank turns in a fixed crankcase; "rotary": the crankcase and its cylinders
 #: turn about a fixed crank
@@ -30,6 +32,9 @@ BISECTOR_FLOOR = 0.05
 OPPOSED_AXIS_TOLERANCE = 1e-6
 #: a name is shown in table cells and picture titles
 MAX_NAME_LENGTH = 120
+#: the fastest balancer shaft, turns per crank turn: real ones run at 1 or 2 (a few at 4);
+#: much faster ones would need more samples a revolution than any analysis takes by default
+MAX_SHAFT_RATIO = 16
 
 
 @dataclass(frozen=True)
@@ -205,6 +210,129 @@ class Cylinder:
 
 
 @dataclass(frozen=True)
+class CounterweightMass:
+    """A counterweight as built: a mass on the crankshaft, turning with one throw.
+
+    Parameters
+    ----------
+    throw : int
+        0-based index into ``Engine.throws`` of the throw whose pin it is measured from
+    mass_radius_kgm : float
+        its unbalance m·ρ, kg·m (all that the forces and torques depend on)
+    angle_rad : float
+        its direction from its throw's crank pin, positive with rotation (of that throw's
+        crankshaft), rad: π puts it opposite the pin
+    z_m : float or None
+        axial position, m; None (the default) takes its throw's ``z_m``
+    radius_m : float or None
+        radius of its centre of mass, m, when known (then ``mass_kg`` is m·ρ/ρ, and the
+        counterweight adds m·ρ² to the reduced mass like any point mass); None: only m·ρ is
+        known, which gives every force and moment, and its moment of inertia is left out
+    """
+
+    throw: int
+    mass_radius_kgm: float
+    angle_rad: float
+    z_m: float | None = None
+    radius_m: float | None = None
+
+    def __post_init__(self):
+        if isinstance(self.throw, bool) or not isinstance(self.throw, numbers.Integral) \
+                or self.throw < 0:
+            raise ModelError(f"must be a 0-based throw index, got {self.throw!r}", "throw")
+        object.__setattr__(self, "throw", int(self.throw))
+        _quantity(self.mass_radius_kgm, "unbalance", "mass_radius_kgm")
+        _angle(self.angle_rad, "angle_rad")
+        if self.z_m is not None:
+            _quantity(self.z_m, "length", "z_m", sign="any")
+        if self.radius_m is not None:
+            _quantity(self.radius_m, "length", "radius_m")
+
+    @property
+    def mass_kg(self) -> float | None:
+        """m·ρ/ρ, kg, when the radius is known."""
+        return None if self.radius_m is None else self.mass_radius_kgm / self.radius_m
+
+
+@dataclass(frozen=True)
+class BalancerMass:
+    """One mass on a balancer shaft as built.
+
+    Parameters
+    ----------
+    mass_radius_kgm : float
+        its unbalance m·e, kg·m
+    angle_rad : float
+        its direction from the reference axis when the crank angle θ is 0, measured in the
+        shaft's own sense of turning (with the crank for a positive ratio, against it for a
+        negative one), rad: the mass is at e·exp(i·s·(|ratio|·θ + angle)) from the shaft's
+        axis, s the sign of the ratio
+    z_m : float or None
+        axial position, m; None (the default) takes z̄, the cylinders' mean
+    eccentricity_m : float or None
+        its eccentricity e, m, when known (then the mass adds m·e²·ratio² to the reduced mass,
+        its kinetic energy at the shaft's speed); None: only m·e is known, which gives every
+        force, moment and rolling moment, and its moment of inertia is left out
+    """
+
+    mass_radius_kgm: float
+    angle_rad: float
+    z_m: float | None = None
+    eccentricity_m: float | None = None
+
+    def __post_init__(self):
+        _quantity(self.mass_radius_kgm, "unbalance", "mass_radius_kgm")
+        _angle(self.angle_rad, "angle_rad")
+        if self.z_m is not None:
+            _quantity(self.z_m, "length", "z_m", sign="any")
+        if self.eccentricity_m is not None:
+            _quantity(self.eccentricity_m, "length", "eccentricity_m")
+
+    @property
+    def mass_kg(self) -> float | None:
+        """m·e/e, kg, when the eccentricity is known."""
+        return None if self.eccentricity_m is None else self.mass_radius_kgm / self.eccentricity_m
+
+
+@dataclass(frozen=True)
+class BalancerShaftSpec:
+    """A balancer shaft as built, geared to the crankshaft.
+
+    Parameters
+    ----------
+    ratio : int
+        turns per crank turn, a nonzero whole number: positive with the crank, negative
+        against it (±1 primary, ±2 secondary shafts)
+    masses : tuple of BalancerMass
+    lateral_m, vertical_m : float
+        its axis from the crank axis, m, along the engine's vertical
+        (:attr:`Engine.vertical_axis_rad`) and across it (lateral: 90° on from the vertical,
+        with rotation)
+    """
+
+    ratio: int
+    masses: tuple
+    lateral_m: float = 0.0
+    vertical_m: float = 0.0
+
+    def __post_init__(self):
+        ratio = self.ratio
+        if isinstance(ratio, bool) or not isinstance(ratio, numbers.Integral) or ratio == 0 \
+                or abs(ratio) > MAX_SHAFT_RATIO:
+            raise ModelError(f"must be a nonzero whole number of turns per crank turn from "
+                             f"-{MAX_SHAFT_RATIO} to {MAX_SHAFT_RATIO} (+2 with the crank at "
+                             f"twice its speed, -2 against it), got {ratio!r}", "ratio")
+        object.__setattr__(self, "ratio", int(ratio))
+        if isinstance(self.masses, list):
+            object.__setattr__(self, "masses", tuple(self.masses))
+        if not isinstance(self.masses, tuple) or not self.masses \
+                or not all(isinstance(m, BalancerMass) for m in self.masses):
+            raise ModelError("needs one or more BalancerMass objects", "masses")
+        _quantity(self.lateral_m, "length", "lateral_m", sign="any")
+        _quantity(self.vertical_m, "length", "vertical_m", sign="any")
+
+
+@dataclass(frozen=True)
 class Parts:
     """Part-level data, from which the lumped point masses and the rods' rotational inertia
     are derived by the two-point rod model (Fraeys de Veubeke 1949, ch. I §§ 6 and 8).
@@ -338,6 +466,10 @@ class Engine:
     crankshafts : tuple of Crankshaft
         the crankshafts, the first the reference (at the origin, turning forward, phase 0);
         empty (the default) for the one crankshaft of most engines
+    counterweights : tuple of CounterweightMass
+        counterweights as built, turning with their throws (empty: none; refused on a rotary)
+    balancer_shafts : tuple of BalancerShaftSpec
+        balancer shafts as built (empty: none; refused on a rotary)
 
     Raises
     ------
@@ -367,11 +499,14 @@ class Engine:
     power_w: float | None = None
     power_speed_rad_s: float | None = None
     crankshafts: tuple = ()
+    counterweights: tuple = ()
+    balancer_shafts: tuple = ()
     _by_number: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
         # sequences given as lists become tuples: the engine stays immutable and hashable
-        for name in ("bank_angles_rad", "throws", "cylinders", "firing_order", "crankshafts"):
+        for name in ("bank_angles_rad", "throws", "cylinders", "firing_order", "crankshafts",
+                     "counterweights", "balancer_shafts"):
             value = getattr(self, name)
             if isinstance(value, list):
                 object.__setattr__(self, name, tuple(value))
@@ -429,6 +564,21 @@ class Engine:
     def pin_offset_of(self, cylinder) -> float:
         """The piston-pin offset of ``cylinder``: its own, else the engine's, m."""
         return self.pin_offset_m if cylinder.pin_offset_m is None else cylinder.pin_offset_m
+
+    def counterweight_z_m(self, counterweight) -> float:
+        """Where ``counterweight`` sits, m: its own ``z_m``, else its throw's."""
+        if counterweight.z_m is not None:
+            return counterweight.z_m
+        return self.throws[counterweight.throw].z_m
+
+    def balancer_z_m(self, mass) -> float:
+        """Where balancer ``mass`` sits, m: its own ``z_m``, else z̄ (the cylinders' mean)."""
+        return self.mean_z_m if mass.z_m is None else mass.z_m
+
+    def balancer_centre(self, shaft) -> complex:
+        """The axis of balancer ``shaft`` in the transverse plane, m (real along the reference
+        axis): its vertical offset along :attr:`vertical_axis_rad`, its lateral one 90° on."""
+        return offset_position(shaft.lateral_m, shaft.vertical_m, self.vertical_axis_rad)
 
     def crankshaft_of(self, throw_index) -> "Crankshaft":
         """The crankshaft that carries throw ``throw_index`` (0-based)."""
@@ -535,6 +685,13 @@ class Engine:
         return self.noise_floor_n * self.length_scale_m
 
 
+def offset_position(lateral_m, vertical_m, vertical_rad):
+    """A point of the transverse plane as a complex number (real part along the reference
+    axis), from its lateral and vertical distances to the crank axis, the vertical lying at
+    ``vertical_rad`` from the reference axis and the lateral 90° on from it with rotation."""
+    return complex(vertical_m, lateral_m) * complex(math.cos(vertical_rad), math.sin(vertical_rad))
+
+
 def _quantity(value, dimension, parameter, sign="positive", cylinder=None):
     """A finite SI value within the accepted range; ``sign`` "positive", "non-negative" or "any"."""
     prefix = f"cylinder {cylinder}: {parameter} " if cylinder is not None else ""
@@ -631,12 +788,36 @@ def _check(engine):
                 f"throw {c.throw + 1}, same z); give it another bank, throw or axial position",
                 cylinder=c.number)
         bores[bore] = c.number
+    _check_balancers(engine)
     if engine.firing_order is not None:
         order = list(engine.firing_order)
         if not all(isinstance(n, int) and not isinstance(n, bool) for n in order) \
                 or sorted(order) != sorted(numbers):
             raise ModelError(f"{order} is not a permutation of the cylinder numbers "
                              f"{sorted(numbers)}; list every cylinder exactly once", "firing_order")
+
+
+def _check_balancers(engine):
+    """Counterweights on existing throws, balancer shafts of the right types; neither on a
+    rotary, whose crank stands still while its crankcase turns."""
+    for name, kind in (("counterweights", CounterweightMass), ("balancer_shafts", BalancerShaftSpec)):
+        items = getattr(engine, name)
+        if not items:
+            continue
+        if not all(isinstance(item, kind) for item in items):
+            raise ModelError(f"needs {kind.__name__} objects", name)
+        if engine.is_rotary:
+            what = ("a counterweight turns with the crank, and a rotary's crank stands still"
+                    if name == "counterweights" else
+                    "a balancer shaft is geared to a turning crank, and a rotary's crank stands "
+                    "still")
+            raise ModelError(f"cannot be given for a rotary engine: {what}; remove them, or "
+                             'use frame = "fixed"', name)
+    for i, weight in enumerate(engine.counterweights, 1):
+        if not weight.throw < len(engine.throws):
+            raise ModelError(f"counterweight {i} is on throw {weight.throw + 1}, but the engine "
+                             f"has throws 1 to {len(engine.throws)}; give one of them",
+                             "counterweights")
 
 
 def _check_crankshafts(engine):

@@ -8,7 +8,8 @@ import numpy as np
 
 from .errors import AnalysisError, OrderError
 from .harmonics import check_sampling, forward_backward, fourier, orders_of, synthesize
-from .kinematics import MassSet, engine_angles, mass_positions
+from .kinematics import (BALANCER, BIG_ENDS, COUNTERWEIGHT, CRANK, MassSet, engine_angles,
+                         mass_positions)
 from .tolerances import minimum_samples
 from .units import phasor_deg, wrap_degrees
 
@@ -204,7 +205,8 @@ class Shaking:
 
     def cylinder_phasors(self, order: int) -> list[tuple[str, complex, complex]]:
         """Each cylinder's share of order ``order``: [(label, forward N, backward N)], the
-        crank-pin masses together as "pins"; they add up to the engine's phasors (the star)."""
+        crank-pin masses together as "pins", counterweights as built as "counterweights" and
+        balancer-shaft masses as "shafts"; they add up to the engine's phasors (the star)."""
         if self.mass_coefficients is None or self.masses is None:
             raise AnalysisError("has no per-mass shares once a balancer is added; ask the "
                                 "engine's own analysis", "cylinder_phasors")
@@ -212,9 +214,11 @@ class Shaking:
         shares = []
         owners = self.masses.cylinder
         numbers: list[int | str] = list(dict.fromkeys(int(n) for n in owners if n > 0))
-        for number in numbers + ["pins"]:
-            mine = owners <= 0 if number == "pins" else owners == number
-            if number == "pins" and not mine.any():
+        groups = {"pins": (BIG_ENDS, CRANK), "counterweights": (COUNTERWEIGHT,),
+                  "shafts": (BALANCER,)}
+        for number in numbers + list(groups):
+            mine = np.isin(owners, groups[number]) if number in groups else owners == number
+            if number in groups and not mine.any():
                 continue
             shares.append((str(number), complex(self.mass_coefficients[mine, order].sum()),
                            complex(self.mass_coefficients[mine, -order].sum())))

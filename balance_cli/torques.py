@@ -34,8 +34,9 @@ from .errors import AnalysisError, OrderError, SamplingWarning
 from .gas import PressureCurve, cycle_pressure
 from .harmonics import orders_of
 from .firing import firing_sequence
-from .kinematics import (check_assembly, crank_angles_of, engine_angles, linkage,
-                         linkage_state, pin_angle, piston_travel, travel_at)
+from .kinematics import (BIG_ENDS, CRANKSHAFT_OWNERS, check_assembly, crank_angles_of,
+                         engine_angles, linkage, linkage_state, pin_angle, piston_travel,
+                         travel_at)
 from .model import Engine
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings, part_values
 from .flywheel import LOADS, Steadiness, flywheel_for, steadiness
@@ -342,8 +343,10 @@ def _reduced_mass_and_momentum(engine, state, crankshaft=None):
     masses, rods = state.masses, state.rods
     if crankshaft is not None:
         shaft_of = np.array([t.crankshaft for t in engine.throws])
+        # a balancer-shaft mass (throw −1) rides on no crankshaft
+        mine = (masses.throw >= 0) & (shaft_of[masses.throw] == crankshaft)
         masses = dataclasses.replace(masses, **{
-            name: getattr(masses, name)[shaft_of[masses.throw] == crankshaft]
+            name: getattr(masses, name)[mine]
             for name in ("positions", "masses_kg", "z_m", "cylinder", "throw")})
         rods = dataclasses.replace(rods, **{
             name: getattr(rods, name)[shaft_of[rods.throw] == crankshaft]
@@ -490,7 +493,9 @@ def _pin_forces(engine, state, angles, turns, net_pressure, area):
     masses, rods = state.masses, state.rods
     k = orders_of(n)
     accelerations = np.fft.ifft(np.fft.fft(masses.positions, axis=-1) * -(k * omega) ** 2, axis=-1)
-    weights = np.where(masses.cylinder != -1, masses.masses_kg, 0.0)[:, None]  # not the crank's
+    # what rides on the pins: the cylinders' masses and the big ends (not the crankshaft's own
+    # masses, counterweights or balancer shafts)
+    weights = np.where(masses.cylinder >= BIG_ENDS, masses.masses_kg, 0.0)[:, None]
     rates = (np.conj(rods.directions) * periodic_derivative(rods.directions)).imag
     angular_accelerations = omega**2 * periodic_derivative(rates).real
     step = _SHIFT * engine.crank_radius_m
@@ -521,11 +526,14 @@ def _pin_forces(engine, state, angles, turns, net_pressure, area):
             parts = parts + sum(net_pressure[m] * area * np.tile(ds[i], turns)
                                 for i, m in enumerate(numbers))
         forces.append(-(parts[0] + 1j * parts[1]))
-    # the crankshafts' own masses load their own main bearings
+    # each crankshaft's own masses and its counterweights load its own main bearings; a
+    # balancer shaft runs in bearings of its own: its rows (throw −1, which picks the last
+    # throw's crankshaft here) fall out by their owner code
     shaft_of = np.array([t.crankshaft for t in engine.throws])[masses.throw]
     crank_inertia = []
     for s_index in range(len(engine.crankshafts)):
-        own = np.where((masses.cylinder == -1) & (shaft_of == s_index), masses.masses_kg, 0.0)
+        own = np.where(np.isin(masses.cylinder, CRANKSHAFT_OWNERS) & (shaft_of == s_index),
+                       masses.masses_kg, 0.0)
         crank_inertia.append(np.tile(-(own[:, None] * accelerations).sum(axis=0), turns))
     return forces, crank_inertia
 

@@ -42,6 +42,10 @@ DIMENSIONS = {
     # hp is the mechanical horsepower (550 ft·lbf/s), PS the metric one (75 kgf·m/s)
     "power": {"W": 1.0, "kW": 1e3, "MW": 1e6, "hp": 550 * 0.3048 * 0.45359237 * STANDARD_GRAVITY,
               "PS": 75 * STANDARD_GRAVITY},
+    # a mass times its radius (a counterweight's or balancer mass's m·ρ), as balancing
+    # machines and drawings give it
+    "unbalance": {"kg*m": 1.0, "kg*cm": 1e-2, "kg*mm": 1e-3, "g*m": 1e-3, "g*cm": 1e-5,
+                  "g*mm": 1e-6, "lb*in": 0.45359237 * 0.0254, "oz*in": 0.45359237 / 16 * 0.0254},
 }
 
 #: one choice of display units: force unit -> (N per force unit, moment unit, N·m per moment
@@ -66,13 +70,16 @@ LIMITS = {
     "pressure": (1e-3, 1e10, "bar", _BAR),
     "torque": (1e-9, 1e12, "N*m", 1.0),
     "power": (1e-3, 1e10, "kW", 1e3),
+    # the product of the mass and length limits
+    "unbalance": (1e-12, 1e9, "kg*m", 1.0),
 }
 
 # ASCII digits only; any unit word, so that an unknown one is reported as a unit
 _QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\s\d.+-].*?)\s*$",
                        re.ASCII)
 _EXAMPLES = {"length": "82.5 mm", "mass": "1770.4 g", "angular speed": "1650 rpm",
-             "moment of inertia": "0.12 kg*m^2", "pressure": "45 bar", "torque": "850 N*m", "power": "21 MW"}
+             "moment of inertia": "0.12 kg*m^2", "pressure": "45 bar", "torque": "850 N*m", "power": "21 MW",
+             "unbalance": "0.072 kg*m"}
 
 
 def _units_of(dimension):

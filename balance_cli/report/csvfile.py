@@ -82,6 +82,16 @@ def balance_csv(balances, scale):
     for b in balances:
         record = b.to_dict()
         rows = []
+        built = record.get("as_built")
+        if built is not None:
+            for i, weight in enumerate(built["counterweights"], 1):
+                rows += _records(f"built counterweight {i}", weight)
+            for i, shaft in enumerate(built["balancer_shafts"], 1):
+                rows += _balancer_rows(f"built balancer shaft {i}", shaft)
+            for order in built["orders"]:
+                values = order_values(order, b.engine.per_cylinder_unit_n, scale)
+                rows += [(f"as built order {order['order']}", name, value, unit)
+                         for name, value, unit in zip(_ORDER_QUANTITIES, values, units)]
         for i, weight in enumerate(record["counterweights"], 1):
             rows += _records(f"counterweight {i}", weight, weight_keys)
         if record["antivibrateur"] is not None:

@@ -62,7 +62,11 @@ def blocks(comparison, balances, star_order, torques, scale=None, family=None):
     out.append(("h", 2, "Counterweights"))
     out.append(("p", "Counterweights at crank radius cancelling the forward first order, in the "
                      "first and last throws' planes (`balance counterweight` for other choices), "
-                     "and what is left."))
+                     "and what is left"
+                     + ("; for an engine with counterweights or balancer shafts as built, the "
+                        "counterweights to add to them" if any(
+                            b.engine.counterweights or b.engine.balancer_shafts for b in balances)
+                        else "") + "."))
     headers, rows = balance_summary(balances)
     if rows:
         out.append(("table", headers, rows))

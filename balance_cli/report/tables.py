@@ -313,6 +313,21 @@ def _crankshaft_lines(engine):
     return lines
 
 
+def _as_built_show_lines(engine):
+    """``balance show``'s lines for the counterweights and balancer shafts as built."""
+    lines = []
+    for weight in engine.counterweights:
+        lines.append(f"  counterweight: throw {weight.throw + 1}, m·ρ {figure(weight.mass_radius_kgm)} "
+                     f"kg·m at {math.degrees(weight.angle_rad):g}° from its pin, z "
+                     f"{_mm(engine.counterweight_z_m(weight))}")
+    for shaft in engine.balancer_shafts:
+        masses = "; ".join(f"m·e {figure(m.mass_radius_kgm)} kg·m at {math.degrees(m.angle_rad):g}°, "
+                           f"z {_mm(engine.balancer_z_m(m))}" for m in shaft.masses)
+        lines.append(f"  shaft:         ratio {shaft.ratio:+d}, axis lateral {_mm(shaft.lateral_m)}, "
+                     f"vertical {_mm(shaft.vertical_m)}; {masses}")
+    return lines
+
+
 def show_table(engine, firing):
     """One engine, one row per cylinder, with the engine's data above."""
     knuckles = sorted({c.knuckle_kg for c in engine.cylinders if c.is_link})
@@ -332,6 +347,7 @@ def show_table(engine, firing):
         + "".join(f", knuckle {kg_to_g(kg):g} g per link rod" for kg in knuckles),
         *_parts_lines(engine),
         *_crankshaft_lines(engine),
+        *_as_built_show_lines(engine),
         f"  firing:        {'-'.join(map(str, firing.order))} "
         f"({'given' if firing.given else 'most uniform the crank allows'})",
         f"  intervals (°): {', '.join(f'{i:.2f}' for i in firing.intervals_deg)}",
@@ -369,6 +385,15 @@ WEIGHT_COLUMNS = [
     ("mass_kg", "Mass (kg)", figure),
     ("radius_m", "Radius (mm)", lambda v: f"{m_to_mm(v):g}"),
     ("angle_deg", "Angle (° from throw 1)", lambda v: f"{round_degrees(v, 2):.2f}"),
+]
+#: one row per counterweight as built (``Balance.to_dict``'s ``as_built.counterweights``)
+BUILT_WEIGHT_COLUMNS = [
+    ("throw", "Throw", str),
+    ("z_m", "z (mm)", lambda v: f"{m_to_mm(v):g}"),
+    ("mass_radius_kgm", "m·ρ (kg·m)", figure),
+    ("mass_kg", "Mass (kg)", lambda v: "-" if v is None else figure(v)),
+    ("radius_m", "Radius (mm)", lambda v: "-" if v is None else f"{m_to_mm(v):g}"),
+    ("angle_deg", "Angle (° from its pin)", lambda v: f"{round_degrees(v, 2):.2f}"),
 ]
 #: one row per mass of a balancer shaft (``Balance.to_dict``'s ``balancer_shafts``, each mass
 #: record with its shaft's ``shaft`` number, ``speed_ratio`` and ``offset_m``; None on the
@@ -453,6 +478,25 @@ def _plane_text(weight):
     return f"z = {m_to_mm(weight['z_m']):g} mm"
 
 
+def _as_built_lines(record, n_unit, scale, fmt):
+    """The counterweights and shafts the configuration gives as built, and what they leave."""
+    built = record.get("as_built")
+    if built is None:
+        return []
+    weights, shafts = built["counterweights"], built["balancer_shafts"]
+    out = [f"As built: {len(weights)} counterweight{'' if len(weights) == 1 else 's'} and "
+           f"{len(shafts)} balancer shaft{'' if len(shafts) == 1 else 's'} (from the "
+           "configuration). Everything proposed below is in addition to them.", ""]
+    if weights:
+        out += [_record_table(weights, BUILT_WEIGHT_COLUMNS, fmt), ""]
+    if shafts:
+        out += ["Balancer shafts as built (each mass's m·e, its angle from the reference axis when "
+                "θ = 0, positive with rotation, and its axial position):", "",
+                _record_table(_shaft_rows(shafts), SHAFT_COLUMNS, fmt), ""]
+    return out + _left(record["name"], "counterweights and shafts as built", built["orders"],
+                       n_unit, scale, fmt)
+
+
 def balance_tables(balances, scale, fmt):
     """``balance counterweight`` as text or Markdown, engine by engine, rendered from the
     records of ``Balance.to_dict``."""
@@ -469,9 +513,12 @@ def balance_tables(balances, scale, fmt):
                "ones per throw")
         carrier = "crankcase" if record["frame"] == "rotary" else "crank"
         out += [f"{heading}{safe(record['name'])}: counterweights on the {carrier}, {how}", ""]
+        out += _as_built_lines(record, n_unit, scale, fmt)
         if all(w["mass_kg"] == 0.0 for w in record["counterweights"]):
             out += [f"None needed: the forward first order is already zero on the {carrier}.", ""]
         else:
+            if "as_built" in record:
+                out += ["Counterweights to add to those built:", ""]
             out += [_record_table(record["counterweights"], WEIGHT_COLUMNS, fmt), ""]
         a = record["antivibrateur"]
         if a is not None:
@@ -492,7 +539,11 @@ def balance_tables(balances, scale, fmt):
         if "after_shafts" in record and not record["balancer_shafts"]:
             out += ["Balancer shafts: none needed; the orders asked for are already zero.", ""]
         elif "after_shafts" in record:
-            out += ["Balancer shafts as built (each mass's m·e, its angle from the reference axis "
+            # "as built": one shaft per speed ratio with its masses; on an engine that has
+            # shafts already, these are more of them
+            what = ("Balancer shafts to add to those built" if "as_built" in record
+                    else "Balancer shafts as built")
+            out += [f"{what} (each mass's m·e, its angle from the reference axis "
                     "when θ = 0, positive with rotation, and its axial position):", "",
                     _record_table(_shaft_rows(record["balancer_shafts"]), SHAFT_COLUMNS, fmt), ""]
             built = {s["order"] for s in record["balancer_shafts"]}

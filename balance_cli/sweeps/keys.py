@@ -45,6 +45,9 @@ SCHEMA = {
                     "knuckle_radius": "length", "knuckle_angle": ANGLE, "pin_offset": "length",
                     "opposed_throw": WHOLE, "opposed_reciprocating": "mass"},
     "crankshafts[]": {"x": "length", "y": "length", "direction": WHOLE, "phase": ANGLE},
+    "counterweights[]": {"throw": WHOLE, "mass": "mass", "radius": "length",
+                         "mass_radius": "unbalance", "angle": ANGLE, "z": "length"},
+    "shafts[]": {"ratio": WHOLE, "lateral": "length", "vertical": "length"},
 }
 #: configuration keys that hold text or lists: named in messages, never swept
 _NOT_SCALARS = {"name": "text", "source": "text", "frame": "text (fixed or rotary)",
@@ -55,7 +58,7 @@ BALANCE_FACTOR = "balance_factor"
 
 #: SI unit of each kind of value, as JSON and CSV name it
 _SI_UNITS = {"length": "m", "mass": "kg", "angular speed": "rad/s", "moment of inertia": "kg*m^2",
-             "pressure": "Pa", "torque": "N*m", ANGLE: "rad", NUMBER: "", WHOLE: "",
+             "pressure": "Pa", "torque": "N*m", "unbalance": "kg*m", ANGLE: "rad", NUMBER: "", WHOLE: "",
              FRACTION: ""}
 
 _SEGMENT = re.compile(r"^([a-z_]+)(?:\[(\d+)\])?$")
