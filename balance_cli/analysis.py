@@ -74,7 +74,15 @@ class EngineResult:
 
     @property
     def counterweight_cancels_first_order(self) -> bool:
-        return _counterweight_cancels_first_order(self.engine)
+        """An ideal crankshaft counterweight takes (some of) the first order away."""
+        return any(self.counterweight_cancels)
+
+    @property
+    def counterweight_cancels(self) -> tuple[bool, bool]:
+        """Whether ideal crankshaft counterweights take the (forward, backward) first order
+        away: the forward on any engine whose crank turns, the backward too where a crankshaft
+        turns against the first (its counterweights turn backward)."""
+        return _counterweight_cancels(self.engine)
 
     @property
     def counterweighted_per_cylinder(self) -> float:
@@ -89,7 +97,8 @@ class EngineResult:
         """The resultant force over one revolution after an ideal crankshaft counterweight, N
         (complex: real along the reference axis); one order only if ``order`` is given.
         ``points`` defaults to four times the samples."""
-        return self.shaking.locus(order, self.counterweight_cancels_first_order, points)
+        forward, backward = self.counterweight_cancels
+        return self.shaking.locus(order, forward, points, skip_backward_first=backward)
 
     def percent_of(self, reference: "EngineResult", absolute: bool = False) -> float | None:
         """The largest counterweighted resultant as a percentage of ``reference``'s, per
@@ -116,10 +125,14 @@ class EngineResult:
         floor = engine.noise_floor_n if part == "force" else engine.noise_floor_nm
         best = None
         records = self._records()
+        skip_forward, skip_backward = self.counterweight_cancels
         for o in self.shaking.orders:
-            if o.order == 1 and self.counterweight_cancels_first_order:
+            if o.order == 1 and (skip_forward or skip_backward):
+                forward = o.force_forward if part == "force" else o.moment_forward
                 backward = o.force_backward if part == "force" else o.moment_backward
-                values = part_values(0j, backward, floor, unit, engine.vertical_axis_rad)
+                values = part_values(0j if skip_forward else forward,
+                                     0j if skip_backward else backward, floor, unit,
+                                     engine.vertical_axis_rad)
             else:
                 values = records[o.order - 1][part]
             if values[f"max_{unit}"] > (best["max"] if best else 0.0):
@@ -192,12 +205,13 @@ class EngineResult:
         }
 
 
-def _counterweight_cancels_first_order(engine):
-    """An ideal crankshaft counterweight takes the forward first order away (not on a rotary,
-    whose crank does not turn, nor where a crankshaft turns against the first: its
-    counterweights make backward forces, and an engine's first order does not split between
-    its crankshafts when opposed pistons join them)."""
-    return not engine.is_rotary and all(s.direction == 1 for s in engine.crankshafts)
+def _counterweight_cancels(engine):
+    """(forward, backward): ideal counterweights in two planes of a crankshaft turning with
+    the first make any forward first-order force and couple, and of one turning against it
+    any backward one; a rotary's crank does not turn."""
+    if engine.is_rotary:
+        return False, False
+    return True, any(s.direction == -1 for s in engine.crankshafts)
 
 
 def _above_floor(value, floor):
@@ -260,17 +274,17 @@ def analyse(engine: Engine, samples: int = DEFAULT_SAMPLES,
     instance(engine, Engine, "engine", hint=" (balance.load gives one)")
     check_assembly(engine)
     shaking = shaking_forces(engine, samples, max_order)
-    cancels = _counterweight_cancels_first_order(engine)
+    forward, backward = _counterweight_cancels(engine)
     return EngineResult(
         engine=engine,
         shaking=shaking,
         firing=firing_sequence(engine),
         samples=samples,
         largest_force_n=_above_floor(shaking.largest_force(), engine.noise_floor_n),
-        counterweighted_force_n=_above_floor(shaking.largest_force(skip_forward_first=cancels),
+        counterweighted_force_n=_above_floor(shaking.largest_force(forward, backward),
                                              engine.noise_floor_n),
         largest_moment_nm=_above_floor(shaking.largest_moment(), engine.noise_floor_nm),
-        counterweighted_moment_nm=_above_floor(shaking.largest_moment(skip_forward_first=cancels),
+        counterweighted_moment_nm=_above_floor(shaking.largest_moment(forward, backward),
                                                engine.noise_floor_nm),
     )
 

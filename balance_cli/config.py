@@ -315,6 +315,14 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
                             throw.quantity("z", "length", required=False, default=0.0, sign="any"),
                             throw.integer("crankshaft", required=False, default=1, low=1,
                                           high=max(len(crankshafts), 1)) - 1))
+    _check_crankshafts_used(path, crankshafts, throws)
+    for i, offset in enumerate(bank_offsets, 1):
+        # the model would name the cylinder; the file's key is the bank's
+        if offset is not None and rod_length <= crank_radius + abs(offset):
+            raise ConfigError(path, f"banks[{i}].pin_offset", f"({offset * 1000:g} mm) leaves the "
+                              f"rod ({rod_length * 1000:g} mm) no longer than the crank radius plus "
+                              "|pin offset|, so it cannot reach the cylinder axis; make the offset "
+                              "smaller")
 
     links = None
     if top.has("links"):
@@ -471,6 +479,20 @@ def _read_shafts(top, path, frame):
     return tuple(shafts)
 
 
+def _check_crankshafts_used(path, crankshafts, throws):
+    """Every crankshaft named carries a throw, and no two share an axis: said with the file's
+    1-based keys (the model counts from 0)."""
+    used = {t.crankshaft for t in throws}
+    for k, shaft in enumerate(crankshafts):
+        if k not in used:
+            raise ConfigError(path, f"crankshafts[{k + 1}]", f"carries no throw; give it throws "
+                              f"(crankshaft = {k + 1} in [[throws]]) or remove it")
+        for j in range(k):
+            if abs(shaft.centre - crankshafts[j].centre) < 1e-9:
+                raise ConfigError(path, f"crankshafts[{k + 1}]", f"shares its axis with "
+                                  f"crankshafts[{j + 1}]; give it its own x and y")
+
+
 def _read_parts(reader, rod_length):
     """The [parts] table; centres of gravity between the rod's ends."""
     inertia = "moment of inertia"
@@ -521,7 +543,7 @@ def _lumped(path, parts, cylinders, rod_length, n_throws, missing_link_keys=()):
             piston = parts.piston_kg + parts.small_end_share(rod_length) * parts.rod_kg
             lumped.append(dataclasses.replace(
                 c, reciprocating_kg=piston,
-                opposed_reciprocating_kg=piston if c.is_opposed else 0.0,
+                opposed_reciprocating_kg=piston if c.is_opposed else None,
                 rod_inertia_kgm2=parts.rod_correction_kgm2(rod_length)))
     rods = [sum((not c.is_link and c.throw == t) + (c.opposed_throw == t) for c in cylinders)
             for t in range(n_throws)]

@@ -151,7 +151,6 @@ def _lateral(engine, state, net_pressure, area, turns):
     # every mass's acceleration in one transform
     accelerations = _accelerations(masses.positions, omega)
     angular = omega**2 * _derivative(rates).real
-    offset = engine.pin_offset_m
     link_moments: dict = {}
     forces, couples = {}, {}
     # link rods load their master rods: solve them first
@@ -170,6 +169,8 @@ def _lateral(engine, state, net_pressure, area, turns):
         a = np.tile(accelerations[row[n]] * np.conj(axis), turns)
         local = np.tile(u * np.conj(axis), turns)
         m = cyl.reciprocating_kg
+        # each cylinder's own offset: a bank's or its own overrides the engine's
+        offset = engine.pin_offset_of(cyl)
         t = (w * local.imag - gas - m * a.real) / local.real
         lateral = m * a.imag + t * local.imag + w * local.real   # the guide's force on the piston
         travel = np.tile(state.travel[n], turns)

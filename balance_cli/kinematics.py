@@ -278,6 +278,29 @@ def check_assembly(engine):
     links = [c.number for c in engine.cylinders if c.is_link]
     if links:
         linkage(engine, engine_angles(_CHECK_SAMPLES), links)
+    _check_opposed_strokes(engine)
+
+
+#: an opposed bore's volume must change by at least this fraction of the 4·r of two pistons
+#: moved as mirror images: a lead of up to 120° keeps 4r·cos 60° = 2r
+_OPPOSED_SWEEP = 0.5
+
+
+def _check_opposed_strokes(engine):
+    """An opposed bore whose two pistons move together (the far throw at 0° where 180° was
+    meant) sweeps almost no volume: refused, naming the cylinder and the fix."""
+    opposed = [c.number for c in engine.cylinders if c.is_opposed]
+    if not opposed:
+        return
+    travel = linkage(engine, engine_angles(720), opposed).travel
+    for n in opposed:
+        sweep = float(np.ptp(travel[n]))
+        if sweep < _OPPOSED_SWEEP * 4 * engine.crank_radius_m:
+            raise ModelError(
+                f"cylinder {n}: its two pistons move together (the bore's length changes by "
+                f"{sweep * 1000:.3g} mm, against {4 * engine.crank_radius_m * 1000:.3g} mm for "
+                "mirror images); a far throw at 180° in its crankshaft's own sense moves its "
+                "piston as the mirror image of the near one (180° ± the lead)", cylinder=n)
 
 
 def piston_travel(engine, crank_angles, numbers=None, pin_shift=None):

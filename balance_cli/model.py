@@ -65,7 +65,8 @@ class Crankshaft:
     def __post_init__(self):
         _quantity(self.x_m, "length", "x_m", sign="any")
         _quantity(self.y_m, "length", "y_m", sign="any")
-        if isinstance(self.direction, bool) or self.direction not in (1, -1):
+        if isinstance(self.direction, bool) or not isinstance(self.direction, numbers.Integral) \
+                or self.direction not in (1, -1):
             raise ModelError(f"must be +1 (with the first crankshaft) or -1 (against it), got "
                              f"{self.direction!r}", "direction")
         object.__setattr__(self, "direction", int(self.direction))
@@ -147,8 +148,9 @@ class Cylinder:
     opposed_throw : int or None
         an opposed-piston cylinder: the 0-based throw, on another crankshaft, whose rod drives
         the second piston of this bore from the other end (plain rod of ``rod_length_m``)
-    opposed_reciprocating_kg : float
-        mass moving with the second piston's pin, kg (opposed-piston cylinders only)
+    opposed_reciprocating_kg : float or None
+        mass moving with the second piston's pin, kg (opposed-piston cylinders only; None, the
+        default, takes ``reciprocating_kg``)
     """
 
     number: int
@@ -164,7 +166,7 @@ class Cylinder:
     rod_inertia_kgm2: float = 0.0
     pin_offset_m: float | None = None
     opposed_throw: int | None = None
-    opposed_reciprocating_kg: float = 0.0
+    opposed_reciprocating_kg: float | None = None
 
     def __post_init__(self):
         # the types here, the ranges and references in the Engine that holds the cylinder
@@ -176,6 +178,8 @@ class Cylinder:
                      "knuckle_angle_rad", "knuckle_kg", "rod_inertia_kgm2",
                      "opposed_reciprocating_kg"):
             value = getattr(self, name)
+            if value is None and name == "opposed_reciprocating_kg":
+                continue
             if not is_real(value) or not math.isfinite(value):
                 raise ModelError(f"cylinder {n}: {name} must be a finite number, got {value!r}",
                                  cylinder=n)
@@ -192,9 +196,12 @@ class Cylinder:
             if self.master is not None:
                 raise ModelError(f"cylinder {n}: an opposed-piston cylinder has plain rods; it "
                                  "cannot be a link-rod cylinder too", cylinder=n)
+            if self.opposed_reciprocating_kg is None:
+                # the same piston at both ends unless told otherwise, as a file reads it
+                object.__setattr__(self, "opposed_reciprocating_kg", self.reciprocating_kg)
             _quantity(self.opposed_reciprocating_kg, "mass", "opposed_reciprocating_kg",
                       cylinder=n)
-        elif self.opposed_reciprocating_kg:
+        elif self.opposed_reciprocating_kg is not None:
             raise ModelError(f"cylinder {n}: opposed_reciprocating_kg belongs to an opposed-piston "
                              "cylinder; give its opposed_throw too, or leave the mass out",
                              cylinder=n)
@@ -764,12 +771,12 @@ def _check(engine):
         _angle(throw.phase_rad, "throws")
         _quantity(throw.z_m, "length", "throws", sign="any")
         if not throw.crankshaft < len(engine.crankshafts):
-            raise ModelError(f"throw {i} is on crankshaft {throw.crankshaft + 1}, but the engine "
-                             f"has {len(engine.crankshafts)}; add the crankshaft or give another",
-                             "throws")
+            raise ModelError(f"[{i - 1}] names crankshaft index {throw.crankshaft}, but the engine "
+                             f"has crankshafts 0 to {len(engine.crankshafts) - 1}; add the "
+                             "crankshaft or name another", "throws")
     idle = sorted(set(range(len(engine.crankshafts))) - {t.crankshaft for t in engine.throws})
     if idle:
-        raise ModelError(f"crankshaft {idle[0] + 1} carries no throw; give it throws or remove it",
+        raise ModelError(f"[{idle[0]}] carries no throw; give it throws or remove it",
                          "crankshafts")
     if not engine.cylinders or not all(isinstance(c, Cylinder) for c in engine.cylinders):
         raise ModelError("needs one or more Cylinder objects", "cylinders")
@@ -788,6 +795,20 @@ def _check(engine):
                 f"throw {c.throw + 1}, same z); give it another bank, throw or axial position",
                 cylinder=c.number)
         bores[bore] = c.number
+    for c in engine.cylinders:
+        # an opposed bore seen from its far end: a cylinder of a bank pointing back along it,
+        # on the opposed throw, would be a third piston in it
+        if not c.is_opposed:
+            continue
+        back = engine.bank_angles_rad[c.bank] + math.pi
+        for j, angle in enumerate(engine.bank_angles_rad):
+            if abs(math.remainder(angle - back, 2 * math.pi)) < SAME_DIRECTION_RAD:
+                other = bores.get((j, c.opposed_throw, round(c.z_m / SAME_POSITION_M)))
+                if other is not None:
+                    raise ModelError(
+                        f"cylinder {other} sits in the bore of cylinder {c.number}, whose opposed "
+                        "piston comes from that end; give it another bank, throw or axial "
+                        "position", cylinder=other)
     _check_balancers(engine)
     if engine.firing_order is not None:
         order = list(engine.firing_order)
@@ -815,8 +836,8 @@ def _check_balancers(engine):
                              'use frame = "fixed"', name)
     for i, weight in enumerate(engine.counterweights, 1):
         if not weight.throw < len(engine.throws):
-            raise ModelError(f"counterweight {i} is on throw {weight.throw + 1}, but the engine "
-                             f"has throws 1 to {len(engine.throws)}; give one of them",
+            raise ModelError(f"[{i - 1}] is on throw index {weight.throw}, but the engine has "
+                             f"throws 0 to {len(engine.throws) - 1}; give one of them",
                              "counterweights")
 
 
@@ -825,16 +846,17 @@ def _check_crankshafts(engine):
     if not all(isinstance(s, Crankshaft) for s in shafts):
         raise ModelError("needs Crankshaft objects", "crankshafts")
     if shafts[0] != REFERENCE_CRANKSHAFT:
-        raise ModelError("the first crankshaft is the reference: at the origin, turning forward, "
-                         "at phase 0; place and phase the others relative to it", "crankshafts")
+        raise ModelError("must begin with the reference crankshaft (at the origin, turning "
+                         "forward, at phase 0); place and phase the others relative to it",
+                         "crankshafts")
     if len(shafts) > 1 and engine.is_rotary:
         raise ModelError('a rotary engine turns its crankcase about one fixed crank; give one '
                          'crankshaft or frame = "fixed"', "crankshafts")
     for i, shaft in enumerate(shafts):
         for j in range(i):
             if abs(shaft.centre - shafts[j].centre) < SAME_POSITION_M:
-                raise ModelError(f"{j + 1} and {i + 1} share an axis; give each crankshaft its "
-                                 "own position", "crankshafts")
+                raise ModelError(f"[{j}] and [{i}] share an axis; give each crankshaft its own "
+                                 "position", "crankshafts")
 
 
 def _check_opposed(engine, c):
@@ -842,13 +864,20 @@ def _check_opposed(engine, c):
     lies on the cylinder's axis, far enough out that the two pistons never meet."""
     n = c.number
     if not 0 <= c.opposed_throw < len(engine.throws):
-        raise ModelError(f"cylinder {n}: opposed_throw {c.opposed_throw + 1} is not one of the "
-                         f"engine's {len(engine.throws)} throws", cylinder=n)
+        raise ModelError(f"cylinder {n}: opposed_throw index {c.opposed_throw} is not one of the "
+                         f"engine's throws (0 to {len(engine.throws) - 1})", cylinder=n)
     own, other = engine.throws[c.throw].crankshaft, engine.throws[c.opposed_throw].crankshaft
     if own == other:
-        raise ModelError(f"cylinder {n}: its opposed piston's throw {c.opposed_throw + 1} is on "
-                         f"the same crankshaft as throw {c.throw + 1}; an opposed piston is "
-                         "driven by another crankshaft, at the other end of the bore", cylinder=n)
+        raise ModelError(f"cylinder {n}: its opposed throw is on the same crankshaft as its own "
+                         "throw; an opposed piston is driven by another crankshaft, at the other "
+                         "end of the bore", cylinder=n)
+    # the far piston runs in this bore, at its axial position: its throw must be there too
+    # (as far off it as the near throw is, for rods set side by side)
+    far_z, near_z = engine.throws[c.opposed_throw].z_m, engine.throws[c.throw].z_m
+    if abs(far_z - c.z_m) > abs(near_z - c.z_m) + SAME_POSITION_M:
+        raise ModelError(f"cylinder {n}: its opposed throw is at z = {far_z:g} m but the bore at "
+                         f"z = {c.z_m:g} m; the far piston runs in the same bore, so give its throw "
+                         "the bore's axial position", cylinder=n)
     span = (engine.crankshafts[other].centre - engine.crankshafts[own].centre) \
         * complex(math.cos(engine.bank_angles_rad[c.bank]), -math.sin(engine.bank_angles_rad[c.bank]))
     # decimal inputs put a crankshaft on a slanted axis only to within rounding: a micrometre
@@ -899,6 +928,9 @@ def _check_cylinder(engine, c):
     if master.is_link:
         raise ModelError(f"cylinder {n}: cylinder {c.master} has a link rod itself; a link rod "
                          "must ride on a master rod", cylinder=n)
+    if master.is_opposed:
+        raise ModelError(f"cylinder {n}: cylinder {c.master} is an opposed-piston cylinder, whose "
+                         "rods are plain; a link rod needs a master rod of its own", cylinder=n)
     if master.throw != c.throw:
         raise ModelError(f"cylinder {n}: its master, cylinder {c.master}, is on throw "
                          f"{master.throw + 1} but this one on throw {c.throw + 1}; a link rod rides "

@@ -122,13 +122,14 @@ def locus_points(result, order=None, of="force", counterweight=True):
     moment (none on a rotary, whose crank does not turn). A locus below the noise floor all
     round is exact zeros."""
     _quantity(of)
-    cancels = counterweight and result.counterweight_cancels_first_order
+    forward, backward = result.counterweight_cancels if counterweight else (False, False)
     engine = result.engine
     if of == "force":
-        values, floor = result.shaking.locus(order, cancels), engine.noise_floor_n
-        unit = result.per_cylinder_unit_n
+        values = result.shaking.locus(order, forward, skip_backward_first=backward)
+        floor, unit = engine.noise_floor_n, result.per_cylinder_unit_n
     else:
-        values, floor, unit = result.shaking.moment_locus(order, cancels), engine.noise_floor_nm, 1.0
+        values = result.shaking.moment_locus(order, forward, skip_backward_first=backward)
+        floor, unit = engine.noise_floor_nm, 1.0
     if np.abs(values).max() < floor:
         values = np.zeros_like(values)
     values = values / unit

@@ -170,23 +170,28 @@ class Shaking:
             raise OrderError(f"order {k!r} is not among the orders analysed (1 to {self.max_order})", "k")
         return self.orders[k - 1]
 
-    def force(self, upsample=1, skip_forward_first=False):
-        """The resultant force over one revolution (all orders), N, on a grid N·upsample."""
-        return _over_revolution(self.force_coefficients, upsample, skip_forward_first)
+    def force(self, upsample=1, skip_forward_first=False, skip_backward_first=False):
+        """The resultant force over one revolution (all orders), N, on a grid N·upsample;
+        without the forward (backward) first order when ``skip_forward_first``
+        (``skip_backward_first``): what ideal counterweights on a crankshaft turning with
+        (against) the first take away."""
+        return _over_revolution(self.force_coefficients, upsample, skip_forward_first,
+                                skip_backward_first)
 
-    def largest_force(self, skip_forward_first=False) -> float:
+    def largest_force(self, skip_forward_first=False, skip_backward_first=False) -> float:
         """Largest magnitude of the resultant force over a revolution, N."""
-        return float(np.abs(self.force(16, skip_forward_first)).max())
+        return float(np.abs(self.force(16, skip_forward_first, skip_backward_first)).max())
 
-    def moment(self, upsample=1, skip_forward_first=False):
+    def moment(self, upsample=1, skip_forward_first=False, skip_backward_first=False):
         """The free moment over one revolution (all orders), N·m, on a grid N·upsample."""
-        return _over_revolution(self.moment_coefficients, upsample, skip_forward_first)
+        return _over_revolution(self.moment_coefficients, upsample, skip_forward_first,
+                                skip_backward_first)
 
-    def largest_moment(self, skip_forward_first=False) -> float:
+    def largest_moment(self, skip_forward_first=False, skip_backward_first=False) -> float:
         """Largest magnitude of the free moment over a revolution, N·m."""
-        return float(np.abs(self.moment(16, skip_forward_first)).max())
+        return float(np.abs(self.moment(16, skip_forward_first, skip_backward_first)).max())
 
-    def locus(self, order=None, skip_forward_first=False, points=None):
+    def locus(self, order=None, skip_forward_first=False, points=None, skip_backward_first=False):
         """The resultant force over one revolution at ``points`` angles (default four times
         the samples; all orders need a multiple of them), N (complex: real along the reference
         axis); one order only if ``order`` is given."""
@@ -200,8 +205,9 @@ class Shaking:
             o = self.order(order)
             theta = 2 * np.pi * np.arange(points) / points
             forward = 0j if (skip_forward_first and order == 1) else o.force_forward
-            return forward * np.exp(1j * order * theta) + o.force_backward * np.exp(-1j * order * theta)
-        return self.force(points // n, skip_forward_first)
+            backward = 0j if (skip_backward_first and order == 1) else o.force_backward
+            return forward * np.exp(1j * order * theta) + backward * np.exp(-1j * order * theta)
+        return self.force(points // n, skip_forward_first, skip_backward_first)
 
     def cylinder_phasors(self, order: int) -> list[tuple[str, complex, complex]]:
         """Each cylinder's share of order ``order``: [(label, forward N, backward N)], the
@@ -235,7 +241,8 @@ class Shaking:
                           * self.mass_coefficients)
         return levered.cylinder_phasors(order)
 
-    def moment_locus(self, order=None, skip_forward_first=False, points=None):
+    def moment_locus(self, order=None, skip_forward_first=False, points=None,
+                     skip_backward_first=False):
         """The free moment over one revolution, N·m, at the angles :meth:`locus` takes for the
         force; ``skip_forward_first`` leaves out the forward first order (an ideal
         counterweight in two planes cancels that couple as it cancels the force)."""
@@ -244,7 +251,7 @@ class Shaking:
                           orders=tuple(replace(o, force_forward=o.moment_forward,
                                                force_backward=o.moment_backward)
                                        for o in self.orders))
-        return swapped.locus(order, skip_forward_first, points)
+        return swapped.locus(order, skip_forward_first, points, skip_backward_first)
 
     @classmethod
     def from_coefficients(cls, force, moment, max_order, sampling_ok=True, mass_coefficients=None,
@@ -269,12 +276,14 @@ class Shaking:
         return Shaking.from_coefficients(force, moment, self.max_order, self.sampling_ok)
 
 
-def _over_revolution(coefficients, upsample, skip_forward_first):
+def _over_revolution(coefficients, upsample, skip_forward_first, skip_backward_first=False):
     """A signal over one revolution from its coefficients, on a grid N·upsample; without its
-    forward first order when an ideal counterweight takes it."""
+    forward (backward) first order when an ideal counterweight takes it."""
     c = coefficients.copy()
     if skip_forward_first:
         c[1] = 0.0
+    if skip_backward_first:
+        c[-1] = 0.0
     return synthesize(c, upsample)
 
 

@@ -392,7 +392,7 @@ def test_bad_as_built_tables_get_one_clear_message(tmp_path, text, key, words):
 def test_library_model_errors_name_the_field():
     """Built in code, the model checks as the reader does and names its own fields."""
     engine = balance.loads(V8)
-    with pytest.raises(balance.ModelError, match="counterweight 1 is on throw 9") as caught:
+    with pytest.raises(balance.ModelError, match=r"\[0\] is on throw index 8") as caught:
         engine.replace(counterweights=(CounterweightMass(8, 0.01, 0.0),))
     assert caught.value.parameter == "counterweights"
     with pytest.raises(balance.ModelError) as caught:

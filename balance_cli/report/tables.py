@@ -168,8 +168,8 @@ def compare_parts(comparison, scale):
              "Largest: the resultant's largest magnitude over a revolution, all orders; main "
              "order: the order with the largest ellipse, its max and direction (rotating: a "
              "circle, turning with the crank (forward) or against it (backward)). A turning crank's ideal counterweight has taken the forward first order of "
-             "force and moment away (a rotary's crank does not turn, and none is taken where a "
-             "crankshaft turns against the first)."]
+             "force and moment away (a rotary's crank does not turn), and where a crankshaft "
+             "turns against the first, its counterweights the backward first order too."]
     if any(record[share] is None for record in records):
         notes.append("n/a: the reference engine has no resultant to compare with.")
     if any((record[share] or 0.0) > PERCENT_LIMIT for record in records):
@@ -231,7 +231,12 @@ def _pru_parts(records, scale):
             "pitching moment of order k, MkH the yawing one; M1 as the crank stands, and "
             "'balanced' with counterweights for the rotating masses (balance factor 0)."
             + (" —: " + "; ".join(sorted({r["pru_note"] for r in records if r["pru"] is None}))
-               + "." if missing else ""))
+               + "." if missing else "")
+            + (" 'Balanced' is not given for a rotary (its crank does not turn) or an engine with "
+               "several crankshafts (each would need "
+               "its own counterweights)." if any(r["pru"] is not None and
+                                                 r["pru"]["first_order_balanced"] is None
+                                                 for r in records) else ""))
     return [("Power related unbalance (N·m/kW, and the need for a compensator)", headers, rows,
              note)]
 
