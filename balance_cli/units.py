@@ -42,6 +42,9 @@ DIMENSIONS = {
     # hp is the mechanical horsepower (550 ft·lbf/s), PS the metric one (75 kgf·m/s)
     "power": {"W": 1.0, "kW": 1e3, "MW": 1e6, "hp": 550 * 0.3048 * 0.45359237 * STANDARD_GRAVITY,
               "PS": 75 * STANDARD_GRAVITY},
+    # a crankshaft section's twist stiffness and a damper's or a throw's viscous damping
+    "torsional stiffness": {"N*m/rad": 1.0, "kN*m/rad": 1e3, "MN*m/rad": 1e6},
+    "torsional damping": {"N*m*s/rad": 1.0, "kN*m*s/rad": 1e3},
 }
 
 #: one choice of display units: force unit -> (N per force unit, moment unit, N·m per moment
@@ -66,13 +69,16 @@ LIMITS = {
     "pressure": (1e-3, 1e10, "bar", _BAR),
     "torque": (1e-9, 1e12, "N*m", 1.0),
     "power": (1e-3, 1e10, "kW", 1e3),
+    "torsional stiffness": (1e-3, 1e13, "N*m/rad", 1.0),
+    "torsional damping": (1e-9, 1e12, "N*m*s/rad", 1.0),
 }
 
 # ASCII digits only; any unit word, so that an unknown one is reported as a unit
 _QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\s\d.+-].*?)\s*$",
                        re.ASCII)
 _EXAMPLES = {"length": "82.5 mm", "mass": "1770.4 g", "angular speed": "1650 rpm",
-             "moment of inertia": "0.12 kg*m^2", "pressure": "45 bar", "torque": "850 N*m", "power": "21 MW"}
+             "moment of inertia": "0.12 kg*m^2", "pressure": "45 bar", "torque": "850 N*m", "power": "21 MW",
+             "torsional stiffness": "1.25e6 N*m/rad", "torsional damping": "2 N*m*s/rad"}
 
 
 def _units_of(dimension):
@@ -204,7 +210,9 @@ def _article(word):
 
 
 def _plural(dimension):
-    return {"moment of inertia": "moments of inertia", "power": "powers"}.get(dimension,
+    return {"moment of inertia": "moments of inertia", "power": "powers",
+            "torsional stiffness": "torsional stiffnesses",
+            "torsional damping": "torsional damping coefficients"}.get(dimension,
                                                                               dimension + "s")
 
 
