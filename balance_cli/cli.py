@@ -743,8 +743,10 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir):
     order, at its throw: the gas torque the same at every speed, the inertia torque growing
     as the speed squared.
     """
-    from .torsion import torsion as torsion_of
+    from .torsion import require_opentorsion, torsion as torsion_of
 
+    with _reported():
+        require_opentorsion()   # before any work, and not tied to one file
     speeds_rpm = _speeds_option(speeds)
     files = _inputs(paths)
     _guard([output], files)

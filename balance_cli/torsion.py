@@ -26,7 +26,7 @@ from .model import Engine
 from .shaking import DEFAULT_SAMPLES
 from .units import rad_s_to_rpm
 
-__all__ = ["TorsionUnavailable", "Mode", "Critical", "TorsionResult", "torsion", "throw_inertias",
+__all__ = ["require_opentorsion", "TorsionUnavailable", "Mode", "Critical", "TorsionResult", "torsion", "throw_inertias",
            "phase_vector_sum", "natural_frequencies", "DEFAULT_SPEEDS_RPM", "DEFAULT_MAX_ORDER"]
 
 #: 600 to 2400 rpm in steps of 25
@@ -43,7 +43,8 @@ class TorsionUnavailable(BalanceError, ImportError):
     """openTorsion is not installed."""
 
 
-def _opentorsion():
+def require_opentorsion():
+    """The openTorsion module; TorsionUnavailable (one line naming the extra) without it."""
     try:
         import opentorsion
     except ImportError:
@@ -132,7 +133,7 @@ def _line(engine, samples):
 
 def _assembly(line):
     """openTorsion's Assembly of ``line``: one Disk per node, one massless Shaft per section."""
-    ot = _opentorsion()
+    ot = require_opentorsion()
     disks = [ot.Disk(i, float(j), c=float(c)) for i, (j, c) in
              enumerate(zip(line.inertia, line.node_damping))]
     shafts = [ot.Shaft(i, i + 1, None, None, k=float(k), I=0.0, c=float(c))
@@ -309,7 +310,7 @@ def torsion(engine, speeds_rpm=DEFAULT_SPEEDS_RPM, max_order=DEFAULT_MAX_ORDER,
     AnalysisError
         no [torsion] table, a rotary, several crankshafts, bad speeds
     """
-    _opentorsion()
+    require_opentorsion()
     speeds = np.asarray(speeds_rpm, dtype=float).ravel()
     if speeds.size == 0 or not np.all(np.isfinite(speeds)) or np.any(speeds <= 0):
         raise AnalysisError("must be one or more speeds above zero, rpm", "speeds_rpm")
