@@ -384,3 +384,31 @@ def test_cli_bad_speeds(tmp_path):
     path.write_text(INLINE6 + TORSION6)
     result = run("torsion", path, "--speeds", "2400:600:25")
     assert result.exit_code == 2 and "--speeds" in result.output
+
+
+def test_mendes_model_frequencies_by_holzer():
+    """The openTorsion example's nine-inertia model of Mendes et al. (2008), Fig. 4: every
+    natural frequency balance reports leaves no residual torque in a Holzer table (a
+    bisection on the residual's sign change finds the same roots, written apart from
+    openTorsion)."""
+    from scipy.optimize import brentq
+
+    engine = balance.load(
+        balance_root() / "tests" / "reference" / "opentorsion_ice" / "mendes2008.toml")
+    result = torsion(engine, [2000.0], 12)
+    j = list(result.inertia_kgm2)
+    k = list(result.stiffness_nm_rad)
+    assert len(j) == 9 and len(result.modes) == 8
+    for mode in result.modes:
+        w2 = (2 * math.pi * mode.frequency_hz) ** 2
+        # bracket the root by ±0.1 % and find it from the residual alone
+        root = brentq(lambda x: _holzer(j, k, x)[1], w2 * 0.999, w2 * 1.001, xtol=1e-9 * w2)
+        assert_allclose(w2, root, rtol=1e-8)
+    # the first mode, one node near the flywheel: 216.6 Hz, its 6th order critical at 2166 rpm
+    assert_allclose(result.modes[0].frequency_hz, 216.58, atol=0.01)
+
+
+def balance_root():
+    from pathlib import Path
+
+    return Path(__file__).resolve().parent.parent
