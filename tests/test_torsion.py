@@ -404,8 +404,10 @@ def test_mendes_model_frequencies_by_holzer():
         # bracket the root by ±0.1 % and find it from the residual alone
         root = brentq(lambda x: _holzer(j, k, x)[1], w2 * 0.999, w2 * 1.001, xtol=1e-9 * w2)
         assert_allclose(w2, root, rtol=1e-8)
-    # the first mode, one node near the flywheel: 216.6 Hz, its 6th order critical at 2166 rpm
-    assert_allclose(result.modes[0].frequency_hz, 216.58, atol=0.01)
+    # the first mode's 6th-order critical is the measured resonance of Fig. 31, 2 149 rpm
+    # (tests/reference/opentorsion_ice), within the figure's digitising and the model's
+    # own error: 2 %
+    assert_allclose(60 * result.modes[0].frequency_hz / 6, 2149.3, rtol=0.02)
 
 
 def balance_root():
