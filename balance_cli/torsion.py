@@ -26,7 +26,7 @@ from .model import Engine
 from .shaking import DEFAULT_SAMPLES
 from .units import rad_s_to_rpm
 
-__all__ = ["require_opentorsion", "TorsionUnavailable", "Mode", "Critical", "TorsionResult", "torsion", "throw_inertias",
+__all__ = ["require_opentorsion", "first_mode_amplitudes", "TorsionUnavailable", "Mode", "Critical", "TorsionResult", "torsion", "throw_inertias",
            "phase_vector_sum", "natural_frequencies", "DEFAULT_SPEEDS_RPM", "DEFAULT_MAX_ORDER"]
 
 #: 600 to 2400 rpm in steps of 25
@@ -403,3 +403,14 @@ def _response(engine, assembly, line, loss_factor, orders, gas, inertia, speeds)
     peak = wave_peak(torques).T                                       # speed × section
     free = np.degrees(wave_peak(q[0]))
     return amplitude, peak, free
+
+
+def first_mode_amplitudes(engine, samples=DEFAULT_SAMPLES) -> np.ndarray:
+    """The first natural mode's relative amplitude at each throw (the largest +1), as
+    :func:`torsion` reports it; it depends on the shaft line only, not on the throws' phases
+    (the search's ``V`` terms turn it with each crank)."""
+    require_opentorsion()
+    line = _line(engine, samples)
+    _, vectors = natural_frequencies(_assembly(line))
+    beta = vectors[list(line.throw_nodes), 0]
+    return beta / beta[int(np.argmax(np.abs(beta)))]

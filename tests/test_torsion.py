@@ -414,3 +414,81 @@ def balance_root():
     from pathlib import Path
 
     return Path(__file__).resolve().parent.parent
+
+
+# -- the search's V terms --------------------------------------------------------------------
+
+TEMPLATE6 = (INLINE6.replace("firing_order = [1, 5, 3, 6, 2, 4]\n", "")
+             .replace("[[throws]]\nphase = 0\n", "[[throws]]\n")
+             .replace("[[throws]]\nphase = 240\n", "[[throws]]\n")
+             .replace("[[throws]]\nphase = 120\n", "[[throws]]\n"))
+
+
+def test_search_v_terms_score_is_the_phase_vector_sum(tmp_path):
+    """``V1,V2``: the kernel's score (the template's first mode turned with each crank) equals
+    the sum of the listed arrangements' V1 and V2 worked out from their own firing angles and
+    first mode (balance_cli.torsion), each |Σ β·e^{ik·φ}|/Σ|β|; and the first mode's V3 is 1
+    (a major order: all cylinders in phase) for every even-firing crank."""
+    lines = TEMPLATE6.split("\n")
+    zs, out = iter(range(0, 720, 120)), []
+    for line in lines:
+        out.append(line)
+        if line == "[[throws]]":
+            out.append(f'z = "{next(zs)} mm"')
+    path = tmp_path / "template.toml"
+    path.write_text("\n".join(out) + TORSION6)
+    template, _ = balance.load_template(path)
+    result = balance.search(template, "V1,V2,V3", top=6, workers=1)
+    for a in result.arrangements:
+        assert_allclose(a.score, a.coefficients["V1"] + a.coefficients["V2"]
+                        + a.coefficients["V3"], rtol=1e-9, atol=1e-12)
+        assert_allclose(a.coefficients["V3"], 1.0, rtol=1e-12)
+    # the half orders are refused by name
+    with pytest.raises(AnalysisError, match="whole orders only"):
+        balance.search(template, "V1.5")
+
+
+def test_search_v_term_needs_a_torsion_table(tmp_path):
+    lines = TEMPLATE6.split("\n")
+    zs, out = iter(range(0, 720, 120)), []
+    for line in lines:
+        out.append(line)
+        if line == "[[throws]]":
+            out.append(f'z = "{next(zs)} mm"')
+    path = tmp_path / "template.toml"
+    path.write_text("\n".join(out))
+    template, _ = balance.load_template(path)
+    with pytest.raises(AnalysisError, match=r"no \[torsion\] table"):
+        balance.search(template, "M1,V2")
+
+
+def test_search_tv1_is_the_largest_minor_order(tmp_path):
+    """``TV1``: the first mode's largest V_k over the whole orders 1..max_order that are not
+    major (for an even-firing four-stroke six, all but 3 and 6). Every arrangement listed (all
+    60 distinct ones: pruning by the bound must lose none) has the score its own V_k give,
+    recomputed here from balance.torsion's mode and the firing angles; the ranking is by it."""
+    lines = TEMPLATE6.split("\n")
+    zs, out = iter(range(0, 720, 120)), []
+    for line in lines:
+        out.append(line)
+        if line == "[[throws]]":
+            out.append(f'z = "{next(zs)} mm"')
+    path = tmp_path / "template.toml"
+    path.write_text("\n".join(out) + TORSION6)
+    template, _ = balance.load_template(path)
+    result = balance.search(template, "TV1", top=1000, workers=1)
+    assert len(result.arrangements) == result.arrangements_distinct == 60
+    from balance_cli.torques import _firing_angles_deg
+
+    scores = []
+    for a in result.arrangements:
+        beta = torsion(a.engine, [1000.0], 8).modes[0].throw_amplitudes
+        fire = _firing_angles_deg(a.engine, a.result.firing)
+        amplitudes = [beta[c.throw] for c in a.engine.cylinders]
+        angles = [fire[c.number] for c in a.engine.cylinders]
+        by_hand = max(abs(phase_vector_sum(amplitudes, angles, k)) for k in (1, 2, 4, 5, 7, 8))
+        by_hand /= sum(abs(b) for b in amplitudes)
+        assert_allclose(a.score, by_hand, rtol=1e-9)
+        scores.append(a.score)
+    # ranked by score; equal scores (to the search's 1e-9 tie) by firing order
+    assert all(b >= a - 1e-9 for a, b in zip(scores, scores[1:])) and scores[0] < scores[-1]
