@@ -605,9 +605,20 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
             family_table = family(load_data(family_path), str(family_path),
                                   _counts_option(family_cylinders), samples=samples,
                                   max_order=max_order)
+    torsion = None
+    if any(r.engine.torsion is not None for r in results):
+        from .torsion import TorsionUnavailable, require_opentorsion, torsion as torsion_of
+
+        try:
+            require_opentorsion()
+        except TorsionUnavailable as exc:
+            torsion = f"Not computed: {exc}."
+        else:
+            torsion = _run_each([r.engine for r in results if r.engine.torsion is not None],
+                                "Torsion", torsion_of)
     with _reported(), _drawing():
         written = write_report(target, comparison, balances, star_order, with_html, torques,
-                               Scale.of(False, units), family_table)
+                               Scale.of(False, units), family_table, torsion)
     for path in written:
         click.echo(f"wrote {path}", err=True)
 

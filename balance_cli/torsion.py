@@ -228,6 +228,9 @@ class TorsionResult:
         the free end's angular amplitude (peak of the synthesised waveform), degrees, by speed
     stress_pa : ndarray or None
         torque_nm as shear stress τ = T·r/J_p, Pa, with the [torsion] shaft diameter
+    with_gas : bool
+        whether the excitation has a gas torque ([gas] table or a pressure curve), or the
+        inertia torque alone
     """
 
     engine: Engine
@@ -243,6 +246,7 @@ class TorsionResult:
     torque_nm: np.ndarray
     free_end_deg: np.ndarray
     stress_pa: np.ndarray | None
+    with_gas: bool = False
 
     def largest(self):
         """Per section: (name, largest torque N·m, at speed rpm, stress Pa or None)."""
@@ -258,6 +262,7 @@ class TorsionResult:
         engine = self.engine
         return {
             "name": engine.name, "config": engine.config_path, "cycle": engine.cycle,
+            "excitation": "gas and inertia" if self.with_gas else "inertia",
             "nodes": [{"node": n, "inertia_kgm2": float(j)}
                       for n, j in zip(self.nodes, self.inertia_kgm2)],
             "sections": [{"section": n, "stiffness_Nm_per_rad": float(k)}
@@ -354,7 +359,7 @@ def torsion(engine, speeds_rpm=DEFAULT_SPEEDS_RPM, max_order=DEFAULT_MAX_ORDER,
     sections = tuple(f"{a}–{b}" for a, b in zip(line.names, line.names[1:]))
     return TorsionResult(engine, line.names, sections, line.inertia, line.stiffness,
                          tuple(modes), tuple(criticals), orders, speeds, order_torque, peak,
-                         free_end, stress)
+                         free_end, stress, bool(np.any(gas)))
 
 
 def _firing_deg(engine):

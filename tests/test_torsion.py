@@ -492,3 +492,27 @@ def test_search_tv1_is_the_largest_minor_order(tmp_path):
         scores.append(a.score)
     # ranked by score; equal scores (to the search's 1e-9 tie) by firing order
     assert all(b >= a - 1e-9 for a, b in zip(scores, scores[1:])) and scores[0] < scores[-1]
+
+
+# -- balance report --------------------------------------------------------------------------
+
+def test_report_has_a_torsion_section(tmp_path, monkeypatch):
+    """An engine with a [torsion] table gets a section in the report; one without does not
+    add one; without openTorsion the section says so in one line and the report is written."""
+    six = tmp_path / "six.toml"
+    six.write_text(INLINE6 + TORSION6)
+    plain = tmp_path / "plain.toml"
+    plain.write_text(INLINE6.replace('name = "test in-line 6"', 'name = "plain six"'))
+    result = run("report", six, plain, "-o", tmp_path / "report")
+    assert result.exit_code == 0, result.output
+    text = (tmp_path / "report" / "report.md").read_text()
+    assert "## Torsional vibration" in text and "### test in-line 6" in text
+    assert "### plain six" not in text
+    assert "order 6 of mode 1" in text
+    result = run("report", plain, "-o", tmp_path / "plain-report")
+    assert "Torsional vibration" not in (tmp_path / "plain-report" / "report.md").read_text()
+    monkeypatch.setitem(sys.modules, "opentorsion", None)
+    result = run("report", six, "-o", tmp_path / "without")
+    assert result.exit_code == 0, result.output
+    assert ("Not computed: balance torsion needs openTorsion: pip install 'balance[torsion]'."
+            in (tmp_path / "without" / "report.md").read_text())

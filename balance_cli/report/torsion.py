@@ -28,7 +28,10 @@ def torsion_tables(results, fmt):
     out = []
     for r in results:
         low, high = r.speeds_rpm.min(), r.speeds_rpm.max()
-        out += [f"{heading}{safe(r.engine.name)}: torsional vibration, {low:g} to {high:g} rpm", ""]
+        out += [f"{heading}{safe(r.engine.name)}: torsional vibration, {low:g} to {high:g} rpm", "",
+                "Excitation: each cylinder's " + ("gas and inertia torque" if r.with_gas else
+                                                  "inertia torque alone (no [gas] table)")
+                + ", orders up to " + f"{r.orders.max():g}.", ""]
         rows = [[name, figure(j)] for name, j in zip(r.nodes, r.inertia_kgm2)]
         out += ["Shaft line, free end first:", "",
                 render(["Inertia", "J (kg·m²)"], rows, fmt), ""]
