@@ -731,9 +731,26 @@ def arrangement_toml(template: dict, phases_deg: "Iterable[float]",
             lines.append(f"{key} = {_toml_value(value)}")
     for key, rows, array in tables:
         for row in rows:
-            lines += ["", f"[[{key}]]" if array else f"[{key}]"]
-            lines += [f"{k} = {_toml_value(v)}" for k, v in row.items()]
+            lines += _table_lines(key, row, array)
     return "\n".join(lines) + "\n"
+
+
+def _table_lines(name, row, array):
+    """One [table] (or [[table]] entry) and, after its own keys, its sub-tables
+    ([torsion.flywheel], [[torsion.front]])."""
+    lines = ["", f"[[{name}]]" if array else f"[{name}]"]
+    nested = []
+    for k, v in row.items():
+        if isinstance(v, dict):
+            nested.append((k, [v], False))
+        elif isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
+            nested.append((k, v, True))
+        else:
+            lines.append(f"{k} = {_toml_value(v)}")
+    for k, rows, sub_array in nested:
+        for sub in rows:
+            lines += _table_lines(f"{name}.{k}", sub, sub_array)
+    return lines
 
 
 def _toml_value(value):

@@ -516,3 +516,22 @@ def test_report_has_a_torsion_section(tmp_path, monkeypatch):
     assert result.exit_code == 0, result.output
     assert ("Not computed: balance torsion needs openTorsion: pip install 'balance[torsion]'."
             in (tmp_path / "without" / "report.md").read_text())
+
+
+def test_search_write_keeps_the_torsion_table(tmp_path):
+    """``search --write`` writes the template's [torsion] table, sub-tables included, so the
+    configuration it writes has the template's shaft line."""
+    lines = TEMPLATE6.split("\n")
+    zs, out = iter(range(0, 720, 120)), []
+    for line in lines:
+        out.append(line)
+        if line == "[[throws]]":
+            out.append(f'z = "{next(zs)} mm"')
+    path = tmp_path / "template.toml"
+    path.write_text("\n".join(out) + TORSION6)
+    result = run("search", path, "--objective", "M1,TV1", "--top", "1", "--write",
+                 tmp_path / "best")
+    assert result.exit_code == 0, result.output
+    (written,) = (tmp_path / "best").iterdir()
+    template, _ = balance.load_template(path)
+    assert balance.load(written).torsion == template.torsion
