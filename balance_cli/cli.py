@@ -763,6 +763,17 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir):
     _guard([output], files)
     _settings(samples, max_order)
     engines = _load_all(files)
+    if len(engines) > 1:
+        # a folder holds engines without a shaft line: those are passed over, by name
+        without = [e for e in engines if e.torsion is None]
+        for engine in without:
+            click.echo(f"note: {engine.config_path}: no [torsion] table; passed over", err=True)
+        engines = [e for e in engines if e.torsion is not None]
+        if not engines:
+            raise click.ClickException("none of these engines has a [torsion] table (the "
+                                       "shaft line's inertias and stiffnesses); see the README, "
+                                       "Torsional vibration")
+        files = [Path(e.config_path) for e in engines]
     results = _run_each(engines, "Torsion", lambda e: torsion_of(e, speeds_rpm, max_order,
                                                                  samples))
     from .report.torsion import torsion_csv, torsion_tables

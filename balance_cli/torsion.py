@@ -57,7 +57,8 @@ def _torsion_model(engine):
     instance(engine, Engine, "engine", hint=" (balance.load gives one)")
     model = engine.torsion
     if model is None:
-        raise AnalysisError(f"{engine.name!r} has no [torsion] table (its mass-elastic model)",
+        raise AnalysisError(f"{engine.name!r} has no [torsion] table: give its shaft line's "
+                            "inertias and stiffnesses (see the README, Torsional vibration)",
                             "engine")
     if engine.is_rotary:
         raise AnalysisError("is a rotary: its crankshaft does not turn", "engine")

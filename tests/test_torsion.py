@@ -535,3 +535,16 @@ def test_search_write_keeps_the_torsion_table(tmp_path):
     (written,) = (tmp_path / "best").iterdir()
     template, _ = balance.load_template(path)
     assert balance.load(written).torsion == template.torsion
+
+
+def test_cli_folder_passes_over_engines_without_torsion(tmp_path):
+    (tmp_path / "six.toml").write_text(INLINE6 + TORSION6)
+    (tmp_path / "plain.toml").write_text(INLINE6.replace('name = "test in-line 6"',
+                                                         'name = "plain six"'))
+    result = run("torsion", tmp_path, "--speeds", "2000", "--format", "json")
+    assert result.exit_code == 0, result.output
+    assert [e["name"] for e in json.loads(result.stdout)["engines"]] == ["test in-line 6"]
+    assert "plain.toml: no [torsion] table; passed over" in result.stderr
+    (tmp_path / "six.toml").unlink()
+    result = run("torsion", tmp_path)
+    assert result.exit_code == 1 and "none of these engines has a [torsion] table" in result.output
