@@ -546,5 +546,10 @@ def test_cli_folder_passes_over_engines_without_torsion(tmp_path):
     assert [e["name"] for e in json.loads(result.stdout)["engines"]] == ["test in-line 6"]
     assert "plain.toml: no [torsion] table; passed over" in result.stderr
     (tmp_path / "six.toml").unlink()
+    # one engine alone is analysed or refused by name
+    result = run("torsion", tmp_path)
+    assert result.exit_code == 1 and "plain.toml: engine 'plain six' has no [torsion] table" \
+        in result.output
+    (tmp_path / "other.toml").write_text(INLINE6)
     result = run("torsion", tmp_path)
     assert result.exit_code == 1 and "none of these engines has a [torsion] table" in result.output
