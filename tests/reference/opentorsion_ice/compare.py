@@ -51,3 +51,34 @@ def response(speeds_rpm, max_order=12):
     frequencies = [m.frequency_hz for m in result.modes]
     return ({k: np.array(v) for k, v in peak.items()},
             {k: np.array(v) for k, v in summed.items()}, frequencies)
+
+
+def draw(path):
+    """The comparison as a picture: balance's torque (orders summed, and the synthesised
+    waveform's peak) beside the measurements of Fig. 31 and 32."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    speeds = np.arange(1000.0, 2551.0, 10.0)
+    peak, summed, frequencies = response(speeds)
+    fig = Figure(figsize=(10, 4.2), layout="constrained")
+    for ax, figure, name in zip(fig.subplots(1, 2), (31, 32), (FIG31, FIG32)):
+        x, y = measured(figure)
+        ax.plot(x, y, "k.", markersize=4, label=f"measured (Fig. {figure})")
+        ax.plot(speeds, summed[name], "C3", label="balance + openTorsion, orders summed")
+        ax.plot(speeds, peak[name], "C0--", linewidth=1.0, label="the same, waveform peak")
+        ax.set(title=f"{name} (Fig. {figure})", xlabel="Engine speed (rpm)",
+               ylabel="Vibratory torque (N·m)")
+        ax.legend(fontsize=8)
+    fig.suptitle("Mendes et al. (2008): first mode "
+                 f"{frequencies[0]:.1f} Hz, its 6th order at {frequencies[0] * 10:.0f} rpm",
+                 fontsize=10)
+    fig.savefig(path, dpi=110)
+
+
+if __name__ == "__main__":
+    import sys
+
+    draw(sys.argv[1] if len(sys.argv) > 1 else "docs/torsion-mendes2008.png")
