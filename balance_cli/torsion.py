@@ -14,6 +14,7 @@ The steady response to a torque Re(U·e^{ikΩt}) is Re(Q·e^{ikΩt}), (K − (k�
 a section's vibratory torque is k·(Q_left − Q_right).
 """
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -63,12 +64,33 @@ def _torsion_model(engine):
     if engine.is_rotary:
         raise AnalysisError("is a rotary: its crankshaft does not turn", "engine")
     n = len(engine.throws)
+    _check_values(model)
     if len(model.stiffness_nm_rad) != n - 1 or len(model.throw_damping_nms_rad) != n or (
             model.throw_inertia_kgm2 is not None and len(model.throw_inertia_kgm2) != n):
         raise AnalysisError(f"its [torsion] table must give one inertia and damping per throw "
                             f"({n}) and one stiffness per section between throws ({n - 1})",
                             "engine")
     return model
+
+
+def _check_values(model):
+    """A model built in code is checked as the configuration's reader checks a file's."""
+    disks = list(model.front) + [d for d in (model.flywheel, model.load) if d is not None]
+    groups = [("throw_inertia_kgm2", model.throw_inertia_kgm2 or (), False),
+              ("web_inertia_kgm2", (model.web_inertia_kgm2,), True),
+              ("stiffness_nm_rad", model.stiffness_nm_rad, False),
+              ("throw_damping_nms_rad", model.throw_damping_nms_rad, True),
+              ("loss_factor", (model.loss_factor,), True),
+              ("front, flywheel and load inertias", [d.inertia_kgm2 for d in disks], False),
+              ("front, flywheel and load stiffnesses", [d.stiffness_nm_rad for d in disks], False),
+              ("front, flywheel and load damping", [d.damping_nms_rad for d in disks], True)]
+    for name, values, zero_ok in groups:
+        for value in values:
+            if not (isinstance(value, (int, float, np.floating)) and math.isfinite(value)
+                    and (value >= 0 if zero_ok else value > 0)):
+                raise AnalysisError(f"of the [torsion] model must be finite and "
+                                    f"{'not negative' if zero_ok else 'above zero'}, got "
+                                    f"{value!r}", name)
 
 
 def throw_inertias(engine, samples=DEFAULT_SAMPLES) -> np.ndarray:
@@ -81,11 +103,19 @@ def throw_inertias(engine, samples=DEFAULT_SAMPLES) -> np.ndarray:
     model = _torsion_model(engine)
     if model.throw_inertia_kgm2 is not None:
         return np.array(model.throw_inertia_kgm2, dtype=float)
+    state = linkage_state(engine, engine_angles(samples))
+    masses, rods = state.masses, state.rods
     out = []
     for index in range(len(engine.throws)):
-        state = linkage_state(engine, engine_angles(samples), throw=index)
-        mu, _ = _reduced_mass_and_momentum(engine, state, None)
-        # the shaft's own inertia is already in the webs the user gives
+        # the rows riding on this throw: μ is a sum over the parts
+        own = dataclasses.replace(masses, **{
+            name: getattr(masses, name)[masses.throw == index]
+            for name in ("positions", "masses_kg", "z_m", "cylinder", "throw")})
+        own_rods = dataclasses.replace(rods, **{
+            name: getattr(rods, name)[rods.throw == index]
+            for name in ("directions", "corrections_kgm2", "cylinder", "throw")})
+        mu, _ = _reduced_mass_and_momentum(engine, state._replace(masses=own, rods=own_rods))
+        # the shaft's own inertia is the user's, in the webs
         out.append(float(np.mean(mu.real)) - engine.shaft_inertia_kgm2 + model.web_inertia_kgm2)
     return np.array(out)
 

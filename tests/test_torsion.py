@@ -553,3 +553,21 @@ def test_cli_folder_passes_over_engines_without_torsion(tmp_path):
     (tmp_path / "other.toml").write_text(INLINE6)
     result = run("torsion", tmp_path)
     assert result.exit_code == 1 and "none of these engines has a [torsion] table" in result.output
+
+
+def test_library_model_checked():
+    """A TorsionModel built in code is refused by name when a value is impossible."""
+    import dataclasses
+
+    engine = balance.loads(INLINE6 + TORSION6)
+    for field, value, name in (
+            ("stiffness_nm_rad", (1e6, -1e6, 1e6, 1e6, 1e6), "stiffness_nm_rad"),
+            ("loss_factor", math.nan, "loss_factor"),
+            ("throw_inertia_kgm2", (0.05,) * 5 + (0.0,), "throw_inertia_kgm2")):
+        bad = engine.replace(torsion=dataclasses.replace(engine.torsion, **{field: value}))
+        with pytest.raises(AnalysisError) as caught:
+            torsion(bad, [1000.0])
+        assert caught.value.parameter == name
+    short = engine.replace(torsion=dataclasses.replace(engine.torsion, stiffness_nm_rad=(1e6,)))
+    with pytest.raises(AnalysisError, match="one stiffness per section"):
+        torsion(short, [1000.0])
