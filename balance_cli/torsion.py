@@ -262,6 +262,8 @@ class TorsionResult:
     with_gas : bool
         whether the excitation has a gas torque ([gas] table or a pressure curve), or the
         inertia torque alone
+    free_end_order_deg : ndarray or None
+        the free end's amplitude of each order, degrees, by speed × order
     """
 
     engine: Engine
@@ -278,6 +280,16 @@ class TorsionResult:
     free_end_deg: np.ndarray
     stress_pa: np.ndarray | None
     with_gas: bool = False
+    free_end_order_deg: np.ndarray | None = None
+
+    def near(self, speed_rpm) -> tuple:
+        """The criticals this speed of the sweep stands for (a resonance marked): those nearer
+        to it than to any other speed of the sweep."""
+        speeds = np.sort(self.speeds_rpm)
+        i = int(np.searchsorted(speeds, speed_rpm))
+        low = (speeds[i - 1] + speed_rpm) / 2 if i > 0 else -math.inf
+        high = (speeds[i + 1] + speed_rpm) / 2 if i + 1 < len(speeds) else math.inf
+        return tuple(c for c in self.criticals if low <= c.speed_rpm < high)
 
     def largest(self):
         """Per section: (name, largest torque N·m, at speed rpm, stress Pa or None)."""
@@ -304,7 +316,12 @@ class TorsionResult:
                         for n, t, v, s in self.largest()],
             "response": [{
                 "speed_rpm": float(v),
+                "criticals": [{"mode": c.mode, "order": c.order} for c in self.near(v)],
                 "free_end_deg": float(self.free_end_deg[i]),
+                "free_end_orders": ([] if self.free_end_order_deg is None else
+                                    [{"order": float(k),
+                                      "amplitude_deg": float(self.free_end_order_deg[i, o])}
+                                     for o, k in enumerate(self.orders)]),
                 "sections": [{"section": name, "torque_Nm": float(self.torque_nm[i, s]),
                               "stress_Pa": (None if self.stress_pa is None
                                             else float(self.stress_pa[i, s])),
@@ -380,8 +397,9 @@ def torsion(engine, speeds_rpm=DEFAULT_SPEEDS_RPM, max_order=DEFAULT_MAX_ORDER,
                 criticals.append(Critical(i, float(k), rpm, sums[float(k)], major[float(k)]))
     criticals.sort(key=lambda c: c.speed_rpm)
 
-    order_torque, peak, free_end = _response(engine, assembly, line, model.loss_factor, orders,
-                                             gas, inertia, speeds)
+    order_torque, peak, free_end, free_orders = _response(engine, assembly, line,
+                                                          model.loss_factor, orders, gas,
+                                                          inertia, speeds)
     stress = None
     if model.shaft_diameter_m is not None:
         d, b = model.shaft_diameter_m, model.shaft_bore_m
@@ -390,7 +408,7 @@ def torsion(engine, speeds_rpm=DEFAULT_SPEEDS_RPM, max_order=DEFAULT_MAX_ORDER,
     sections = tuple(f"{a}–{b}" for a, b in zip(line.names, line.names[1:]))
     return TorsionResult(engine, line.names, sections, line.inertia, line.stiffness,
                          tuple(modes), tuple(criticals), orders, speeds, order_torque, peak,
-                         free_end, stress, bool(np.any(gas)))
+                         free_end, stress, bool(np.any(gas)), free_orders)
 
 
 def _firing_deg(engine):
@@ -438,7 +456,7 @@ def _response(engine, assembly, line, loss_factor, orders, gas, inertia, speeds)
 
     peak = wave_peak(torques).T                                       # speed × section
     free = np.degrees(wave_peak(q[0]))
-    return amplitude, peak, free
+    return amplitude, peak, free, np.degrees(np.abs(q[0]))
 
 
 def first_mode_amplitudes(engine, samples=DEFAULT_SAMPLES) -> np.ndarray:

@@ -276,6 +276,9 @@ def test_single_degree_of_freedom_response():
             expected = abs(ks * u / (ks - j * w**2 + 1j * c * w))
             assert_allclose(result.order_torque_nm[i, 0, o], expected, rtol=1e-6,
                             atol=1e-9 * abs(u))
+            # the throw is the free end: its angle is the section's torque over k
+            assert_allclose(result.free_end_order_deg[i, o], math.degrees(expected / ks),
+                            rtol=1e-6, atol=1e-9 * abs(u) / ks)
     # the natural frequency √(k/J) (the flywheel a wall to 1e-9)
     assert_allclose(result.modes[0].frequency_hz, math.sqrt(ks / j) / (2 * math.pi), rtol=1e-8)
 
@@ -571,3 +574,17 @@ def test_library_model_checked():
     short = engine.replace(torsion=dataclasses.replace(engine.torsion, stiffness_nm_rad=(1e6,)))
     with pytest.raises(AnalysisError, match="one stiffness per section"):
         torsion(short, [1000.0])
+
+
+def test_resonances_marked_at_the_nearest_speed():
+    """A critical belongs to the sweep's speed nearest it: the 6th order of the Mendes six's
+    first mode (216.6 Hz·60/6 ≈ 2166 rpm, between 2150 and 2200) to 2150 rpm only."""
+    engine = balance.load(
+        balance_root() / "tests" / "reference" / "opentorsion_ice" / "mendes2008.toml")
+    result = torsion(engine, [2100.0, 2150.0, 2200.0], 12)
+    (critical,) = [c for c in result.criticals if c.order == 6]
+    assert 2150 < critical.speed_rpm < 2175
+    assert critical in result.near(2150.0)
+    assert critical not in result.near(2100.0) + result.near(2200.0)
+    entry = result.to_dict()["response"][1]
+    assert {"mode": 1, "order": 6.0} in entry["criticals"]

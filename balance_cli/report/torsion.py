@@ -52,10 +52,13 @@ def torsion_tables(results, fmt):
                 render(["Speed (rpm)", "Mode", "Order", "Kind", "Phase-vector sum"], rows, fmt)
                 if rows else "none", ""]
         rows = [[name, figure(t), f"{v:g}"] + ([] if s is None else [figure(s / 1e6)])
+                + [", ".join(f"{c.order:g}/{c.mode}" for c in r.near(v)) or "-"]
                 for name, t, v, s in r.largest()]
         stress = [] if r.stress_pa is None else ["τ (MPa)"]
-        out += ["Largest vibratory torque per section (peak of all orders together):", "",
-                render(["Section", "Torque (N·m)", "at (rpm)"] + stress, rows, fmt), "",
+        out += ["Largest vibratory torque per section (peak of all orders together; the "
+                "criticals, order/mode, that speed of the sweep stands for):", "",
+                render(["Section", "Torque (N·m)", "at (rpm)"] + stress + ["Critical"], rows,
+                       fmt), "",
                 f"Free end: largest angular amplitude {figure(r.free_end_deg.max())}° at "
                 f"{r.speeds_rpm[int(np.argmax(r.free_end_deg))]:g} rpm.", ""]
     return "\n".join(out)
