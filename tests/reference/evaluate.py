@@ -282,8 +282,8 @@ def _torsion_response(speeds):
 def _torsion(form, figure, speeds_rpm):
     """``torsion resonance 31``: the speed of the largest vibratory torque (the orders'
     amplitudes summed, as openTorsion's example sets it beside the measurement) in the
-    section of the paper's Fig. 31 (flywheel–6th cylinder) or 32 (pulley–gear train) among ``speeds_rpm``;
-    ``torsion torque 31``: that largest torque (one speed: the torque there), N·m."""
+    section of the paper's Fig. 31 (flywheel–6th cylinder) or 32 (pulley–gear train) among
+    ``speeds_rpm``; ``torsion torque 31``: that largest torque (one speed: the torque there), N·m."""
     compare, summed, _ = _torsion_response(tuple(float(v) for v in speeds_rpm))
     values = summed[compare.FIG31 if figure == 31 else compare.FIG32]
     if form == "resonance":
