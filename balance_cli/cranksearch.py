@@ -206,7 +206,8 @@ def _check_terms(terms, max_order):
         if not isinstance(term, Term):
             raise AnalysisError(f"must be a string such as 'M1,M2' or Terms, got {term!r}",
                                 "objective")
-        if (term.kind not in ("F", "M", "H", "X", "V", "TV") or (term.kind == "TV" and term.order != 1)
+        if (term.kind not in ("F", "M", "H", "X", "V", "TV")
+                or (term.kind == "TV" and term.order != 1)
                 or term.part not in (("max",) if term.kind in _SCALAR_KINDS else
                                      ("max", "forward", "backward"))
                 or isinstance(term.order, bool) or not isinstance(term.order, (int, np.integer))

@@ -27,8 +27,9 @@ from .model import Engine
 from .shaking import DEFAULT_SAMPLES
 from .units import rad_s_to_rpm
 
-__all__ = ["require_opentorsion", "first_mode_amplitudes", "TorsionUnavailable", "Mode", "Critical", "TorsionResult", "torsion", "throw_inertias",
-           "phase_vector_sum", "natural_frequencies", "DEFAULT_SPEEDS_RPM", "DEFAULT_MAX_ORDER"]
+__all__ = ["require_opentorsion", "first_mode_amplitudes", "TorsionUnavailable", "Mode",
+           "Critical", "TorsionResult", "torsion", "throw_inertias", "phase_vector_sum",
+           "natural_frequencies", "DEFAULT_SPEEDS_RPM", "DEFAULT_MAX_ORDER"]
 
 #: 600 to 2400 rpm in steps of 25
 DEFAULT_SPEEDS_RPM = tuple(np.arange(600.0, 2400.0 + 1e-9, 25.0))
