@@ -64,6 +64,17 @@ from .errors import SweepError  # noqa: E402
 __all__ += ["CounterweightMass", "BalancerMass", "BalancerShaftSpec"]
 from .model import BalancerMass, BalancerShaftSpec, CounterweightMass  # noqa: E402
 
+# torsional vibration (openTorsion, an optional extra) on first use too; not named "torsion",
+# which is its module's name
+_LAZY.update({"torsional_vibration": (".torsion", "torsion"),
+              "TorsionResult": (".torsion", "TorsionResult"),
+              "TorsionUnavailable": (".torsion", "TorsionUnavailable"),
+              "cylinder_torques": (".torques", "cylinder_torques"),
+              "CylinderTorque": (".torques", "CylinderTorque"),
+              "TorsionModel": (".model", "TorsionModel"), "ShaftDisk": (".model", "ShaftDisk")})
+__all__ += ["torsional_vibration", "TorsionResult", "TorsionUnavailable", "cylinder_torques",
+            "CylinderTorque", "TorsionModel", "ShaftDisk"]
+
 
 def __getattr__(name):
     # balance.plot imports matplotlib, which the commands that do not draw never load

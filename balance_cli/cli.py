@@ -16,7 +16,7 @@ import click
 import numpy as np
 
 from . import __version__
-from .analysis import analyse, compare as comparison_of
+from .analysis import DOCUMENT_VERSION, analyse, compare as comparison_of
 from .config import as_built_toml, find_configs, load, load_data
 from .counterweight import Balances, check_options, counterweights
 from .errors import (BalanceError, ConfigError, FiringError, ModelError, OutputError,
@@ -647,9 +647,20 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
             family_table = family(load_data(family_path), str(family_path),
                                   _counts_option(family_cylinders), samples=samples,
                                   max_order=max_order)
+    torsion = None
+    if any(r.engine.torsion is not None for r in results):
+        from .torsion import TorsionUnavailable, require_opentorsion, torsion as torsion_of
+
+        try:
+            require_opentorsion()
+        except TorsionUnavailable as exc:
+            torsion = f"Not computed: {exc}."
+        else:
+            torsion = _run_each([r.engine for r in results if r.engine.torsion is not None],
+                                "Torsion", torsion_of)
     with _reported(), _drawing():
         written = write_report(target, comparison, balances, star_order, with_html, torques,
-                               Scale.of(False, units), family_table)
+                               Scale.of(False, units), family_table, torsion)
     for path in written:
         click.echo(f"wrote {path}", err=True)
 
@@ -736,6 +747,104 @@ def torque(paths, pressure, bore, inertia, target, load, samples, max_order, uni
         text = torque_csv(results, scale)
     else:
         text = torque_tables(results, scale, fmt)
+    _write(output, text)
+
+
+def _speeds_option(text):
+    """--speeds FROM:TO:STEP (rpm, both ends included) or a comma-separated list."""
+    try:
+        if ":" in text:
+            start, stop, step = (float(t) for t in text.split(":"))
+            if not step > 0 or not 0 < start <= stop:
+                raise ValueError
+            count = int(np.floor((stop - start) / step + 1e-9)) + 1
+            if count > 100000:
+                raise ValueError
+            return start + step * np.arange(count)
+        values = np.array([float(t) for t in text.split(",")])
+        if not np.all(np.isfinite(values)) or np.any(values <= 0):
+            raise ValueError
+        return values
+    except ValueError:
+        raise click.BadParameter(f"expected FROM:TO:STEP in rpm (0 < FROM <= TO, STEP > 0, at "
+                                 f"most 100000 speeds) such as 600:2400:25, or a list such as "
+                                 f"1000,1500, got {text!r}", param_hint="--speeds") from None
+
+
+@main.command()
+@_INPUTS
+@click.option("--speeds", default="600:2400:25", show_default=True, metavar="FROM:TO:STEP",
+              help="Engine speeds of the forced response, rpm: a range with its step (both ends "
+                   "included) or a comma-separated list.")
+@click.option("--max-order", default=12, show_default=True, type=click.IntRange(1, 64),
+              help="Highest order of the excitation (half orders too for a four-stroke).")
+@_SAMPLES
+@click.option("--format", "fmt", type=click.Choice(["table", "markdown", "csv", "json"]),
+              default="table", show_default=True, help="Output format.")
+@_OUTPUT
+@click.option("--plot", "plot_dir", default=None, metavar="DIR",
+              help="Also draw, per engine, NAME-campbell.png (Campbell diagram with the "
+                   "criticals), NAME-modes.png (mode shapes) and NAME-torque.png (vibratory "
+                   "torque against speed per section) into DIR; NAME is the file's stem.")
+def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir):
+    """Torsional vibration of the crankshaft (needs openTorsion: pip install
+    'balance[torsion]'): natural frequencies and mode shapes of the [torsion] model, the
+    phase-vector sums of the firing order, the criticals within --speeds, and the vibratory
+    torque (and shear stress, with a shaft diameter) in every section against speed.
+
+    The excitation is each cylinder's exact gas ([gas] table) and inertia torque, order by
+    order, at its throw: the gas torque the same at every speed, the inertia torque growing
+    as the speed squared.
+    """
+    from .torsion import require_opentorsion, torsion as torsion_of
+
+    with _reported():
+        require_opentorsion()   # before any work, and not tied to one file
+    speeds_rpm = _speeds_option(speeds)
+    files = _inputs(paths)
+    _guard([output], files)
+    _settings(samples, max_order)
+    engines = _load_all(files)
+    if len(engines) > 1:
+        # a folder holds engines without a shaft line: those are passed over, by name
+        without = [e for e in engines if e.torsion is None]
+        for engine in without:
+            click.echo(f"note: {engine.config_path}: no [torsion] table; passed over", err=True)
+        engines = [e for e in engines if e.torsion is not None]
+        if not engines:
+            raise click.ClickException("none of these engines has a [torsion] table (the "
+                                       "shaft line's inertias and stiffnesses); see the README, "
+                                       "Torsional vibration")
+        files = [Path(e.config_path) for e in engines]
+    results = _run_each(engines, "Torsion", lambda e: torsion_of(e, speeds_rpm, max_order,
+                                                                 samples))
+    from .report.torsion import torsion_csv, torsion_tables
+
+    if fmt == "json":
+        text = to_json({"balance_version": DOCUMENT_VERSION, "max_order": max_order,
+                        "engines": [r.to_dict() for r in results]})
+    elif fmt == "csv":
+        text = torsion_csv(results)
+    else:
+        text = torsion_tables(results, fmt)
+    if plot_dir is not None:
+        _use_agg()
+        from .report import torsion as pictures
+
+        def fill(folder):
+            names = []
+            for file, result in zip(files, results):
+                for kind, draw in (("campbell", pictures.campbell), ("modes", pictures.mode_shapes),
+                                   ("torque", pictures.torque_speed)):
+                    name = f"{Path(file).stem}-{kind}.png"
+                    draw(result).savefig(folder / name, dpi=120)
+                    names.append(name)
+            return names
+
+        with _reported(), _drawing():
+            written = write_folder(plot_dir, fill)
+        for path in written:
+            click.echo(f"wrote {path}", err=True)
     _write(output, text)
 
 

@@ -21,7 +21,7 @@ from . import checks
 from .errors import ConfigError, ModelError, UnitError
 from .kinematics import check_assembly
 from .model import (FRAMES, MAX_SHAFT_RATIO, BalancerMass, BalancerShaftSpec, CounterweightMass,
-                    Crankshaft, Cylinder, Engine, GasCycle, Parts, Throw)
+                    Crankshaft, Cylinder, Engine, GasCycle, Parts, ShaftDisk, Throw, TorsionModel)
 from .units import parse_quantity
 
 __all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template", "load_data",
@@ -30,13 +30,16 @@ __all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template
 _TOP_KEYS = {
     "name", "source", "cycle", "speed", "crank_radius", "rod_length", "pin_offset", "frame",
     "firing_order", "vertical", "power", "masses", "parts", "gas", "banks", "throws", "links", "cylinders",
-    "crankshafts", "counterweights", "shafts",
+    "crankshafts", "counterweights", "shafts", "torsion",
 }
 _MASS_KEYS = {"reciprocating", "rotating", "knuckle", "crank"}
 _PART_KEYS = {"piston", "rod_mass", "rod_cg", "rod_inertia", "link_mass", "link_cg", "link_inertia",
               "crank", "crankshaft_inertia", "flywheel_inertia"}
 _GAS_KEYS = {"bore", "compression_ratio", "imep", "intake_pressure", "crankcase_pressure",
              "polytropic_exponent", "combustion_start", "combustion_duration", "wiebe_a", "wiebe_m"}
+_TORSION_KEYS = {"throw_inertia", "web_inertia", "stiffness", "throw_damping", "loss_factor",
+                 "shaft_diameter", "shaft_bore", "front", "flywheel", "load"}
+_DISK_KEYS = {"name", "inertia", "stiffness", "damping"}
 _BANK_KEYS = {"angle", "pin_offset"}
 _THROW_KEYS = {"phase", "z", "crankshaft"}
 _CRANKSHAFT_KEYS = {"x", "y", "direction", "phase"}
@@ -371,6 +374,8 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
                                 parts.crankshaft_inertia_kgm2 + parts.flywheel_inertia_kgm2),
             crankshafts=tuple(crankshafts),
             counterweights=weights, balancer_shafts=shafts,
+            torsion=(_read_torsion(_Reader(path, data["torsion"], "torsion.", _TORSION_KEYS),
+                                   len(throws)) if top.has("torsion") else None),
         )
         check_assembly(engine)
     except ModelError as exc:
@@ -573,6 +578,82 @@ def _read_gas(reader):
         wiebe_a=reader.real("wiebe_a", required=False, default=5.0, low=0.1, high=20.0),
         wiebe_m=reader.real("wiebe_m", required=False, default=2.0, low=0.0, high=10.0),
     )
+
+
+def _per_throw(reader, key, dimension, count, sign="positive", required=True):
+    """One value for every one of ``count`` items, or a list of exactly ``count`` values."""
+    raw = reader.table.get(key)
+    if raw is None:
+        if required:
+            raise reader.error(key, "missing; this key is required")
+        return None
+    if not isinstance(raw, list):
+        return (reader.quantity(key, dimension, sign=sign),) * count
+    if len(raw) != count:
+        raise reader.error(key, f"has {len(raw)} values but needs {count} (or one value for all)")
+    out = []
+    for i, text in enumerate(raw, 1):
+        item = _Reader(reader.path, {f"{key}[{i}]": text}, reader.prefix, {f"{key}[{i}]"})
+        out.append(item.quantity(f"{key}[{i}]", dimension, sign=sign))
+    return tuple(out)
+
+
+def _read_disk(reader, default_name):
+    return ShaftDisk(
+        name=reader.string("name", required=False, default=default_name),
+        inertia_kgm2=reader.quantity("inertia", "moment of inertia"),
+        stiffness_nm_rad=reader.quantity("stiffness", "torsional stiffness"),
+        damping_nms_rad=reader.quantity("damping", "torsional damping", required=False,
+                                        default=0.0, sign="non-negative"))
+
+
+def _read_torsion(reader, n_throws):
+    """The [torsion] table: the crankshaft's inertias, stiffnesses and damping, free end
+    first (see :class:`balance_cli.model.TorsionModel`)."""
+    if reader.has("throw_inertia") and reader.has("web_inertia"):
+        raise reader.error("web_inertia", "give throw_inertia (each throw's whole inertia) or "
+                                          "web_inertia (added to the reduced mass), not both")
+    if not reader.has("throw_inertia") and not reader.has("web_inertia"):
+        raise reader.error("throw_inertia", "missing; give throw_inertia (e.g. \"0.05 kg*m^2\", "
+                                            "or one per throw) or web_inertia")
+    stiffness = ()
+    if n_throws > 1:
+        stiffness = _per_throw(reader, "stiffness", "torsional stiffness", n_throws - 1)
+    elif reader.has("stiffness"):
+        raise reader.error("stiffness", "a single throw has no sections between throws; "
+                                        "remove stiffness")
+    diameter = reader.quantity("shaft_diameter", "length", required=False)
+    bore = reader.quantity("shaft_bore", "length", required=False, default=0.0,
+                           sign="non-negative")
+    if bore and diameter is None:
+        raise reader.error("shaft_bore", "needs shaft_diameter too")
+    if diameter is not None and bore >= diameter:
+        raise reader.error("shaft_bore", f"must be smaller than shaft_diameter, got "
+                                         f"{reader.table['shaft_bore']!r}")
+    front = []
+    if reader.has("front"):
+        for i, table in enumerate(reader.tables("front"), 1):
+            front.append(_read_disk(_Reader(reader.path, table, f"torsion.front[{i}].",
+                                            _DISK_KEYS), f"front {i}"))
+    ends = {}
+    for key in ("flywheel", "load"):
+        if reader.has(key):
+            ends[key] = _read_disk(_Reader(reader.path, reader.table[key], f"torsion.{key}.",
+                                           _DISK_KEYS), key)
+    if "load" in ends and "flywheel" not in ends:
+        raise reader.error("load", "needs a [torsion.flywheel] to hang on (the load is "
+                                   "joined to the flywheel)")
+    return TorsionModel(
+        throw_inertia_kgm2=_per_throw(reader, "throw_inertia", "moment of inertia", n_throws,
+                                      required=False),
+        web_inertia_kgm2=reader.quantity("web_inertia", "moment of inertia", required=False,
+                                         default=0.0, sign="non-negative"),
+        stiffness_nm_rad=stiffness,
+        throw_damping_nms_rad=_per_throw(reader, "throw_damping", "torsional damping", n_throws,
+                                         sign="non-negative", required=False) or (0.0,) * n_throws,
+        loss_factor=reader.real("loss_factor", required=False, default=0.0, low=0.0, high=2.0),
+        front=tuple(front), flywheel=ends.get("flywheel"), load=ends.get("load"),
+        shaft_diameter_m=diameter, shaft_bore_m=bore)
 
 
 def _translated(path, exc, cylinder_keys):

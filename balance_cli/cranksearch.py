@@ -92,8 +92,10 @@ MAX_WORKERS = 1024
 _COUNT_WORK = 10_000_000
 #: a block of (prefix × suffix × channel) values evaluated at once
 _BLOCK = 1 << 21
-_TERM = re.compile(r"^\s*([FMHX])(\d+)([+-]?)\s*(?::\s*(.+?))?\s*$")
-_HALF_ORDER = re.compile(r"^\s*[FMHX]\s*\d*\.\d*")
+_TERM = re.compile(r"^\s*(TV|[FMHXV])(\d+)([+-]?)\s*(?::\s*(.+?))?\s*$")
+_HALF_ORDER = re.compile(r"^\s*[FMHXV]\s*\d*\.\d*")
+#: the kinds that are one real quantity per order, with no forward or backward part
+_SCALAR_KINDS = ("H", "X", "V", "TV")
 
 
 # --- objective ------------------------------------------------------------------------
@@ -102,9 +104,11 @@ _HALF_ORDER = re.compile(r"^\s*[FMHX]\s*\d*\.\d*")
 class Term:
     """One part of the objective: ``weight`` × the coefficient ``name``.
 
-    ``kind`` "F" (force), "M" (moment), "H" (H-type guide-force moment) or "X" (X-type);
+    ``kind`` "F" (force), "M" (moment), "H" (H-type guide-force moment), "X" (X-type) or
+    "V" (the first torsional mode's phase-vector sum, :mod:`balance_cli.torsion`) or "TV"
+    (order 1 only: the first mode's largest V over the minor orders, see :func:`search`);
     ``part`` "max" (the order's largest value, |X⁺| + |X⁻|), "forward" (|X⁺|) or "backward"
-    (|X⁻|); H and X are torques about one axis, "max" only (their amplitude).
+    (|X⁻|); H, X and V are one real quantity per order, "max" only (their amplitude).
     """
 
     kind: str
@@ -151,17 +155,21 @@ def parse_objective(text: str | None, max_order: int = DEFAULT_MAX_ORDER) -> tup
                                 "fires in, not on the crank alone)", "objective")
         if not match:
             raise AnalysisError(f"term {item.strip()!r} is not a coefficient such as F2, M1, F1+, "
-                                "H4 or F2:4 (F force, M moment, H and X the H- and X-type "
-                                "guide-force moments, the order, + forward or - backward part "
-                                "only, :weight)", "objective")
+                                "H4, V3 or F2:4 (F force, M moment, H and X the H- and X-type "
+                                "guide-force moments, V the first torsional mode's phase-vector "
+                                "sum, the order, + forward or - backward part only, :weight)",
+                                "objective")
         kind, order, sign, weight_text = match.groups()
-        if kind in "HX" and sign:
-            raise AnalysisError(f"term {item.strip()!r}: a guide-force moment is a torque about "
-                                f"one axis, with no forward or backward part; write {kind}{order}",
+        if kind in _SCALAR_KINDS and sign:
+            raise AnalysisError(f"term {item.strip()!r}: {kind} is one quantity per order, "
+                                f"with no forward or backward part; write {kind}{order}",
                                 "objective")
         order = int(order)
         if order < 1:
             raise AnalysisError(f"term {item.strip()!r}: orders start at 1", "objective")
+        if kind == "TV" and order != 1:
+            raise AnalysisError(f"term {item.strip()!r}: TV1 (the first torsional mode) is the "
+                                "one TV term; name single orders of it with V terms", "objective")
         if order > max_order:
             raise AnalysisError(f"term {item.strip()!r} asks for order {order}, but orders 1 to "
                                 f"{max_order} are analysed; set max_order to {order} or drop the "
@@ -198,13 +206,15 @@ def _check_terms(terms, max_order):
         if not isinstance(term, Term):
             raise AnalysisError(f"must be a string such as 'M1,M2' or Terms, got {term!r}",
                                 "objective")
-        if (term.kind not in ("F", "M", "H", "X")
-                or term.part not in (("max",) if term.kind in ("H", "X") else
+        if (term.kind not in ("F", "M", "H", "X", "V", "TV")
+                or (term.kind == "TV" and term.order != 1)
+                or term.part not in (("max",) if term.kind in _SCALAR_KINDS else
                                      ("max", "forward", "backward"))
                 or isinstance(term.order, bool) or not isinstance(term.order, (int, np.integer))
                 or not 1 <= term.order <= max_order):
             raise AnalysisError(f"term {term!r} must be F or M, of an order from 1 to {max_order}, "
-                                "part max, forward or backward, or H or X, part max", "objective")
+                                "part max, forward or backward, or H, X or V, part max, or TV1",
+                                "objective")
         if not _weight_ok(term.weight):
             raise AnalysisError(f"term {term.name}: the weight must be a positive number from "
                                 f"{WEIGHT_RANGE[0]:g} to {WEIGHT_RANGE[1]:g}, got {term.weight!r}",
@@ -385,10 +395,11 @@ class _Problem:
     capacity: int                 # cylinders per lattice point (0: uneven, no constraint)
     offsets: list                 # per throw: lattice offsets e_c of its cylinders
     rotated: np.ndarray           # (n_throws, P, C) complex: channel phasor at each phase index
-    weights: np.ndarray           # (C,) score = Σ weights·|channel sum|
+    weights: np.ndarray           # (C,) score = Σ weights·|channel sum| (+ the TV1 part)
     reversal: bool
     mirror: bool
     split: int                    # prefix throws are 1..split−1 (0-based: 1..split-1)
+    largest: Any = None           # (C,) TV1: score += max over channels of largest·|sum|
     # filled by _build_tables
     prefix_rows: Any = None     # (n_pref, split−1) phase indices
     prefix_group: Any = None    # (n_pref,) group index
@@ -396,6 +407,14 @@ class _Problem:
     suffix_rows: Any = None     # per group: (n_suf, n − split) rows
     suffix_key: Any = None      # per group: mirror key (sorted), or None
     suffix_leader: Any = None   # per group: suffix ≤ its reversal
+
+    def score(self, magnitudes):
+        """The score of channel magnitudes |sum| (..., C): the weighted sum, plus a TV1
+        term's largest scaled magnitude."""
+        out = magnitudes @ self.weights
+        if self.largest is not None:
+            out = out + (magnitudes * self.largest).max(axis=-1)
+        return out
 
     def crank(self, prefix, suffix):
         return (0,) + tuple(int(p) for p in prefix) + tuple(int(p) for p in suffix)
@@ -451,6 +470,36 @@ def _guide_phasors(template, samples, max_order):
     return out
 
 
+def _torsion_phasors(template, samples, max_order):
+    """Per throw and order, the first torsional mode's phasor (kind 6): β_j·Σ_c e^{−ik·γ_c}
+    over the throw's cylinders (γ_c their banks), β_j the mode's amplitude at the throw. A
+    cylinder fires at θ = γ_c − β_throw (a whole order does not see which revolution), so
+    turning the throw by β turns the phasor by e^{ikβ} like a forward force phasor, and the
+    sum's modulus is the phase-vector sum |Σ_c β·e^{ik·φ_c}|. Also the unit of each order:
+    Σ_c |β| (every cylinder in phase)."""
+    from .torsion import first_mode_amplitudes
+
+    beta = first_mode_amplitudes(template, samples)
+    orders = np.arange(1, max_order + 1)
+    out = np.zeros((1, len(template.throws), max_order), complex)
+    for cylinder in template.cylinders:
+        gamma = template.bank_angles_rad[cylinder.bank]
+        out[0, cylinder.throw] += beta[cylinder.throw] * np.exp(-1j * orders * gamma)
+    unit = sum(abs(beta[c.throw]) for c in template.cylinders)
+    return out, np.full(max_order, unit)
+
+
+def _minor_orders(template, allow_uneven, max_order):
+    """The whole orders 1..max_order a TV1 term takes the largest V of: for an even-firing
+    search all but the major orders, where the firing angles, equally spaced, put every
+    cylinder in phase whatever the arrangement (k times the interval a multiple of 360°)."""
+    if allow_uneven:
+        return tuple(range(1, max_order + 1))
+    interval = template.cycle_deg / template.n_cylinders
+    return tuple(k for k in range(1, max_order + 1)
+                 if abs(math.remainder(k * interval, 360.0)) > 1e-9)
+
+
 def _couple_units(guide, floor):
     """The order-k couple amplitude of one throw alone, N·m (0 below the noise floor: the two
     cylinders of a 90° V throw cancel at order 2 to rounding, and a unit of 1e-10 made a
@@ -474,25 +523,36 @@ def _pitch(template):
     return pitch
 
 
-def _channels(objective, units, pitch, couple_units=None):
-    """The complex sums the score needs, (kind 0..5, order index), and their weights, divided
-    by the largest term weight (the search compares scores of order one; see SCORE_TIE)."""
+def _channels(objective, units, pitch, couple_units=None, torsion_units=None, tv_orders=()):
+    """The complex sums the score needs, (kind 0..6, order index), and their weights, divided
+    by the largest term weight (the search compares scores of order one; see SCORE_TIE); and
+    for a TV1 term, which of them it takes the largest of (a mask) with their scales."""
     weights = {}
     largest = max(term.weight for term in objective)
+    tv = {}
     for term in objective:
+        if term.kind == "TV":
+            for order in tv_orders:
+                if torsion_units[order - 1] > 0.0:
+                    weights.setdefault((6, order - 1), 0.0)
+                    tv[(6, order - 1)] = term.weight / largest / torsion_units[order - 1]
+            continue
         k = term.order - 1
-        unit = couple_units[k] if term.kind in ("H", "X") else units[k]
+        unit = (couple_units[k] if term.kind in ("H", "X") else
+                torsion_units[k] if term.kind == "V" else units[k])
         if unit == 0.0:
             continue
         scale = term.weight / largest / unit / (pitch if term.kind in ("M", "X") else 1.0)
-        first = {"F": 0, "M": 2, "H": 4, "X": 5}[term.kind]
+        first = {"F": 0, "M": 2, "H": 4, "X": 5, "V": 6}[term.kind]
         parts = {"max": (0, 1), "forward": (0,), "backward": (1,)}[term.part]
-        if term.kind in ("H", "X"):
+        if term.kind in _SCALAR_KINDS:
             parts = (0,)   # a real torque: its forward phasor alone carries the amplitude
         for p in parts:
             key = (first + p, k)
             weights[key] = weights.get(key, 0.0) + scale
-    return sorted(weights), np.array([weights[c] for c in sorted(weights)])
+    keys = sorted(weights)
+    return (keys, np.array([weights[c] for c in keys]),
+            np.array([tv.get(c, 0.0) for c in keys]))
 
 
 def _lattice(template, allow_uneven, step_deg):
@@ -812,7 +872,9 @@ def _evaluate(problem, units, top, threshold=math.inf, shared=None):
             Qs = Q[start:]
             leader = problem.suffix_leader[g][start:]
             mine = np.flatnonzero(second == v)
-            bound = (w * np.clip(np.abs(Pm[mine]) - Qmax, 0.0, None)).sum(axis=1)
+            # each channel's |sum| is at least |prefix| − the largest |suffix|; the largest of
+            # such lower bounds bounds the largest (TV1) as the sum bounds the sum
+            bound = problem.score(np.clip(np.abs(Pm[mine]) - Qmax, 0.0, None))
             ok = bound <= pool.threshold + SCORE_TIE
             pruned += int((~ok).sum()) * len(Qs)
             for tie in (False, True):
@@ -825,7 +887,7 @@ def _evaluate(problem, units, top, threshold=math.inf, shared=None):
                 for a in range(0, len(sel), step):
                     block = sel[a:a + step]
                     S = Pm[block][:, None, :] + Qt[None, :, :]
-                    score = np.sqrt(S.real ** 2 + S.imag ** 2) @ w
+                    score = problem.score(np.sqrt(S.real ** 2 + S.imag ** 2))
                     evaluated += score.size
                     hits = np.argwhere(score <= pool.threshold + SCORE_TIE)
                     if len(hits) > 4 * (top + 64):
@@ -968,7 +1030,7 @@ def _score_cranks(problem, cranks):
     S = np.zeros((len(cranks), problem.rotated.shape[2]), complex)
     for j in range(problem.n_throws):
         S += problem.rotated[j, cranks[:, j]]
-    return np.abs(S) @ problem.weights
+    return problem.score(np.abs(S))
 
 
 def _random_crank(problem, rng):
@@ -1243,12 +1305,25 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     phasors = _throw_phasors(flat, samples, max_order)
     units = _units(phasors, flat.noise_floor_n)
     pitch = _pitch(flat)
-    couple_units = None
+    couple_units = torsion_units = None
     if any(term.kind in ("H", "X") for term in terms):
         guide = _guide_phasors(flat, samples, max_order)
         couple_units = _couple_units(guide, flat.noise_floor_n * flat.crank_radius_m)
         phasors = np.concatenate([phasors, guide])
-    channels, weights = _channels(terms, units, pitch, couple_units)
+    tv_orders = ()
+    if any(term.kind in ("V", "TV") for term in terms):
+        if flat.torsion is None:
+            raise AnalysisError("has no [torsion] table: a V term needs the shaft line's first "
+                                "mode", "template")
+        if couple_units is None:
+            phasors = np.concatenate([phasors, np.zeros((2,) + phasors.shape[1:], complex)])
+        torsional, torsion_units = _torsion_phasors(flat, samples, max_order)
+        # the same scale as the forces', so that the symmetry checks' floor reads alike
+        phasors = np.concatenate([phasors, torsional * units.max()])
+        torsion_units = torsion_units * units.max()
+        tv_orders = _minor_orders(flat, allow_uneven, max_order)
+    channels, weights, largest = _channels(terms, units, pitch, couple_units, torsion_units,
+                                           tv_orders)
     P, s, capacity, base, offsets = _lattice(flat, allow_uneven, step_deg)
     reversal, shift = _check_reversal(phasors, offsets, base, P, flat.noise_floor_n)
     mirror = _check_mirror(phasors, offsets, base, flat.noise_floor_n)
@@ -1259,7 +1334,8 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         rotated[:, :, i] = phasors[kind, :, k][:, None] * np.exp(
             1j * sign * (k + 1) * np.radians(phase))
     split = 1 + (n - 1) // 2
-    problem = _Problem(n, P, s, base, capacity, offsets, rotated, weights, reversal, False, split)
+    problem = _Problem(n, P, s, base, capacity, offsets, rotated, weights, reversal, False, split,
+                       largest=largest if np.any(largest) else None)
     # the mirror condition reads throws n−1 and n from the suffix
     problem.mirror = mirror and n - 2 >= split
     symmetries = ["turning the whole crank (throw 1 at 0°)"]
@@ -1303,7 +1379,7 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         cut = orbits[top - 1][0]
         orbits = [o for o in orbits if o[0] <= cut + SCORE_TIE]
     arrangements = _final(template, flat, problem, orbits, shift, terms, top, samples,
-                          max_order, units, pitch, tick, couple_units)
+                          max_order, units, pitch, tick, couple_units, tv_orders)
     total = (total_cranks or 0) * firing_per_crank
     distinct = _distinct(flat, problem, total, shift) if reversal else total
     return SearchResult(
@@ -1386,7 +1462,7 @@ def _distinct(flat, problem, total, shift):
 
 
 def _final(template, flat, problem, orbits, shift, terms, top, samples, max_order, units, pitch,
-           tick=None, couple_units=None):
+           tick=None, couple_units=None, tv_orders=()):
     """The listed arrangements: expanded to firing orders and mirror images, analysed exactly
     as ``compare`` would, ranked by score and then firing order."""
     members = _expand(flat, problem, orbits, shift)
@@ -1408,7 +1484,7 @@ def _final(template, flat, problem, orbits, shift, terms, top, samples, max_orde
         result = analyse(engine, samples, max_order)
         if tick:
             tick(1)
-        values = _coefficients_of(result, units, pitch, terms, couple_units)
+        values = _coefficients_of(result, units, pitch, terms, couple_units, tv_orders)
         score = float(sum(t.weight * values[t.name] for t in terms))
         suffix = f", arrangement {rank}"
         name = template.name[:MAX_NAME_LENGTH - len(suffix)].rstrip() + suffix
@@ -1432,7 +1508,7 @@ def _reversal_class(problem, crank):
     return min(crank, tuple((-p) % problem.lattice for p in crank))
 
 
-def _coefficients_of(result, units, pitch, terms, couple_units=None):
+def _coefficients_of(result, units, pitch, terms, couple_units=None, tv_orders=()):
     """Every F_k, M_k by name (and the forward/backward parts and H_k, X_k the objective
     names)."""
     orders = result.shaking.orders
@@ -1450,6 +1526,22 @@ def _coefficients_of(result, units, pitch, terms, couple_units=None):
     for t in terms:
         if t.part != "max":
             values[t.name] = float(c[t.kind][1 if t.part == "forward" else 2][t.order - 1])
+    if any(t.kind in ("V", "TV") for t in terms):
+        # the arrangement's own firing angles and first mode, as balance torsion sums them
+        from .torques import _firing_angles_deg
+        from .torsion import first_mode_amplitudes, phase_vector_sum
+
+        beta = first_mode_amplitudes(engine, result.samples)
+        fire = _firing_angles_deg(engine, result.firing)
+        amplitudes = [beta[c.throw] for c in engine.cylinders]
+        angles = [fire[c.number] for c in engine.cylinders]
+        unit = sum(abs(b) for b in amplitudes)
+        for t in terms:
+            if t.kind == "V":
+                values[t.name] = abs(phase_vector_sum(amplitudes, angles, t.order)) / unit
+            if t.kind == "TV":
+                values[t.name] = max((abs(phase_vector_sum(amplitudes, angles, k)) / unit
+                                      for k in tv_orders), default=0.0)
     if couple_units is not None and any(t.kind in ("H", "X") for t in terms):
         # the arrangement's own torques, not the template's phasors turned: a second method
         guide = torque(result.engine, result.samples, len(orders), bearings=False).guide

@@ -684,3 +684,79 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
                         series(tilting), series(-total + np.tile(tilting, turns), tile=False), gas,
                         series(total, tile=False), tuple(pin_results), main, max_order, speed,
                         flywheel, guide, shafts)
+
+
+@dataclass(frozen=True)
+class CylinderTorque:
+    """One cylinder's own tangential torque on its throw, at the engine's speed.
+
+    ``inertia`` is what its piston, rod (and link) exert, −½·ω²·dμ_c/dθ with μ_c the reduced
+    mass of its parts alone (the crank pins' masses turn at a constant radius and exert none);
+    ``gas`` its gas pressure's, −(p − p_crankcase)·A·ds/dθ (None without a pressure). Both
+    against θ, the crank angle of throw 1, so its firing phase is in them; the engine's total
+    torque is their sum over the cylinders.
+    """
+
+    number: int
+    throw: int
+    inertia: Series
+    gas: Series | None
+
+
+def cylinder_torques(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER,
+                     pressure=None, bore_m=None) -> tuple:
+    """Every cylinder's own inertia and gas torque (:class:`CylinderTorque`, in cylinder
+    order), from the same linkage, reduced mass and gas pieces as :func:`torque`.
+
+    ``pressure`` and ``bore_m`` as in :func:`torque` (default the engine's [gas] cycle, if
+    any). An engine of one crankshaft only (AnalysisError otherwise).
+    """
+    instance(engine, Engine, "engine", hint=" (balance.load gives one)")
+    check_settings(samples, max_order)
+    check_assembly(engine)
+    if engine.has_several_crankshafts or any(c.is_opposed for c in engine.cylinders):
+        raise AnalysisError("has several crankshafts or opposed pistons; a cylinder's torque "
+                            "on one throw is given for one crankshaft only", "engine")
+    if pressure is not None:
+        instance(pressure, PressureCurve, "pressure", hint=" (balance.read_pressure_csv gives one)")
+        bore_m = bore_m if bore_m is not None else (engine.gas.bore_m if engine.gas else None)
+        if bore_m is None:
+            raise AnalysisError("is missing for the pressure curve: give the bore, or a [gas] "
+                                "table with one", "bore_m")
+        bore_m = positive(bore_m, "bore_m", "length")
+    elif engine.gas is not None:
+        bore_m = engine.gas.bore_m
+    omega = engine.speed_rad_s
+    angles = engine_angles(samples)
+    state = linkage_state(engine, angles)
+    turns = int(round(engine.cycle_deg / 360.0))
+    floor = NOISE_FLOOR * _torque_unit(engine)
+    masses, rods = state.masses, state.rods
+    net, rates, area = {}, {}, 0.0
+    if bore_m is not None:
+        area = math.pi * bore_m**2 / 4
+        fire = _firing_angles_deg(engine, firing_sequence(engine))
+        net = _net_pressures(engine, engine_angles(samples * turns) * turns, fire,
+                             _pressure_curves(engine, fire, pressure))
+        rates = _travel_rates(engine, angles)
+    out = []
+    for cylinder in engine.cylinders:
+        n = cylinder.number
+        # only this cylinder's rows: μ is a sum over the parts, so the parts' torques add up
+        own = dataclasses.replace(masses, **{
+            name: getattr(masses, name)[masses.cylinder == n]
+            for name in ("positions", "masses_kg", "z_m", "cylinder", "throw")})
+        own_rods = dataclasses.replace(rods, **{
+            name: getattr(rods, name)[rods.cylinder == n]
+            for name in ("directions", "corrections_kgm2", "cylinder", "throw")})
+        # the shaft's constant inertia in μ has no derivative: no torque of its own
+        mu, _ = _reduced_mass_and_momentum(engine, state._replace(masses=own, rods=own_rods))
+        inertia = np.tile(-0.5 * omega**2 * periodic_derivative(mu).real, turns)
+        gas = None
+        if net:
+            gas = Series.from_curve(-net[n] * area * np.tile(rates[n], turns), engine.cycle_deg,
+                                    max_order, floor)
+        out.append(CylinderTorque(n, cylinder.throw + 1,
+                                  Series.from_curve(inertia, engine.cycle_deg, max_order, floor),
+                                  gas))
+    return tuple(out)

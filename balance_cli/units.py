@@ -46,6 +46,9 @@ DIMENSIONS = {
     # machines and drawings give it
     "unbalance": {"kg*m": 1.0, "kg*cm": 1e-2, "kg*mm": 1e-3, "g*m": 1e-3, "g*cm": 1e-5,
                   "g*mm": 1e-6, "lb*in": 0.45359237 * 0.0254, "oz*in": 0.45359237 / 16 * 0.0254},
+    # a crankshaft section's twist stiffness and a damper's or a throw's viscous damping
+    "torsional stiffness": {"N*m/rad": 1.0, "kN*m/rad": 1e3, "MN*m/rad": 1e6},
+    "torsional damping": {"N*m*s/rad": 1.0, "kN*m*s/rad": 1e3},
 }
 
 #: one choice of display units: force unit -> (N per force unit, moment unit, N·m per moment
@@ -72,6 +75,8 @@ LIMITS = {
     "power": (1e-3, 1e10, "kW", 1e3),
     # the product of the mass and length limits
     "unbalance": (1e-12, 1e9, "kg*m", 1.0),
+    "torsional stiffness": (1e-3, 1e13, "N*m/rad", 1.0),
+    "torsional damping": (1e-9, 1e12, "N*m*s/rad", 1.0),
 }
 
 # ASCII digits only; any unit word, so that an unknown one is reported as a unit
@@ -79,7 +84,8 @@ _QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\s
                        re.ASCII)
 _EXAMPLES = {"length": "82.5 mm", "mass": "1770.4 g", "angular speed": "1650 rpm",
              "moment of inertia": "0.12 kg*m^2", "pressure": "45 bar", "torque": "850 N*m", "power": "21 MW",
-             "unbalance": "0.072 kg*m"}
+             "unbalance": "0.072 kg*m",
+             "torsional stiffness": "1.25e6 N*m/rad", "torsional damping": "2 N*m*s/rad"}
 
 
 def _units_of(dimension):
@@ -211,7 +217,9 @@ def _article(word):
 
 
 def _plural(dimension):
-    return {"moment of inertia": "moments of inertia", "power": "powers"}.get(dimension,
+    return {"moment of inertia": "moments of inertia", "power": "powers",
+            "torsional stiffness": "torsional stiffnesses",
+            "torsional damping": "torsional damping coefficients"}.get(dimension,
                                                                               dimension + "s")
 
 

@@ -212,7 +212,8 @@ def test_schema_covers_every_key_of_the_configuration_format():
               "shafts[]": config_module._SHAFT_KEYS}
     text_or_tables = {"name", "source", "frame", "firing_order", "masses", "parts", "gas",
                       "banks", "throws", "links", "cylinders", "crankshafts", "counterweights",
-                      "shafts"}
+                      "shafts",
+                      "torsion"}   # the shaft line's table: read by balance torsion, not swept
     # a shaft's [[shafts.masses]] are tables within its table: not swept
     nested = {"": text_or_tables, "shafts[]": {"masses"}}
     for table, keys in tables.items():

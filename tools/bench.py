@@ -15,6 +15,9 @@ ratio of the medians is what counts, so the machine's speed cancels out.
   and the ratio of the rates is the search's speed-up
 - ``balance family configs/marine-6-2stroke.toml --cylinders 5-12``: the project-guide table,
   every row searched exhaustively (target: under a minute on two cores)
+- ``balance.torsion`` of a six-throw model (tests/reference/opentorsion_ice/mendes2008.toml
+  with a [gas] cycle): modes and the forced response at 100 speeds, orders ½ to 12, in one
+  process (target: well under a second; at most 0.5 s)
 """
 
 import compileall
@@ -117,6 +120,36 @@ def family_bench():
     return verdict != "ok"
 
 
+def torsion_bench():
+    """A six-throw model's full torsional sweep, timed in this process (median of 5)."""
+    try:
+        import opentorsion  # noqa: F401
+    except ImportError:
+        print("torsion: openTorsion is not installed (pip install 'balance[torsion]'): skipped\n")
+        return False
+    import numpy as np
+
+    import balance_cli as balance
+    from balance_cli.torsion import torsion
+
+    text = (ROOT / "tests/reference/opentorsion_ice/mendes2008.toml").read_text(encoding="utf-8")
+    engine = balance.loads(text + '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\n'
+                                  'imep = "15 bar"\n', "mendes2008 with [gas]")
+    speeds = np.linspace(600.0, 2400.0, 100)
+    torsion(engine, speeds, 12)
+    times = []
+    for _ in range(5):
+        start = time.perf_counter()
+        torsion(engine, speeds, 12)
+        times.append(time.perf_counter() - start)
+    wall = statistics.median(times)
+    verdict = "ok" if wall <= 0.5 else "TOO SLOW"
+    print(f"{wall * 1000:8.1f} ms  median of 5  balance.torsion, six throws, 100 speeds, orders "
+          f"1/2 to 12")
+    print(f"torsional sweep in {wall:.3f} s (target at most 0.5 s): {verdict}\n")
+    return verdict != "ok"
+
+
 def main():
     # byte-compile balance first, as installing numpy compiled numpy: with
     # PYTHONDONTWRITEBYTECODE set (as on this project's machines) every run would otherwise
@@ -140,6 +173,7 @@ def main():
             failed |= ratio > target
     failed |= search_bench()
     failed |= family_bench()
+    failed |= torsion_bench()
     return 1 if failed else 0
 
 

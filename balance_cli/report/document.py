@@ -7,7 +7,7 @@ caption)``.
 
 from .. import __version__
 from ..units import rad_s_to_rpm
-from .display import Scale
+from .display import Scale, figure
 from .tables import balance_summary, compare_parts, family_parts, torque_summary
 
 __all__ = ["PICTURES", "blocks"]
@@ -34,7 +34,7 @@ PICTURES = [
 ]
 
 
-def blocks(comparison, balances, star_order, torques, scale=None, family=None):
+def blocks(comparison, balances, star_order, torques, scale=None, family=None, torsion=None):
     """The report: engines, comparison tables, counterweights, torques (the
     :class:`~balance_cli.torques.TorqueResult` of each engine), pictures; forces per cylinder,
     moments and torques in ``scale``'s units (default N·m)."""
@@ -86,6 +86,8 @@ def blocks(comparison, balances, star_order, torques, scale=None, family=None):
     out.append(("p", "Reduced mass μ of the moving parts (their kinetic energy is ½·μ·ω²), over "
                      "a revolution:"))
     out.append(("table", mass_headers, mass_rows))
+    if torsion:
+        out += _torsion_blocks(torsion)
     if family is not None:
         title, headers, rows, note = family_parts(family, Scale.of(True, scale.units))
         out += [("h", 2, "Engine family"), ("table", ["Family"], [[title]]),
@@ -93,4 +95,37 @@ def blocks(comparison, balances, star_order, torques, scale=None, family=None):
     out.append(("h", 2, "Pictures"))
     for file, _, title, caption in PICTURES:
         out.append(("figure", file, title.format(star=star_order), caption.format(star=star_order)))
+    return out
+
+
+def _torsion_blocks(torsion):
+    """The torsion section: per engine with a [torsion] table, its first modes, the major
+    criticals in the speed range and the largest vibratory torque per section (a note
+    instead when openTorsion is missing)."""
+    out = [("h", 2, "Torsional vibration")]
+    if isinstance(torsion, str):
+        return out + [("p", torsion)]
+    out.append(("p", "Engines with a [torsion] table: natural frequencies of the shaft line, "
+                     "the criticals of major orders in the speed range, and each section's "
+                     "largest vibratory torque, all orders together (`balance torsion` for the "
+                     "phase-vector sums, every order and the pictures)."))
+    for r in torsion:
+        low, high = r.speeds_rpm.min(), r.speeds_rpm.max()
+        out.append(("h", 3, r.engine.name))
+        if not r.with_gas:
+            out.append(("p", "Excited by the inertia torque alone: the configuration has no "
+                             "[gas] table."))
+        out.append(("table", ["Mode", "f (Hz)", "f (1/min)"],
+                    [[str(m.number), figure(m.frequency_hz), figure(60 * m.frequency_hz)]
+                     for m in r.modes[:4]]))
+        majors = [c for c in r.criticals if c.major]
+        out.append(("p", f"Criticals of major orders from {low:g} to {high:g} rpm: "
+                         + (", ".join(f"order {c.order:g} of mode {c.mode} at "
+                                      f"{c.speed_rpm:.0f} rpm" for c in majors) or "none")
+                         + "."))
+        stress = r.stress_pa is not None
+        out.append(("table", ["Section", "Torque (N·m)", "at (rpm)"]
+                    + (["τ (MPa)"] if stress else []),
+                    [[name, figure(t), f"{v:g}"] + ([figure(s / 1e6)] if stress else [])
+                     for name, t, v, s in r.largest()]))
     return out

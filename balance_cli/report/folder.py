@@ -12,11 +12,13 @@ REPORT_FILES = [file for file, *_ in PICTURES] + ["report.md", "report.html"]
 
 
 def write_report(target, comparison, balances, star_order, with_html, torques, scale=None,
-                 family=None):
+                 family=None, torsion=None):
     """Write the report of ``comparison`` (and its ``balances`` and ``torques``, one of each per
     engine) into the folder ``target``, its moments and torques in ``scale``'s units (a
     :class:`~balance_cli.report.display.Scale`, default N·m); nothing is left behind if any part
-    fails; ``family`` a :class:`~balance_cli.families.FamilyResult` for a section of its own.
+    fails; ``family`` a :class:`~balance_cli.families.FamilyResult` for a section of its own;
+    ``torsion`` the :class:`~balance_cli.torsion.TorsionResult` of the engines with a
+    [torsion] table (or a one-line note, a string, when openTorsion is missing).
     Returns the paths written."""
     results = comparison.results
     figures = {
@@ -32,7 +34,7 @@ def write_report(target, comparison, balances, star_order, with_html, torques, s
         for file, kind, _, _ in PICTURES:
             plot.save(figures[kind](), folder / file)
             names.append(file)
-        content = blocks(comparison, balances, star_order, torques, scale, family)
+        content = blocks(comparison, balances, star_order, torques, scale, family, torsion)
         write_text(folder / "report.md", markdown(content))
         names.append("report.md")
         if with_html:

@@ -269,6 +269,8 @@ def _quantity(record, frames):
         return _series_check(words[1], record)
     if kind == "pru":
         return _pru(record, words[1], int(words[2]))
+    if kind == "torsion":
+        return _torsion(words[1], int(words[2]), record.get("speeds_rpm"))
     raise ValueError(f"{record['id']}: unknown quantity {record['quantity']!r}")
 
 
@@ -284,6 +286,29 @@ def _lead(engine, number):
     own = link.opposed[number][1]
     first = link.travel[number] - own
     return (math.degrees(theta[np.argmax(own)] - theta[np.argmax(first)])) % 360.0
+
+
+@lru_cache(maxsize=None)
+def _torsion_response(speeds):
+    import sys
+
+    sys.path.insert(0, str(HERE / "opentorsion_ice"))
+    import compare
+
+    peak, summed, frequencies = compare.response(np.array(speeds))
+    return compare, summed, frequencies
+
+
+def _torsion(form, figure, speeds_rpm):
+    """``torsion resonance 31``: the speed of the largest vibratory torque (the orders'
+    amplitudes summed, as openTorsion's example sets it beside the measurement) in the
+    section of the paper's Fig. 31 (flywheel–6th cylinder) or 32 (pulley–gear train) among
+    ``speeds_rpm``; ``torsion torque 31``: that largest torque (one speed: the torque there), N·m."""
+    compare, summed, _ = _torsion_response(tuple(float(v) for v in speeds_rpm))
+    values = summed[compare.FIG31 if figure == 31 else compare.FIG32]
+    if form == "resonance":
+        return float(speeds_rpm[int(np.argmax(values))])
+    return float(values.max())
 
 
 def _pru(record, part, k):

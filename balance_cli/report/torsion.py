@@ -1,0 +1,154 @@
+"""``balance torsion`` as text, Markdown and CSV, and its pictures (Campbell diagram, mode
+shapes, vibratory torque against speed)."""
+
+import csv
+import io
+
+import numpy as np
+
+from ..units import significant
+from .display import figure, markdown_text, plain_text
+from .tables import render
+
+__all__ = ["torsion_tables", "torsion_csv", "campbell", "mode_shapes", "torque_speed"]
+
+#: phase-vector sums below this are shown as 0 (rounding of a sum that cancels)
+_ZERO_SUM = 1e-9
+
+
+def _sum_text(value):
+    return "0" if value < _ZERO_SUM else significant(value, 3)
+
+
+def torsion_tables(results, fmt):
+    """Modes, phase-vector sums, criticals in the speed range and the largest vibratory
+    torque per section, engine by engine."""
+    heading = "#### " if fmt == "markdown" else ""
+    safe = markdown_text if fmt == "markdown" else plain_text
+    out = []
+    for r in results:
+        low, high = r.speeds_rpm.min(), r.speeds_rpm.max()
+        out += [f"{heading}{safe(r.engine.name)}: torsional vibration, {low:g} to {high:g} rpm", "",
+                "Excitation: each cylinder's " + ("gas and inertia torque" if r.with_gas else
+                                                  "inertia torque alone (no [gas] table)")
+                + ", orders up to " + f"{r.orders.max():g}.", ""]
+        rows = [[name, figure(j)] for name, j in zip(r.nodes, r.inertia_kgm2)]
+        out += ["Shaft line, free end first:", "",
+                render(["Inertia", "J (kg·m²)"], rows, fmt), ""]
+        out += ["Natural modes (relative amplitudes, the largest throw amplitude 1):", "",
+                render(["Mode", "f (Hz)", "f (1/min)"] + list(r.nodes),
+                       [[str(m.number), figure(m.frequency_hz), figure(60 * m.frequency_hz)]
+                        + [f"{a:.3f}" for a in m.shape] for m in r.modes], fmt), ""]
+        orders = list(r.orders)
+        out += ["Phase-vector sums |Σ β·e^{ik·φ}| by order (β the throw's amplitude in the "
+                "mode, φ the cylinder's firing angle):", "",
+                render(["Order"] + [f"mode {m.number}" for m in r.modes],
+                       [[f"{k:g}"] + [_sum_text(m.phase_vector_sums[float(k)]) for m in r.modes]
+                        for k in orders], fmt), ""]
+        rows = [[f"{c.speed_rpm:.0f}", str(c.mode), f"{c.order:g}",
+                 "major" if c.major else "minor", _sum_text(c.phase_vector_sum)]
+                for c in r.criticals]
+        out += ["Criticals in the speed range (the order's frequency equals the mode's):", "",
+                render(["Speed (rpm)", "Mode", "Order", "Kind", "Phase-vector sum"], rows, fmt)
+                if rows else "none", ""]
+        rows = [[name, figure(t), f"{v:g}"] + ([] if s is None else [figure(s / 1e6)])
+                + [", ".join(f"{c.order:g}/{c.mode}" for c in r.near(v)) or "-"]
+                for name, t, v, s in r.largest()]
+        stress = [] if r.stress_pa is None else ["τ (MPa)"]
+        out += ["Largest vibratory torque per section (peak of all orders together; the "
+                "criticals, order/mode, that speed of the sweep stands for):", "",
+                render(["Section", "Torque (N·m)", "at (rpm)"] + stress + ["Critical"], rows,
+                       fmt), "",
+                f"Free end: largest angular amplitude {figure(r.free_end_deg.max())}° at "
+                f"{r.speeds_rpm[int(np.argmax(r.free_end_deg))]:g} rpm.", ""]
+    return "\n".join(out)
+
+
+def torsion_csv(results):
+    """The forced response in long form: engine, config, speed_rpm, section, order (``all``
+    for the synthesised waveform's peak), torque_Nm, stress_Pa (empty without a shaft
+    diameter), and the free end's amplitude (free_end_deg, on the ``all`` rows)."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(["engine", "config", "speed_rpm", "section", "order", "torque_Nm",
+                     "stress_Pa", "free_end_deg"])
+    for r in results:
+        for i, speed in enumerate(r.speeds_rpm):
+            for s, name in enumerate(r.sections):
+                stress = "" if r.stress_pa is None else repr(float(r.stress_pa[i, s]))
+                writer.writerow([r.engine.name, r.engine.config_path, repr(float(speed)), name,
+                                 "all", repr(float(r.torque_nm[i, s])), stress,
+                                 repr(float(r.free_end_deg[i]))])
+                for o, k in enumerate(r.orders):
+                    writer.writerow([r.engine.name, r.engine.config_path, repr(float(speed)), name,
+                                     repr(float(k)), repr(float(r.order_torque_nm[i, s, o])), "",
+                                     ""])
+    return buffer.getvalue()
+
+
+def _figure(fig, size):
+    if fig is None:
+        from matplotlib.figure import Figure
+
+        fig = Figure(figsize=size, layout="constrained")
+    return fig
+
+
+def campbell(result, fig=None):
+    """The Campbell diagram: each mode's frequency (horizontal lines) and each order's
+    frequency k·n against speed (rays), criticals in the speed range marked (filled: major
+    orders). Returns the Figure."""
+    fig = _figure(fig, (8, 5))
+    ax = fig.add_subplot()
+    speeds = np.array([0.0, result.speeds_rpm.max() * 1.05])
+    top = max(m.frequency_hz for m in result.modes[:2]) * 1.2
+    for k in result.orders:
+        ax.plot(speeds, k * speeds / 60.0, color="0.8", linewidth=0.6)
+        if k * speeds[-1] / 60.0 <= top:
+            ax.annotate(f"{k:g}", (speeds[-1], k * speeds[-1] / 60.0), fontsize=7)
+    for m in result.modes:
+        if m.frequency_hz <= top:
+            ax.axhline(m.frequency_hz, color="C0", linewidth=1.0)
+            ax.annotate(f"mode {m.number}: {m.frequency_hz:.4g} Hz", (0, m.frequency_hz),
+                        fontsize=8, va="bottom")
+    for c in result.criticals:
+        f = c.order * c.speed_rpm / 60.0
+        ax.plot(c.speed_rpm, f, "o", color="C3", markerfacecolor="C3" if c.major else "none",
+                markersize=5)
+    ax.axvspan(result.speeds_rpm.min(), result.speeds_rpm.max(), color="C2", alpha=0.07)
+    ax.set(xlim=(0, speeds[-1]), ylim=(0, top), xlabel="Engine speed (rpm)",
+           ylabel="Frequency (Hz)", title=f"{result.engine.name}: Campbell diagram")
+    return fig
+
+
+def mode_shapes(result, fig=None):
+    """Each mode's relative amplitude along the shaft line (the first three). Returns the
+    Figure."""
+    fig = _figure(fig, (8, 5))
+    ax = fig.add_subplot()
+    x = np.arange(len(result.nodes))
+    for m in result.modes[:3]:
+        ax.plot(x, m.shape, "o-", label=f"mode {m.number}, {m.frequency_hz:.4g} Hz")
+    ax.axhline(0.0, color="0.5", linewidth=0.6)
+    ax.set_xticks(x, result.nodes, rotation=45, ha="right", fontsize=8)
+    ax.set(ylabel="Relative amplitude", title=f"{result.engine.name}: mode shapes")
+    ax.legend(fontsize=8)
+    return fig
+
+
+def torque_speed(result, fig=None):
+    """Vibratory torque (peak of all orders together) against speed, one line per section,
+    criticals of major orders marked. Returns the Figure."""
+    fig = _figure(fig, (8, 5))
+    ax = fig.add_subplot()
+    for s, name in enumerate(result.sections):
+        ax.plot(result.speeds_rpm, result.torque_nm[:, s], label=name, linewidth=1.0)
+    for c in result.criticals:
+        if c.major:
+            ax.axvline(c.speed_rpm, color="0.6", linestyle=":", linewidth=0.8)
+            ax.annotate(f"{c.order:g}/{c.mode}", (c.speed_rpm, ax.get_ylim()[1]), fontsize=7,
+                        va="top")
+    ax.set(xlabel="Engine speed (rpm)", ylabel="Vibratory torque (N·m)",
+           title=f"{result.engine.name}: vibratory torque per section")
+    ax.legend(fontsize=7, ncol=2)
+    return fig

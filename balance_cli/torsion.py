@@ -1,0 +1,471 @@
+"""Torsional vibration of the crankshaft: modes, phase-vector sums and forced response.
+
+The shaft line and its solution are openTorsion's (Aalto University's library of disks and
+shafts: ``pip install 'balance[torsion]'``); balance supplies the engine's side: each throw's
+inertia (or the mean reduced mass of the parts on it), and the excitation, each cylinder's exact
+tangential torque order by order (:func:`balance_cli.torques.cylinder_torques`), which carries
+its firing phase because it is given against the crank angle of throw 1.
+
+The model, free end first: the ``front`` inertias (pulley, damper), the throws, the flywheel and
+the load, each joined to the next by a section of stiffness k (and damping c). At a speed Ω the
+order-k torque of a cylinder is G_k + (Ω/ω₀)²·I_k: the gas part is taken as the same cycle at
+every speed, the inertia part grows as the square of the speed (ω₀ the configuration's speed).
+The steady response to a torque Re(U·e^{ikΩt}) is Re(Q·e^{ikΩt}), (K − (kΩ)²M + ikΩC)·Q = U;
+a section's vibratory torque is k·(Q_left − Q_right).
+"""
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .checks import instance
+from .errors import AnalysisError, BalanceError
+from .firing import firing_sequence
+from .model import Engine
+from .shaking import DEFAULT_SAMPLES
+from .units import rad_s_to_rpm
+
+__all__ = ["require_opentorsion", "first_mode_amplitudes", "TorsionUnavailable", "Mode",
+           "Critical", "TorsionResult", "torsion", "throw_inertias", "phase_vector_sum",
+           "natural_frequencies", "DEFAULT_SPEEDS_RPM", "DEFAULT_MAX_ORDER"]
+
+#: 600 to 2400 rpm in steps of 25
+DEFAULT_SPEEDS_RPM = tuple(np.arange(600.0, 2400.0 + 1e-9, 25.0))
+#: the highest order applied; twelve cover the criticals of the usual first two modes
+DEFAULT_MAX_ORDER = 12
+#: a phase-vector sum within this fraction of the cylinders' number is a major order
+_MAJOR = 1e-6
+#: a natural frequency below this share of the highest is the shaft line turning as a whole
+_RIGID = 1e-6
+
+
+class TorsionUnavailable(BalanceError, ImportError):
+    """openTorsion is not installed."""
+
+
+def require_opentorsion():
+    """The openTorsion module; TorsionUnavailable (one line naming the extra) without it."""
+    try:
+        import opentorsion
+    except ImportError:
+        raise TorsionUnavailable("balance torsion needs openTorsion: pip install "
+                                 "'balance[torsion]'") from None
+    return opentorsion
+
+
+def _torsion_model(engine):
+    instance(engine, Engine, "engine", hint=" (balance.load gives one)")
+    model = engine.torsion
+    if model is None:
+        raise AnalysisError(f"{engine.name!r} has no [torsion] table: give its shaft line's "
+                            "inertias and stiffnesses (see the README, Torsional vibration)",
+                            "engine")
+    if engine.is_rotary:
+        raise AnalysisError("is a rotary: its crankshaft does not turn", "engine")
+    n = len(engine.throws)
+    _check_values(model)
+    if len(model.stiffness_nm_rad) != n - 1 or len(model.throw_damping_nms_rad) != n or (
+            model.throw_inertia_kgm2 is not None and len(model.throw_inertia_kgm2) != n):
+        raise AnalysisError(f"its [torsion] table must give one inertia and damping per throw "
+                            f"({n}) and one stiffness per section between throws ({n - 1})",
+                            "engine")
+    return model
+
+
+def _check_values(model):
+    """A model built in code is checked as the configuration's reader checks a file's."""
+    disks = list(model.front) + [d for d in (model.flywheel, model.load) if d is not None]
+    groups = [("throw_inertia_kgm2", model.throw_inertia_kgm2 or (), False),
+              ("web_inertia_kgm2", (model.web_inertia_kgm2,), True),
+              ("stiffness_nm_rad", model.stiffness_nm_rad, False),
+              ("throw_damping_nms_rad", model.throw_damping_nms_rad, True),
+              ("loss_factor", (model.loss_factor,), True),
+              ("front, flywheel and load inertias", [d.inertia_kgm2 for d in disks], False),
+              ("front, flywheel and load stiffnesses", [d.stiffness_nm_rad for d in disks], False),
+              ("front, flywheel and load damping", [d.damping_nms_rad for d in disks], True)]
+    for name, values, zero_ok in groups:
+        for value in values:
+            if not (isinstance(value, (int, float, np.floating)) and math.isfinite(value)
+                    and (value >= 0 if zero_ok else value > 0)):
+                raise AnalysisError(f"of the [torsion] model must be finite and "
+                                    f"{'not negative' if zero_ok else 'above zero'}, got "
+                                    f"{value!r}", name)
+
+
+def throw_inertias(engine, samples=DEFAULT_SAMPLES) -> np.ndarray:
+    """Each throw's inertia about the crank axis, kg·m²: the [torsion] table's
+    ``throw_inertia``, or the mean over a revolution of the reduced mass of the parts on the
+    throw (pistons, rods, pins: ½·μ_j·ω² their kinetic energy) plus ``web_inertia``."""
+    from .kinematics import engine_angles, linkage_state
+    from .torques import _reduced_mass_and_momentum
+
+    model = _torsion_model(engine)
+    if model.throw_inertia_kgm2 is not None:
+        return np.array(model.throw_inertia_kgm2, dtype=float)
+    state = linkage_state(engine, engine_angles(samples))
+    masses, rods = state.masses, state.rods
+    out = []
+    for index in range(len(engine.throws)):
+        # the rows riding on this throw: μ is a sum over the parts
+        own = dataclasses.replace(masses, **{
+            name: getattr(masses, name)[masses.throw == index]
+            for name in ("positions", "masses_kg", "z_m", "cylinder", "throw")})
+        own_rods = dataclasses.replace(rods, **{
+            name: getattr(rods, name)[rods.throw == index]
+            for name in ("directions", "corrections_kgm2", "cylinder", "throw")})
+        mu, _ = _reduced_mass_and_momentum(engine, state._replace(masses=own, rods=own_rods))
+        # the shaft's own inertia is the user's, in the webs
+        out.append(float(np.mean(mu.real)) - engine.shaft_inertia_kgm2 + model.web_inertia_kgm2)
+    return np.array(out)
+
+
+@dataclass(frozen=True)
+class _Line:
+    """The shaft line, free end first: names, inertias, section stiffnesses and damping."""
+
+    names: tuple
+    inertia: np.ndarray         # kg·m², per node
+    stiffness: np.ndarray       # N·m/rad, per section (node i to i + 1)
+    section_damping: np.ndarray  # N·m·s/rad, per section
+    node_damping: np.ndarray    # N·m·s/rad, per node
+    throw_nodes: tuple          # node of throw j (index j)
+
+
+def _line(engine, samples):
+    model = _torsion_model(engine)
+    names, inertia, stiffness, section_c, node_c = [], [], [], [], []
+    for disk in model.front:
+        names.append(disk.name)
+        inertia.append(disk.inertia_kgm2)
+        node_c.append(0.0)
+        # a front disk's section joins it to the next node aft
+        stiffness.append(disk.stiffness_nm_rad)
+        section_c.append(disk.damping_nms_rad)
+    throws = throw_inertias(engine, samples)
+    first = len(names)
+    for j, value in enumerate(throws):
+        names.append(f"throw {j + 1}")
+        inertia.append(value)
+        node_c.append(model.throw_damping_nms_rad[j])
+        if j < len(throws) - 1:
+            stiffness.append(model.stiffness_nm_rad[j])
+            section_c.append(0.0)
+    for disk in (model.flywheel, model.load):
+        if disk is not None:
+            names.append(disk.name)
+            inertia.append(disk.inertia_kgm2)
+            node_c.append(0.0)
+            stiffness.append(disk.stiffness_nm_rad)
+            section_c.append(disk.damping_nms_rad)
+    return _Line(tuple(names), np.array(inertia), np.array(stiffness), np.array(section_c),
+                 np.array(node_c), tuple(range(first, first + len(throws))))
+
+
+def _assembly(line):
+    """openTorsion's Assembly of ``line``: one Disk per node, one massless Shaft per section."""
+    ot = require_opentorsion()
+    disks = [ot.Disk(i, float(j), c=float(c)) for i, (j, c) in
+             enumerate(zip(line.inertia, line.node_damping))]
+    shafts = [ot.Shaft(i, i + 1, None, None, k=float(k), I=0.0, c=float(c))
+              for i, (k, c) in enumerate(zip(line.stiffness, line.section_damping))]
+    if not shafts:
+        raise AnalysisError("its shaft line has a single inertia: nothing can twist (give more "
+                            "throws, a front end or a flywheel)", "engine")
+    return ot.Assembly(shafts, disk_elements=disks)
+
+
+def natural_frequencies(assembly):
+    """Undamped natural frequencies (rad/s, ascending) and mode shapes (columns, real) of an
+    openTorsion ``assembly``, the rigid-body mode of a free shaft line left out."""
+    lam, vectors = assembly.undamped_modal_analysis()
+    omega = np.sqrt(np.abs(lam.real))
+    order = np.argsort(omega)
+    omega, vectors = omega[order], vectors[:, order].real
+    keep = omega > _RIGID * omega.max()
+    return omega[keep], vectors[:, keep]
+
+
+def phase_vector_sum(amplitudes, firing_deg, order) -> complex:
+    """Σ_c β_c·e^{ik·φ_c}: the phase-vector sum of order ``order`` (k) for cylinders firing at
+    crank angles ``firing_deg`` (φ_c, degrees) whose throws move with relative amplitudes
+    ``amplitudes`` (β_c) in a mode."""
+    beta = np.asarray(amplitudes, dtype=float)
+    phi = np.radians(np.asarray(firing_deg, dtype=float))
+    return complex(np.sum(beta * np.exp(1j * order * phi)))
+
+
+@dataclass(frozen=True)
+class Mode:
+    """One natural mode: its frequency, its shape over the shaft line (largest throw amplitude
+    +1) and its phase-vector sums by order."""
+
+    number: int
+    frequency_hz: float
+    shape: np.ndarray        # per node
+    throw_amplitudes: np.ndarray
+    phase_vector_sums: dict  # order -> |Σ β e^{ikφ}|
+
+    def to_dict(self, names) -> dict:
+        return {"mode": self.number, "frequency_Hz": self.frequency_hz,
+                "frequency_cpm": 60.0 * self.frequency_hz,
+                "shape": [{"node": name, "amplitude": float(a)}
+                          for name, a in zip(names, self.shape)],
+                "throw_amplitudes": [float(a) for a in self.throw_amplitudes],
+                "phase_vector_sums": [{"order": k, "sum": v}
+                                      for k, v in self.phase_vector_sums.items()]}
+
+
+@dataclass(frozen=True)
+class Critical:
+    """A mode's resonance with an order: at ``speed_rpm`` the order's frequency k·n equals
+    the mode's."""
+
+    mode: int
+    order: float
+    speed_rpm: float
+    phase_vector_sum: float
+    major: bool
+
+    def to_dict(self) -> dict:
+        return {"mode": self.mode, "order": self.order, "speed_rpm": self.speed_rpm,
+                "phase_vector_sum": self.phase_vector_sum, "major": self.major}
+
+
+@dataclass(frozen=True)
+class TorsionResult:
+    """Modes, criticals and forced response of one engine's crankshaft.
+
+    Attributes
+    ----------
+    engine : Engine
+    nodes : tuple of str
+        the shaft line's inertias, free end first
+    sections : tuple of str
+        "A–B" for each section between consecutive nodes
+    inertia_kgm2, stiffness_nm_rad : ndarray
+        per node, per section
+    modes : tuple of Mode
+    criticals : tuple of Critical
+        every mode and order whose resonance falls within the speeds
+    orders : ndarray
+        the orders applied (multiples of ½ for a four-stroke)
+    speeds_rpm : ndarray
+    order_torque_nm : ndarray
+        vibratory torque amplitude, N·m, by speed × section × order
+    torque_nm : ndarray
+        the synthesised waveform's peak |T| over the cycle, N·m, by speed × section
+    free_end_deg : ndarray
+        the free end's angular amplitude (peak of the synthesised waveform), degrees, by speed
+    stress_pa : ndarray or None
+        torque_nm as shear stress τ = T·r/J_p, Pa, with the [torsion] shaft diameter
+    with_gas : bool
+        whether the excitation has a gas torque ([gas] table or a pressure curve), or the
+        inertia torque alone
+    free_end_order_deg : ndarray or None
+        the free end's amplitude of each order, degrees, by speed × order
+    """
+
+    engine: Engine
+    nodes: tuple
+    sections: tuple
+    inertia_kgm2: np.ndarray
+    stiffness_nm_rad: np.ndarray
+    modes: tuple
+    criticals: tuple
+    orders: np.ndarray
+    speeds_rpm: np.ndarray
+    order_torque_nm: np.ndarray
+    torque_nm: np.ndarray
+    free_end_deg: np.ndarray
+    stress_pa: np.ndarray | None
+    with_gas: bool = False
+    free_end_order_deg: np.ndarray | None = None
+
+    def near(self, speed_rpm) -> tuple:
+        """The criticals this speed of the sweep stands for (a resonance marked): those nearer
+        to it than to any other speed of the sweep."""
+        speeds = np.sort(self.speeds_rpm)
+        i = int(np.searchsorted(speeds, speed_rpm))
+        low = (speeds[i - 1] + speed_rpm) / 2 if i > 0 else -math.inf
+        high = (speeds[i + 1] + speed_rpm) / 2 if i + 1 < len(speeds) else math.inf
+        return tuple(c for c in self.criticals if low <= c.speed_rpm < high)
+
+    def largest(self):
+        """Per section: (name, largest torque N·m, at speed rpm, stress Pa or None)."""
+        out = []
+        for s, name in enumerate(self.sections):
+            i = int(np.argmax(self.torque_nm[:, s]))
+            out.append((name, float(self.torque_nm[i, s]), float(self.speeds_rpm[i]),
+                        None if self.stress_pa is None else float(self.stress_pa[i, s])))
+        return out
+
+    def to_dict(self) -> dict:
+        """This engine's entry of ``torsion --format json`` (SI units; see the README)."""
+        engine = self.engine
+        return {
+            "name": engine.name, "config": engine.config_path, "cycle": engine.cycle,
+            "excitation": "gas and inertia" if self.with_gas else "inertia",
+            "nodes": [{"node": n, "inertia_kgm2": float(j)}
+                      for n, j in zip(self.nodes, self.inertia_kgm2)],
+            "sections": [{"section": n, "stiffness_Nm_per_rad": float(k)}
+                         for n, k in zip(self.sections, self.stiffness_nm_rad)],
+            "modes": [m.to_dict(self.nodes) for m in self.modes],
+            "criticals": [c.to_dict() for c in self.criticals],
+            "largest": [{"section": n, "torque_Nm": t, "speed_rpm": v, "stress_Pa": s}
+                        for n, t, v, s in self.largest()],
+            "response": [{
+                "speed_rpm": float(v),
+                "criticals": [{"mode": c.mode, "order": c.order} for c in self.near(v)],
+                "free_end_deg": float(self.free_end_deg[i]),
+                "free_end_orders": ([] if self.free_end_order_deg is None else
+                                    [{"order": float(k),
+                                      "amplitude_deg": float(self.free_end_order_deg[i, o])}
+                                     for o, k in enumerate(self.orders)]),
+                "sections": [{"section": name, "torque_Nm": float(self.torque_nm[i, s]),
+                              "stress_Pa": (None if self.stress_pa is None
+                                            else float(self.stress_pa[i, s])),
+                              "orders": [{"order": float(k),
+                                          "torque_Nm": float(self.order_torque_nm[i, s, o])}
+                                         for o, k in enumerate(self.orders)]}
+                             for s, name in enumerate(self.sections)]}
+                for i, v in enumerate(self.speeds_rpm)],
+        }
+
+
+def _excitation(engine, samples, max_order, pressure, bore_m):
+    """Per throw and order, the gas and inertia parts' complex amplitudes U (N·m; the torque
+    is Re(U·e^{ikθ}) = cos_k·cos kθ + sin_k·sin kθ, so U = cos_k − i·sin_k)."""
+    from .torques import cylinder_torques
+
+    cylinders = cylinder_torques(engine, samples, max_order, pressure, bore_m)
+    orders = np.array([k for k, _, _ in cylinders[0].inertia.orders])
+    n = len(engine.throws)
+    gas = np.zeros((n, len(orders)), dtype=complex)
+    inertia = np.zeros((n, len(orders)), dtype=complex)
+    for c in cylinders:
+        inertia[c.throw - 1] += [cos - 1j * sin for _, cos, sin in c.inertia.orders]
+        if c.gas is not None:
+            gas[c.throw - 1] += [cos - 1j * sin for _, cos, sin in c.gas.orders]
+    return orders, gas, inertia
+
+
+def torsion(engine, speeds_rpm=DEFAULT_SPEEDS_RPM, max_order=DEFAULT_MAX_ORDER,
+            samples=DEFAULT_SAMPLES, pressure=None, bore_m=None) -> TorsionResult:
+    """Modes, phase-vector sums, criticals and forced response of ``engine``'s [torsion]
+    model over ``speeds_rpm`` (rpm), for orders up to ``max_order`` (½ orders too for a
+    four-stroke).
+
+    Raises
+    ------
+    TorsionUnavailable
+        openTorsion is not installed
+    AnalysisError
+        no [torsion] table, a rotary, several crankshafts, bad speeds
+    """
+    require_opentorsion()
+    speeds = np.asarray(speeds_rpm, dtype=float).ravel()
+    if speeds.size == 0 or not np.all(np.isfinite(speeds)) or np.any(speeds <= 0):
+        raise AnalysisError("must be one or more speeds above zero, rpm", "speeds_rpm")
+    line = _line(engine, samples)
+    assembly = _assembly(line)
+    omega_n, vectors = natural_frequencies(assembly)
+    throw_nodes = list(line.throw_nodes)
+    model = engine.torsion
+
+    fire = _firing_deg(engine)
+    numbers = [c.number for c in engine.cylinders]
+    throw_of = [c.throw for c in engine.cylinders]
+    orders, gas, inertia = _excitation(engine, samples, max_order, pressure, bore_m)
+    n_cyl = len(numbers)
+    major = {float(k): abs(abs(phase_vector_sum(np.ones(n_cyl), [fire[m] for m in numbers], k))
+                           - n_cyl) < _MAJOR * n_cyl for k in orders}
+    modes, criticals = [], []
+    low, high = speeds.min(), speeds.max()
+    for i, (w, shape) in enumerate(zip(omega_n, vectors.T), 1):
+        at_throws = shape[throw_nodes]
+        biggest = int(np.argmax(np.abs(at_throws)))
+        scale = at_throws[biggest] if at_throws[biggest] else shape[np.argmax(np.abs(shape))]
+        shape = shape / scale
+        beta = shape[throw_nodes]
+        sums = {float(k): abs(phase_vector_sum([beta[t] for t in throw_of],
+                                               [fire[m] for m in numbers], k)) for k in orders}
+        modes.append(Mode(i, w / (2 * math.pi), shape, beta, sums))
+        for k in orders:
+            rpm = rad_s_to_rpm(w / k)
+            if low <= rpm <= high:
+                criticals.append(Critical(i, float(k), rpm, sums[float(k)], major[float(k)]))
+    criticals.sort(key=lambda c: c.speed_rpm)
+
+    order_torque, peak, free_end, free_orders = _response(engine, assembly, line,
+                                                          model.loss_factor, orders, gas,
+                                                          inertia, speeds)
+    stress = None
+    if model.shaft_diameter_m is not None:
+        d, b = model.shaft_diameter_m, model.shaft_bore_m
+        # τ = T·r/J_p with r = D/2 and J_p = π·(D⁴ − d⁴)/32
+        stress = peak * (d / 2) / (math.pi * (d**4 - b**4) / 32)
+    sections = tuple(f"{a}–{b}" for a, b in zip(line.names, line.names[1:]))
+    return TorsionResult(engine, line.names, sections, line.inertia, line.stiffness,
+                         tuple(modes), tuple(criticals), orders, speeds, order_torque, peak,
+                         free_end, stress, bool(np.any(gas)), free_orders)
+
+
+def _firing_deg(engine):
+    """Each cylinder's firing angle (crank angle of throw 1 at its firing top dead centre), deg."""
+    from .torques import _firing_angles_deg
+
+    return _firing_angles_deg(engine, firing_sequence(engine))
+
+
+def _response(engine, assembly, line, loss_factor, orders, gas, inertia, speeds):
+    """Vibratory torque amplitudes by speed × section × order, the synthesised peaks by speed ×
+    section, and the free end's peak angle (degrees) by speed."""
+    omega0 = engine.speed_rad_s
+    omega = speeds * 2 * math.pi / 60.0
+    n_nodes, n_orders = len(line.inertia), len(orders)
+    # every (speed, order) is one frequency: one call to openTorsion solves them all
+    u = np.zeros((n_nodes, len(speeds), n_orders), dtype=complex)
+    ratio = (omega / omega0) ** 2
+    for j, node in enumerate(line.throw_nodes):
+        u[node] = gas[j][None, :] + ratio[:, None] * inertia[j][None, :]
+    frequencies = (omega[:, None] * orders[None, :]).ravel()
+    base = assembly.C
+    k_sections = assembly.K
+    c_func = None
+    if loss_factor:
+        def c_func(w):
+            # relative damping: each section's c = loss_factor·k/Ω
+            return base + loss_factor / w * k_sections
+    q, _ = assembly.ss_response(u.reshape(n_nodes, -1), frequencies, C=base, C_func=c_func)
+    q = q.reshape(n_nodes, len(speeds), n_orders)
+    # a section's torque k·(θ_left − θ_right)
+    twist = q[:-1] - q[1:]
+    torques = line.stiffness[:, None, None] * twist                 # section × speed × order
+    amplitude = np.abs(torques).transpose(1, 0, 2)
+    per_turn = engine.cycle_deg / 360.0
+    # the waveform over one cycle, sampled finely enough for the highest order
+    theta = np.linspace(0, 2 * math.pi * per_turn, int(32 * orders.max() * per_turn) + 1,
+                        endpoint=False)
+    phase = orders[:, None] * theta[None, :]                          # order × angle
+    cos, sin = np.cos(phase), np.sin(phase)
+
+    def wave_peak(values):
+        # max over θ of |Re Σ_k V_k·e^{ikθ}|
+        return np.abs(values.real @ cos - values.imag @ sin).max(axis=-1)
+
+    peak = wave_peak(torques).T                                       # speed × section
+    free = np.degrees(wave_peak(q[0]))
+    return amplitude, peak, free, np.degrees(np.abs(q[0]))
+
+
+def first_mode_amplitudes(engine, samples=DEFAULT_SAMPLES) -> np.ndarray:
+    """The first natural mode's relative amplitude at each throw (the largest +1), as
+    :func:`torsion` reports it; it depends on the shaft line only, not on the throws' phases
+    (the search's ``V`` terms turn it with each crank)."""
+    require_opentorsion()
+    line = _line(engine, samples)
+    _, vectors = natural_frequencies(_assembly(line))
+    beta = vectors[list(line.throw_nodes), 0]
+    return beta / beta[int(np.argmax(np.abs(beta)))]
