@@ -1,6 +1,5 @@
 """The analysis of one engine (shaking, firing, largest resultant) and the comparison of several."""
 
-import copy
 import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
@@ -201,7 +200,9 @@ class EngineResult:
             "pru": None if pru is None else pru.to_dict(),
             "pru_note": pru_note,
             "sampling_ok": self.shaking.sampling_ok,
-            "orders": copy.deepcopy(self._records()),
+            # the cached records are flat dicts in a dict: a copy two levels deep is a copy
+            "orders": [{k: dict(v) if isinstance(v, dict) else v for k, v in record.items()}
+                       for record in self._records()],
         }
 
 

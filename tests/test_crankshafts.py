@@ -570,3 +570,24 @@ def test_the_readmes_mirror_image_rule_for_a_slanted_bore(direction, gamma, gear
     for k in range(1, 9):
         o = result.order(k)
         assert abs(o.force_forward) + abs(o.force_backward) < 1e-9 * M * R * OMEGA**2, k
+
+
+@pytest.mark.parametrize("config", [VR6, "configs/today/h/brm-h16.toml",
+                                    "configs/today/v/v6-90-odd-fire.toml"])
+def test_closed_form_top_dead_centres_match_the_travels_maximum(config):
+    """Plain rods' TDCs are computed in closed form (crank and rod in line); the second method
+    is the maximum of each piston's exact travel on a grid of 1e-5° round it."""
+    from balance_cli.kinematics import piston_travel
+    engine = balance.load(config)
+    if config == VR6:
+        # a reversed copy with a gear phase too: the offset's sense follows the crankshaft
+        engine = engine.replace(cylinders=tuple(
+            balance.Cylinder(c.number, c.bank, c.throw, c.z_m, c.reciprocating_kg,
+                             pin_offset_m=0.02 * (1 if c.number % 2 else -1))
+            for c in engine.cylinders))
+    tdc = tdc_angles(engine)
+    for c in engine.cylinders:
+        around = np.radians(tdc[c.number] + np.linspace(-0.01, 0.01, 2001))
+        travel = piston_travel(engine, around, [c.number])[c.number]
+        best = math.degrees(around[np.argmax(travel)])
+        assert abs((best - tdc[c.number] + 180) % 360 - 180) < 1.1e-5, c.number
