@@ -591,3 +591,30 @@ def test_closed_form_top_dead_centres_match_the_travels_maximum(config):
         travel = piston_travel(engine, around, [c.number])[c.number]
         best = math.degrees(around[np.argmax(travel)])
         assert abs((best - tdc[c.number] + 180) % 360 - 180) < 1.1e-5, c.number
+
+
+JUMO = "configs/today/opposed-piston/junkers-jumo-205.toml"
+
+
+def test_the_jumo_205s_bores_by_hand():
+    """The library's Jumo 205, one bore at a time (its reciprocating masses alone): with its
+    upper throw moved to the mirror image (180° from the lower in its own sense) the bore's two
+    pistons leave no free force of any order; at the file's 11° lead, order k leaves
+    m·ω²·k²·|a_k|·2·|sin(11°·k/2)| along the bore (a_k the travel's harmonic, by quadrature)."""
+    engine = balance.load(JUMO)
+    one = engine.cylinders[0]
+    lower, upper = engine.throws[one.throw], engine.throws[one.opposed_throw]
+    lead = math.degrees(math.remainder(math.pi - (upper.phase_rad - lower.phase_rad), 2 * math.pi))
+    assert_allclose(lead, 11.0, atol=1e-12)
+    m, r, l, omega = one.reciprocating_kg, engine.crank_radius_m, engine.rod_length_m, engine.speed_rad_s
+    for phase, eps in ((lower.phase_rad + math.pi, 0.0), (upper.phase_rad, math.radians(lead))):
+        bore = engine.replace(
+            throws=(balance.Throw(lower.phase_rad, 0.0), balance.Throw(phase, 0.0, 1)),
+            cylinders=(balance.Cylinder(1, 0, 0, 0.0, m, opposed_throw=1),),
+            rotating_kg=0.0, firing_order=None, power_w=None, gas=None)
+        result = balance.analyse(bore)
+        for k in range(1, 9):
+            o = result.order(k)
+            expected = m * omega**2 * k**2 * abs(travel_harmonic(k, r, l)) * 2 * abs(math.sin(k * eps / 2))
+            assert_allclose(abs(o.force_forward) + abs(o.force_backward), expected, rtol=1e-9,
+                            atol=1e-9 * m * r * omega**2)
