@@ -6,6 +6,7 @@ flags, the configuration file) and become one line on standard error with exit s
 """
 
 import contextlib
+import math
 import json
 import re
 import sys
@@ -751,31 +752,40 @@ def torque(paths, pressure, bore, inertia, target, load, samples, max_order, uni
 
 
 def _speeds_option(text):
-    """--speeds FROM:TO:STEP (rpm, both ends included) or a comma-separated list."""
+    """--speeds FROM:TO:STEP (rpm, both ends included) or a comma-separated list; None for
+    the default (20 % to 120 % of each engine's speed)."""
+    if text is None:
+        return None
+    from .torsion import MAX_SPEEDS
+
     try:
         if ":" in text:
             start, stop, step = (float(t) for t in text.split(":"))
-            if not step > 0 or not 0 < start <= stop:
+            if not all(map(math.isfinite, (start, stop, step))) or not step > 0 \
+                    or not 0 < start <= stop or not 1e-3 <= start and stop <= 1e6:
                 raise ValueError
             count = int(np.floor((stop - start) / step + 1e-9)) + 1
-            if count > 100000:
+            if count > MAX_SPEEDS:
                 raise ValueError
             return start + step * np.arange(count)
         values = np.array([float(t) for t in text.split(",")])
-        if not np.all(np.isfinite(values)) or np.any(values <= 0):
+        if not np.all(np.isfinite(values)) or np.any(values < 1e-3) or np.any(values > 1e6) \
+                or values.size > MAX_SPEEDS:
             raise ValueError
         return values
-    except ValueError:
-        raise click.BadParameter(f"expected FROM:TO:STEP in rpm (0 < FROM <= TO, STEP > 0, at "
-                                 f"most 100000 speeds) such as 600:2400:25, or a list such as "
-                                 f"1000,1500, got {text!r}", param_hint="--speeds") from None
+    except (ValueError, OverflowError):
+        raise click.BadParameter(f"expected FROM:TO:STEP in rpm (0.001 <= FROM <= TO <= 1e6, "
+                                 f"STEP > 0, at most {MAX_SPEEDS} speeds) such as 600:2400:25, or "
+                                 f"a list such as 1000,1500, got {text!r}",
+                                 param_hint="--speeds") from None
 
 
 @main.command()
 @_INPUTS
-@click.option("--speeds", default="600:2400:25", show_default=True, metavar="FROM:TO:STEP",
+@click.option("--speeds", default=None, metavar="FROM:TO:STEP",
               help="Engine speeds of the forced response, rpm: a range with its step (both ends "
-                   "included) or a comma-separated list.")
+                   "included, e.g. 600:2400:25) or a comma-separated list. Default: 201 speeds "
+                   "from 20 % to 120 % of each engine's speed.")
 @click.option("--max-order", default=12, show_default=True, type=click.IntRange(1, 64),
               help="Highest order of the excitation (half orders too for a four-stroke).")
 @_SAMPLES

@@ -874,6 +874,11 @@ def _check(engine):
                         "piston comes from that end; give it another bank, throw or axial "
                         "position", cylinder=other)
     _check_balancers(engine)
+    if engine.torsion is not None and (engine.is_rotary or engine.has_several_crankshafts):
+        raise ModelError("is a shaft line of one turning crankshaft; this engine "
+                         + ("is a rotary (its crank stands still)" if engine.is_rotary else
+                            f"has {len(engine.crankshafts)} crankshafts")
+                         + ": remove the [torsion] table", "torsion")
     if engine.firing_order is not None:
         order = list(engine.firing_order)
         if not all(isinstance(n, int) and not isinstance(n, bool) for n in order) \

@@ -29,10 +29,15 @@ from .units import rad_s_to_rpm
 
 __all__ = ["require_opentorsion", "first_mode_amplitudes", "TorsionUnavailable", "Mode",
            "Critical", "TorsionResult", "torsion", "throw_inertias", "phase_vector_sum",
-           "natural_frequencies", "DEFAULT_SPEEDS_RPM", "DEFAULT_MAX_ORDER"]
+           "natural_frequencies", "default_speeds_rpm", "DEFAULT_MAX_ORDER", "MAX_SPEEDS"]
 
-#: 600 to 2400 rpm in steps of 25
-DEFAULT_SPEEDS_RPM = tuple(np.arange(600.0, 2400.0 + 1e-9, 25.0))
+#: the default speed range, as fractions of the engine's own speed, and its number of speeds
+DEFAULT_SPEED_RANGE = (0.2, 1.2)
+DEFAULT_SPEED_COUNT = 201
+#: the most speeds of one sweep: each costs about 0.1 MB at twelve orders
+MAX_SPEEDS = 5000
+#: speeds as the configuration takes them, rpm
+_SPEED_LIMITS_RPM = (1e-3, 1e6)
 #: the highest order applied; twelve cover the criticals of the usual first two modes
 DEFAULT_MAX_ORDER = 12
 #: a phase-vector sum within this fraction of the cylinders' number is a major order
@@ -351,11 +356,20 @@ def _excitation(engine, samples, max_order, pressure, bore_m):
     return orders, gas, inertia
 
 
-def torsion(engine, speeds_rpm=DEFAULT_SPEEDS_RPM, max_order=DEFAULT_MAX_ORDER,
+def default_speeds_rpm(engine) -> np.ndarray:
+    """The speeds a sweep takes unless told: 20 % to 120 % of the engine's own speed, 201 of
+    them, rpm (a fixed range would miss a motorcycle's running range and put a marine
+    engine's far above it)."""
+    rpm = rad_s_to_rpm(engine.speed_rad_s)
+    low, high = DEFAULT_SPEED_RANGE
+    return np.linspace(low * rpm, high * rpm, DEFAULT_SPEED_COUNT)
+
+
+def torsion(engine, speeds_rpm=None, max_order=DEFAULT_MAX_ORDER,
             samples=DEFAULT_SAMPLES, pressure=None, bore_m=None) -> TorsionResult:
     """Modes, phase-vector sums, criticals and forced response of ``engine``'s [torsion]
-    model over ``speeds_rpm`` (rpm), for orders up to ``max_order`` (½ orders too for a
-    four-stroke).
+    model over ``speeds_rpm`` (rpm; default :func:`default_speeds_rpm`), for orders up to
+    ``max_order`` (½ orders too for a four-stroke).
 
     Raises
     ------
@@ -365,12 +379,27 @@ def torsion(engine, speeds_rpm=DEFAULT_SPEEDS_RPM, max_order=DEFAULT_MAX_ORDER,
         no [torsion] table, a rotary, several crankshafts, bad speeds
     """
     require_opentorsion()
-    speeds = np.asarray(speeds_rpm, dtype=float).ravel()
-    if speeds.size == 0 or not np.all(np.isfinite(speeds)) or np.any(speeds <= 0):
-        raise AnalysisError("must be one or more speeds above zero, rpm", "speeds_rpm")
+    if speeds_rpm is None:
+        _torsion_model(engine)
+        speeds_rpm = default_speeds_rpm(engine)
+    try:
+        speeds = np.asarray(speeds_rpm, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise AnalysisError(f"must be speeds in rpm, got {speeds_rpm!r}", "speeds_rpm") from None
+    low_limit, high_limit = _SPEED_LIMITS_RPM
+    if speeds.size == 0 or speeds.size > MAX_SPEEDS or not np.all(np.isfinite(speeds)) \
+            or np.any(speeds < low_limit) or np.any(speeds > high_limit):
+        raise AnalysisError(f"must be 1 to {MAX_SPEEDS} speeds from {low_limit:g} to "
+                            f"{high_limit:g} rpm, got {speeds.size} from {np.min(speeds):g} to "
+                            f"{np.max(speeds):g}" if speeds.size else
+                            "must be one or more speeds, rpm", "speeds_rpm")
     line = _line(engine, samples)
     assembly = _assembly(line)
     omega_n, vectors = natural_frequencies(assembly)
+    if not omega_n.size:
+        raise AnalysisError("has no elastic mode: the shaft line's inertias and stiffnesses are "
+                            "too far apart for the eigen-solver (every frequency came out as a "
+                            "rigid-body turning); check the [torsion] values", "engine")
     throw_nodes = list(line.throw_nodes)
     model = engine.torsion
 

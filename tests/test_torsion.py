@@ -588,3 +588,63 @@ def test_resonances_marked_at_the_nearest_speed():
     assert critical not in result.near(2100.0) + result.near(2200.0)
     entry = result.to_dict()["response"][1]
     assert {"mode": 1, "order": 6.0} in entry["criticals"]
+
+
+# -- found by the review ---------------------------------------------------------------------
+
+def test_the_default_speeds_follow_the_engines_own_speed():
+    """A fixed 600-2400 rpm range put a 105 rpm marine engine's sweep 23 times above its speed;
+    the default is 20 % to 120 % of the engine's speed, 201 speeds."""
+    engine = balance.loads(INLINE6 + TORSION6)               # 2000 rpm
+    result = balance.torsional_vibration(engine)
+    assert_allclose(result.speeds_rpm[[0, -1]], [400.0, 2400.0], rtol=1e-12)
+    assert len(result.speeds_rpm) == 201
+    slow = engine.replace(speed_rad_s=engine.speed_rad_s / 20)  # 100 rpm
+    assert_allclose(balance.torsional_vibration(slow).speeds_rpm[[0, -1]], [20.0, 120.0],
+                    rtol=1e-12)
+
+
+@pytest.mark.parametrize("speeds", ["600:inf:25", "600:2400:inf", "1e300", "0:100:1",
+                                    "1:2:0.00001", "nan", "600:2400"])
+def test_bad_speeds_are_one_line(tmp_path, speeds):
+    path = tmp_path / "six.toml"
+    path.write_text(INLINE6 + TORSION6)
+    result = run("torsion", path, "--speeds", speeds)
+    assert result.exit_code == 2
+    assert "--speeds" in result.output and "Traceback" not in result.output
+
+
+@pytest.mark.parametrize("speeds", [[1e300], [float("nan")], list(range(1, 6000)), []])
+def test_the_library_refuses_speeds_it_cannot_sweep(speeds):
+    engine = balance.loads(INLINE6 + TORSION6)
+    with pytest.raises(AnalysisError) as info:
+        balance.torsional_vibration(engine, speeds)
+    assert info.value.parameter == "speeds_rpm"
+
+
+def test_a_torsion_table_on_a_rotary_is_refused_when_read():
+    text = (INLINE6 + TORSION6).replace('speed = "2000 rpm"', 'speed = "2000 rpm"\nframe = "rotary"')
+    with pytest.raises(ConfigError, match="rotary") as info:
+        balance.loads(text, name="rotary.toml")
+    assert info.value.key == "torsion"
+
+
+def test_the_mendes_models_natural_frequencies_by_a_second_eigen_solver():
+    """The nine-inertia line of openTorsion's example (the paper's Fig. 4), its J and k typed
+    in here from the example's source, solved as the generalised eigenproblem K·x = ω²·M·x by
+    scipy: openTorsion's frequencies through balance agree to rounding."""
+    from pathlib import Path
+
+    from scipy.linalg import eigh
+
+    J = [0.0170, 0.0090, 0.0467, 0.0327, 0.0467, 0.0467, 0.0327, 0.0487, 2.0750]
+    k = [1.106e6, 1.631e6, 1.253e6, 1.253e6, 1.678e6, 1.253e6, 1.253e6, 1.976e6]
+    K = np.zeros((9, 9))
+    for i, ki in enumerate(k):
+        K[i:i + 2, i:i + 2] += ki * np.array([[1, -1], [-1, 1]])
+    w2 = eigh(K, np.diag(J), eigvals_only=True)
+    expected = np.sqrt(np.clip(w2[1:], 0, None)) / (2 * math.pi)     # the rigid mode left out
+    path = Path(__file__).parent / "reference/opentorsion_ice/mendes2008.toml"
+    result = balance.torsional_vibration(balance.load(path), [2000.0])
+    assert_allclose([m.frequency_hz for m in result.modes], expected, rtol=1e-9)
+    assert_allclose(expected[0], 216.6, atol=0.05)    # the first mode the validation speaks of
