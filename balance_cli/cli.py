@@ -470,6 +470,18 @@ def counterweight(paths, planes, radius, balance_factor, shafts, shaft_offsets, 
     with _reported(flags=flags):
         check_options(radius_m, balance_factor, orders, rotor, max_order, offsets)
     engines = _load_all(files, speed)
+    if len(engines) > 1:
+        # counterweights are proposed for one crankshaft: in a folder, the engines with
+        # several are passed over by name (alone, one is an error that says why)
+        for engine in engines:
+            if engine.has_several_crankshafts:
+                click.echo(f"note: {engine.config_path}: {len(engine.crankshafts)} crankshafts; "
+                           "counterweights are proposed for an engine with one: passed over",
+                           err=True)
+        engines = [e for e in engines if not e.has_several_crankshafts]
+        if not engines:
+            raise click.ClickException("every engine here has several crankshafts; counterweights "
+                                       "are proposed for an engine with one")
 
     def work(engine):
         return counterweights(engine, plane_specs, radius_m, balance_factor, orders, rotor,

@@ -16,10 +16,12 @@ import numbers
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
+import numpy as np
+
 from .analysis import DOCUMENT_VERSION, EngineResult, analyse
 from . import checks
 from .errors import CounterweightError, UnitError
-from .kinematics import BIG_ENDS, COUNTERWEIGHT
+from .kinematics import BALANCER, BIG_ENDS, COUNTERWEIGHT
 from .model import Engine, offset_position
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, Shaking
 from .tolerances import SAME_POSITION_M
@@ -249,7 +251,9 @@ class Balance:
         engine = self.engine
 
         def stage(shaking):
-            return {"largest_resultant_N": shaking.largest_force(),
+            # below the noise floor it is rounding, an exact zero as compare writes it
+            largest = shaking.largest_force()
+            return {"largest_resultant_N": largest if largest >= engine.noise_floor_n else 0.0,
                     "orders": shaking.records(engine)}
 
         entry = {
@@ -452,11 +456,13 @@ def _rotating_target(engine, factor, pin_kg=0.0):
 
 
 def _built_first_order(engine, shaking):
-    """Forward first-order force and moment (N, N·m) of the counterweights as built, read off
-    the engine's own analysis (their rows of the point masses)."""
-    if not engine.counterweights:
+    """Forward first-order force and moment (N, N·m) of the counterweights and balancer shafts
+    as built (a shaft turning with the crank at its speed, ratio +1, makes a forward first
+    order as a counterweight does), read off the engine's own analysis (their rows of the
+    point masses)."""
+    if not engine.counterweights and not any(s.ratio == 1 for s in engine.balancer_shafts):
         return 0j, 0j
-    mine = shaking.masses.cylinder == COUNTERWEIGHT
+    mine = np.isin(shaking.masses.cylinder, (COUNTERWEIGHT, BALANCER))
     forces = shaking.mass_coefficients[mine, 1]
     levers = shaking.masses.z_m[mine] - engine.mean_z_m
     return complex(forces.sum()), complex((levers * forces).sum())

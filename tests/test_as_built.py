@@ -682,3 +682,77 @@ def test_star_shares_name_the_counterweights_and_shafts():
     assert_allclose(shafts, [-p, -p], rtol=1e-12)
     weighted = balance.analyse(balance.loads(V8 + V8_WEIGHTS))
     assert "counterweights" in [label for label, _, _ in weighted.shaking.cylinder_phasors(1)]
+
+
+def test_a_built_shaft_at_crank_speed_counts_towards_the_balance_factor():
+    """A shaft turning with the crank at its speed (ratio +1) makes a forward first order as a
+    counterweight does: a single cylinder (0.6 kg reciprocating, 0.3 kg rotating, r = 45 mm)
+    whose built +1 shaft carries 13.5 kg·mm (0.3 kg at the crank radius) opposite the pin needs,
+    for a balance factor 0.5 (0.3 + 0.5·0.6 = 0.6 kg at r), only 0.3 kg more."""
+    engine = balance.loads(textwrap.dedent("""
+        name = "one with a primary shaft"
+        cycle = 4
+        speed = "3000 rpm"
+        crank_radius = "45 mm"
+        rod_length = "150 mm"
+        [masses]
+        reciprocating = "0.6 kg"
+        rotating = "0.3 kg"
+        [[banks]]
+        angle = 0
+        [[throws]]
+        phase = 0
+        [[shafts]]
+        ratio = 1
+        [[shafts.masses]]
+        mass_radius = "13.5 kg*mm"
+        angle = 180
+        """))
+    result = balance.counterweights(engine, planes=[1], balance_factor=0.5)
+    assert_allclose(sum(c.mass_kg for c in result.counterweights), 0.3, rtol=1e-9)
+
+
+def test_the_text_gives_the_built_shafts_rolling_moment(tmp_path):
+    """An in-line 4 with a built −2 shaft 30 mm lateral, 60 mm below the crank: its force
+    m·e·(2ω)² (0.001 kg·m at 3000 rpm: 394.8 N) at the offset c rolls the engine by |c × F| up
+    to |c|·F = 0.0671 m·394.8 N = 26.5 N·m; the text says so beside the built shaft, and that
+    the proposed shafts (none offset) roll nothing."""
+    path = tmp_path / "four.toml"
+    path.write_text(textwrap.dedent("""
+        name = "four with a shaft"
+        cycle = 4
+        speed = "3000 rpm"
+        crank_radius = "40 mm"
+        rod_length = "140 mm"
+        [masses]
+        reciprocating = "0.5 kg"
+        [[banks]]
+        angle = 0
+        [[throws]]
+        phase = 0
+        [[throws]]
+        phase = 180
+        z = "90 mm"
+        [[throws]]
+        phase = 180
+        z = "180 mm"
+        [[throws]]
+        phase = 0
+        z = "270 mm"
+        [[shafts]]
+        ratio = -2
+        lateral = "30 mm"
+        vertical = "-60 mm"
+        [[shafts.masses]]
+        mass_radius = "0.001 kg*m"
+        angle = 33
+        """))
+    result = run("counterweight", path, "--shafts", "2")
+    assert result.exit_code == 0, result.output
+    assert "Rolling moment about the crank axis of the shafts as built" in result.output
+    force = 0.001 * (2 * 3000 * math.pi / 30) ** 2
+    record = balance.counterweights(balance.load(path)).to_dict()
+    rolling = record["as_built"]["balancer_shafts"][0]["rolling_moment"]["amplitude_Nm"]
+    # a rotating force at a fixed offset: the moment's amplitude is |c|·|F|
+    assert_allclose(rolling, math.hypot(0.03, 0.06) * force, rtol=1e-9)
+    assert "Rolling moment about the crank axis of the proposed shafts: none" in result.output

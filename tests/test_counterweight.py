@@ -469,7 +469,7 @@ def test_cli_nothing_left_in_words():
     assert result.exit_code == 0, result.output
     assert "After the shafts, nothing is left up to order 8" in result.output
     assert "Left after the shafts" not in result.output
-    assert "Rolling moment about the crank axis: none" in result.output
+    assert "Rolling moment about the crank axis of the shafts: none" in result.output
     assert "kg·mm" not in result.output
     primary = run("counterweight", CONFIGS / "inline-4-car.toml", "--shafts", "1,2")
     assert "Order 1: no shaft needed, already zero." in primary.output

@@ -57,11 +57,29 @@ def _layout(engine):
         spread = banks[-1] - banks[0]
         kind = (f"{len(banks)} banks, {spread:g}° spread" if len(banks) > 2
                 else "opposed banks (180°)" if abs(spread - 180.0) < 1e-9 else f"{spread:g}° V")
-    return f"{kind}, {pins} pin{'s' if pins != 1 else ''}"
+    text = f"{kind}, {pins} pin{'s' if pins != 1 else ''}"
+    if engine.has_several_crankshafts:
+        against = sum(s.direction == -1 for s in engine.crankshafts)
+        text += f" on {len(engine.crankshafts)} crankshafts" + (
+            f" ({against} turning against the first)" if against else "")
+    if engine.has_opposed_pistons:
+        text += ", opposed pistons"
+    return text
 
 
 def _crank(engine):
-    return "-".join(f"{math.degrees(t.phase_rad) % 360:.4g}" for t in engine.throws)
+    """The throw phases, crankshaft by crankshaft (each in its own sense, after its gear
+    phase)."""
+    parts = []
+    for index, shaft in enumerate(engine.crankshafts):
+        phases = "-".join(f"{math.degrees(t.phase_rad) % 360:.4g}" for t in engine.throws
+                          if t.crankshaft == index)
+        if len(engine.crankshafts) > 1:
+            phases = (f"shaft {index + 1}" + (" (against)" if shaft.direction == -1 else "")
+                      + (f", gear {math.degrees(shaft.phase_rad):g}°" if shaft.phase_rad else "")
+                      + f": {phases}")
+        parts.append(phases)
+    return "; ".join(parts)
 
 
 def _figures(result):
@@ -97,9 +115,11 @@ def render():
         "`configs/today` holds engines people design and own today, one folder per family",
         "(`balance list configs` prints one table per folder). Each file names the production",
         "engine it stands for, with published bore and stroke; rod lengths, pitches and masses",
-        "marked in the file as estimates are estimates. Only reciprocating masses are given (the",
-        "rotating ones are for the counterweights), so the figures are the textbooks'",
-        "reciprocating ones.",
+        "marked in the file as estimates are estimates. The engines of one crankshaft in",
+        "`inline`, `v`, `boxer` and `w` give only reciprocating masses (the rotating ones are for",
+        "the counterweights), so their figures are the textbooks' reciprocating ones; the VR6,",
+        "H16, Jumo 205 and Deltic give rotating masses too, which their first-order figures",
+        "include.",
         "",
         "Columns: *F1, F2*: largest free force of orders 1 and 2 **per cylinder, unit-free**",
         "(÷ m·r·ω²·n, the `compare` tables' unit); *M1, M2*: largest free moment of orders 1 and 2 in",

@@ -432,8 +432,9 @@ def _rolling_lines(record, scale, fmt):
     """The rolling moment the shafts' offsets leave, or why there is none."""
     shafts = record["balancer_shafts"]
     if all(s["offset_m"]["lateral"] == 0 and s["offset_m"]["vertical"] == 0 for s in shafts):
-        return ["Rolling moment about the crank axis: none; the shafts sit on the crank axis, and "
-                "a centred shaft's force passes through it.", ""]
+        which = "the proposed shafts" if "as_built" in record else "the shafts"
+        return [f"Rolling moment about the crank axis of {which}: none; they sit on the crank "
+                "axis, and a centred shaft's force passes through it.", ""]
     rows = []
     for total in record["shaft_rolling_moments"]:
         mine = [(n, s) for n, s in enumerate(shafts, 1) if s["order"] == total["order"]]
@@ -496,8 +497,21 @@ def _as_built_lines(record, n_unit, scale, fmt):
         out += [_record_table(weights, BUILT_WEIGHT_COLUMNS, fmt), ""]
     if shafts:
         out += ["Balancer shafts as built (each mass's m·e, its angle from the reference axis when "
-                "θ = 0, positive with rotation, and its axial position):", "",
+                "θ = 0, positive with the crank's rotation — the file gives a shaft turning "
+                "against the crank its angle in its own sense, the negative of this — and its "
+                "axial position):", "",
                 _record_table(_shaft_rows(shafts), SHAFT_COLUMNS, fmt), ""]
+        rolling = [[f"{n} ({s['speed_ratio']:+d})", str(s["rolling_moment"]["order"]),
+                    figure(scale.moment(s["rolling_moment"]["amplitude_Nm"])),
+                    f"{round_degrees(s['rolling_moment']['phase_deg'], 2):.2f}"]
+                   for n, s in enumerate(shafts, 1)
+                   if s["offset_m"]["lateral"] or s["offset_m"]["vertical"]]
+        if rolling:
+            out += ["Rolling moment about the crank axis of the shafts as built, from their "
+                    "forces at their offsets (M = amplitude·cos(kθ − phase), positive with "
+                    "rotation; in balance torque's frame torque):", "",
+                    render(["Shaft", "Order", f"Amplitude ({scale.moment_label})", "Phase (°)"],
+                           rolling, fmt), ""]
     return out + _left(record["name"], "counterweights and shafts as built", built["orders"],
                        n_unit, scale, fmt)
 
