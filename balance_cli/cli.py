@@ -838,6 +838,20 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir):
                                        "shaft line's inertias and stiffnesses); see the README, "
                                        "Torsional vibration")
         files = [Path(e.config_path) for e in engines]
+    if plot_dir is not None:
+        # pictures are named after the files: two of one name would overwrite each other, and
+        # --output into the folder would replace a picture with the tables
+        stems = [Path(f).stem for f in files]
+        twice = sorted({s for s in stems if stems.count(s) > 1})
+        if twice:
+            raise click.BadParameter(f"names pictures after the files, and {twice[0]}.toml is "
+                                     "given twice (from different folders); draw them one at a "
+                                     "time or rename one", param_hint="--plot")
+        if output not in (None, "-") and Path(output).resolve().parent == Path(plot_dir).resolve():
+            pictures_named = {f"{s}-{k}.png" for s in stems for k in ("campbell", "modes", "torque")}
+            if Path(output).name in pictures_named:
+                raise click.BadParameter(f"{output} is one of the pictures --plot draws; write "
+                                         "the tables elsewhere", param_hint="--output")
     results = _run_each(engines, "Torsion", lambda e: torsion_of(e, speeds_rpm, max_order,
                                                                  samples))
     from .report.torsion import torsion_csv, torsion_tables

@@ -648,3 +648,16 @@ def test_the_mendes_models_natural_frequencies_by_a_second_eigen_solver():
     result = balance.torsional_vibration(balance.load(path), [2000.0])
     assert_allclose([m.frequency_hz for m in result.modes], expected, rtol=1e-9)
     assert_allclose(expected[0], 216.6, atol=0.05)    # the first mode the validation speaks of
+
+
+def test_plot_refuses_pictures_that_would_overwrite_each_other(tmp_path):
+    for folder in ("a", "b"):
+        (tmp_path / folder).mkdir()
+        (tmp_path / folder / "x.toml").write_text(INLINE6 + TORSION6)
+    result = run("torsion", tmp_path / "a/x.toml", tmp_path / "b/x.toml", "--plot",
+                 tmp_path / "pd")
+    assert result.exit_code == 2 and "x.toml is given twice" in result.output
+    result = run("torsion", tmp_path / "a/x.toml", "--plot", tmp_path / "pd", "-o",
+                 tmp_path / "pd/x-torque.png")
+    assert result.exit_code == 2 and "one of the pictures" in result.output
+    assert not (tmp_path / "pd").exists()
