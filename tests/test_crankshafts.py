@@ -618,3 +618,14 @@ def test_the_jumo_205s_bores_by_hand():
             expected = m * omega**2 * k**2 * abs(travel_harmonic(k, r, l)) * 2 * abs(math.sin(k * eps / 2))
             assert_allclose(abs(o.force_forward) + abs(o.force_backward), expected, rtol=1e-9,
                             atol=1e-9 * m * r * omega**2)
+
+
+def test_torque_csv_gives_each_crankshafts_torque():
+    from click.testing import CliRunner
+
+    from balance_cli.cli import main
+    result = CliRunner().invoke(main, ["torque", JUMO, "--format", "csv"])
+    assert result.exit_code == 0, result.output
+    means = {row.split(",")[2]: float(row.split(",")[4]) for row in result.output.splitlines()[1:]
+             if row.split(",")[3] == "0.0"}
+    assert_allclose(means["crankshaft 1"] + means["crankshaft 2"], means["total"], rtol=1e-9)

@@ -116,16 +116,19 @@ def balance_csv(balances, scale):
 
 
 def torque_csv(results, scale):
-    """Every torque of ``balance torque`` in long form: engine, config, torque, order, cos, sin,
-    amplitude, phase (order 0 is the mean); torques in ``scale``'s moment unit."""
+    """Every torque of ``balance torque`` in long form: engine, config, torque (inertia, gas,
+    total, tilting, frame, and "crankshaft N" for each of several), order, cos, sin, amplitude,
+    phase (order 0 is the mean); torques in ``scale``'s moment unit."""
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     ml = scale.column_moment
     writer.writerow(["engine", "config", "torque", "order", f"cos_{ml}", f"sin_{ml}",
                      f"amplitude_{ml}", "phase_deg"])
     for r in results:
-        for name in ("inertia", "gas", "total", "tilting", "frame"):
-            series = getattr(r, name)
+        named = [(name, getattr(r, name)) for name in ("inertia", "gas", "total", "tilting", "frame")]
+        # an engine with several crankshafts: each one's torque, in its own sense
+        named += [(f"crankshaft {c.number}", c.torque) for c in r.crankshafts]
+        for name, series in named:
             if series is None:
                 continue
             record = series.to_dict()
