@@ -1,6 +1,5 @@
 """Top-dead-centre angles from the geometry, and firing orders and intervals."""
 
-import itertools
 import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING

@@ -337,20 +337,30 @@ def _torque_unit(engine):
     return engine.per_cylinder_unit_n * engine.crank_radius_m
 
 
+def selected(state, masses_kept, rods_kept):
+    """The linkage ``state`` with only the point masses and rods the boolean masks keep: the
+    parts of one crankshaft, one cylinder or one throw (μ is a sum over the parts, so their
+    torques add up to the engine's)."""
+    masses, rods = state.masses, state.rods
+    return state._replace(
+        masses=dataclasses.replace(masses, **{
+            name: getattr(masses, name)[masses_kept]
+            for name in ("positions", "masses_kg", "z_m", "cylinder", "throw")}),
+        rods=dataclasses.replace(rods, **{
+            name: getattr(rods, name)[rods_kept]
+            for name in ("directions", "corrections_kgm2", "cylinder", "throw")}))
+
+
 def _reduced_mass_and_momentum(engine, state, crankshaft=None):
     """μ(θ) and h(θ) = H/θ̇ from the linkage ``state`` over one revolution, kg·m²; of the parts
     one ``crankshaft`` (an index) drives, if given."""
-    masses, rods = state.masses, state.rods
     if crankshaft is not None:
         shaft_of = np.array([t.crankshaft for t in engine.throws])
         # a balancer-shaft mass (throw −1) rides on no crankshaft
-        mine = (masses.throw >= 0) & (shaft_of[masses.throw] == crankshaft)
-        masses = dataclasses.replace(masses, **{
-            name: getattr(masses, name)[mine]
-            for name in ("positions", "masses_kg", "z_m", "cylinder", "throw")})
-        rods = dataclasses.replace(rods, **{
-            name: getattr(rods, name)[shaft_of[rods.throw] == crankshaft]
-            for name in ("directions", "corrections_kgm2", "cylinder", "throw")})
+        throws = state.masses.throw
+        state = selected(state, (throws >= 0) & (shaft_of[throws] == crankshaft),
+                         shaft_of[state.rods.throw] == crankshaft)
+    masses, rods = state.masses, state.rods
     rates = periodic_derivative(masses.positions)
     weights = masses.masses_kg[:, None]
     mu = (weights * np.abs(rates) ** 2).sum(axis=0)
@@ -742,15 +752,10 @@ def cylinder_torques(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDE
     out = []
     for cylinder in engine.cylinders:
         n = cylinder.number
-        # only this cylinder's rows: μ is a sum over the parts, so the parts' torques add up
-        own = dataclasses.replace(masses, **{
-            name: getattr(masses, name)[masses.cylinder == n]
-            for name in ("positions", "masses_kg", "z_m", "cylinder", "throw")})
-        own_rods = dataclasses.replace(rods, **{
-            name: getattr(rods, name)[rods.cylinder == n]
-            for name in ("directions", "corrections_kgm2", "cylinder", "throw")})
-        # the shaft's constant inertia in μ has no derivative: no torque of its own
-        mu, _ = _reduced_mass_and_momentum(engine, state._replace(masses=own, rods=own_rods))
+        # only this cylinder's rows; the shaft's constant inertia in μ has no derivative: no
+        # torque of its own
+        mu, _ = _reduced_mass_and_momentum(
+            engine, selected(state, masses.cylinder == n, rods.cylinder == n))
         inertia = np.tile(-0.5 * omega**2 * periodic_derivative(mu).real, turns)
         gas = None
         if net:

@@ -14,7 +14,6 @@ The steady response to a torque Re(U·e^{ikΩt}) is Re(Q·e^{ikΩt}), (K − (k�
 a section's vibratory torque is k·(Q_left − Q_right).
 """
 
-import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -104,7 +103,7 @@ def throw_inertias(engine, samples=DEFAULT_SAMPLES) -> np.ndarray:
     ``throw_inertia``, or the mean over a revolution of the reduced mass of the parts on the
     throw (pistons, rods, pins: ½·μ_j·ω² their kinetic energy) plus ``web_inertia``."""
     from .kinematics import engine_angles, linkage_state
-    from .torques import _reduced_mass_and_momentum
+    from .torques import _reduced_mass_and_momentum, selected
 
     model = _torsion_model(engine)
     if model.throw_inertia_kgm2 is not None:
@@ -114,13 +113,8 @@ def throw_inertias(engine, samples=DEFAULT_SAMPLES) -> np.ndarray:
     out = []
     for index in range(len(engine.throws)):
         # the rows riding on this throw: μ is a sum over the parts
-        own = dataclasses.replace(masses, **{
-            name: getattr(masses, name)[masses.throw == index]
-            for name in ("positions", "masses_kg", "z_m", "cylinder", "throw")})
-        own_rods = dataclasses.replace(rods, **{
-            name: getattr(rods, name)[rods.throw == index]
-            for name in ("directions", "corrections_kgm2", "cylinder", "throw")})
-        mu, _ = _reduced_mass_and_momentum(engine, state._replace(masses=own, rods=own_rods))
+        mu, _ = _reduced_mass_and_momentum(
+            engine, selected(state, masses.throw == index, rods.throw == index))
         # the shaft's own inertia is the user's, in the webs
         out.append(float(np.mean(mu.real)) - engine.shaft_inertia_kgm2 + model.web_inertia_kgm2)
     return np.array(out)
