@@ -171,6 +171,21 @@ def _analyse_all(engines, samples, max_order):
     return _run_each(engines, "Analysing", lambda e: analyse(e, samples, max_order))
 
 
+def _passed_over(engines, takes, why, none_message):
+    """Of several engines, those the command ``takes``; the others named on standard error
+    with ``why`` (engine -> text), and an error when none is left. One engine alone is kept,
+    for the command to refuse with its own message."""
+    if len(engines) < 2:
+        return engines
+    for engine in engines:
+        if not takes(engine):
+            click.echo(f"note: {engine.config_path}: {why(engine)}; passed over", err=True)
+    kept = [e for e in engines if takes(e)]
+    if not kept:
+        raise click.ClickException(none_message)
+    return kept
+
+
 def _write(output, text):
     with _reported():
         write_text(output, text)
@@ -470,18 +485,13 @@ def counterweight(paths, planes, radius, balance_factor, shafts, shaft_offsets, 
     with _reported(flags=flags):
         check_options(radius_m, balance_factor, orders, rotor, max_order, offsets)
     engines = _load_all(files, speed)
-    if len(engines) > 1:
-        # counterweights are proposed for one crankshaft: in a folder, the engines with
-        # several are passed over by name (alone, one is an error that says why)
-        for engine in engines:
-            if engine.has_several_crankshafts:
-                click.echo(f"note: {engine.config_path}: {len(engine.crankshafts)} crankshafts; "
-                           "counterweights are proposed for an engine with one: passed over",
-                           err=True)
-        engines = [e for e in engines if not e.has_several_crankshafts]
-        if not engines:
-            raise click.ClickException("every engine here has several crankshafts; counterweights "
-                                       "are proposed for an engine with one")
+    # counterweights are proposed for one crankshaft (alone, an engine with several is an
+    # error that says why)
+    engines = _passed_over(engines, lambda e: not e.has_several_crankshafts,
+                           lambda e: f"{len(e.crankshafts)} crankshafts; counterweights are "
+                                     "proposed for an engine with one",
+                           "every engine here has several crankshafts; counterweights are "
+                           "proposed for an engine with one")
 
     def work(engine):
         return counterweights(engine, plane_specs, radius_m, balance_factor, orders, rotor,
@@ -808,7 +818,8 @@ def _speeds_option(text):
               help="Also draw, per engine, NAME-campbell.png (Campbell diagram with the "
                    "criticals), NAME-modes.png (mode shapes) and NAME-torque.png (vibratory "
                    "torque against speed per section) into DIR; NAME is the file's stem.")
-def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir):
+@_UNITS
+def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
     """Torsional vibration of the crankshaft (needs openTorsion: pip install
     'balance[torsion]'): natural frequencies and mode shapes of the [torsion] model, the
     phase-vector sums of the firing order, the criticals within --speeds, and the vibratory
@@ -827,17 +838,12 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir):
     _guard([output], files)
     _settings(samples, max_order)
     engines = _load_all(files)
-    if len(engines) > 1:
-        # a folder holds engines without a shaft line: those are passed over, by name
-        without = [e for e in engines if e.torsion is None]
-        for engine in without:
-            click.echo(f"note: {engine.config_path}: no [torsion] table; passed over", err=True)
-        engines = [e for e in engines if e.torsion is not None]
-        if not engines:
-            raise click.ClickException("none of these engines has a [torsion] table (the "
-                                       "shaft line's inertias and stiffnesses); see the README, "
-                                       "Torsional vibration")
-        files = [Path(e.config_path) for e in engines]
+    # a folder holds engines without a shaft line (alone, one is an error that says why)
+    engines = _passed_over(engines, lambda e: e.torsion is not None,
+                           lambda e: "no [torsion] table",
+                           "none of these engines has a [torsion] table (the shaft line's "
+                           "inertias and stiffnesses); see the README, Torsional vibration")
+    files = [Path(e.config_path) for e in engines]
     if plot_dir is not None:
         # pictures are named after the files: two of one name would overwrite each other, and
         # --output into the folder would replace a picture with the tables
@@ -856,13 +862,15 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir):
                                                                  samples))
     from .report.torsion import torsion_csv, torsion_tables
 
+    scale = Scale.of(False, units)
+
     if fmt == "json":
         text = to_json({"balance_version": DOCUMENT_VERSION, "max_order": max_order,
                         "engines": [r.to_dict() for r in results]})
     elif fmt == "csv":
-        text = torsion_csv(results)
+        text = torsion_csv(results, scale)
     else:
-        text = torsion_tables(results, fmt)
+        text = torsion_tables(results, fmt, scale)
     if plot_dir is not None:
         _use_agg()
         from .report import torsion as pictures
@@ -871,7 +879,7 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir):
             names = []
             for file, result in zip(files, results):
                 for kind, draw in (("campbell", pictures.campbell), ("modes", pictures.mode_shapes),
-                                   ("torque", pictures.torque_speed)):
+                                   ("torque", lambda r: pictures.torque_speed(r, scale=scale))):
                     name = f"{Path(file).stem}-{kind}.png"
                     draw(result).savefig(folder / name, dpi=120)
                     names.append(name)

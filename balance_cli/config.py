@@ -22,6 +22,7 @@ from .errors import ConfigError, ModelError, UnitError
 from .kinematics import check_assembly
 from .model import (FRAMES, MAX_SHAFT_RATIO, BalancerMass, BalancerShaftSpec, CounterweightMass,
                     Crankshaft, Cylinder, Engine, GasCycle, Parts, ShaftDisk, Throw, TorsionModel)
+from .tolerances import SAME_POSITION_M
 from .units import parse_quantity
 
 __all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template", "load_data",
@@ -493,7 +494,7 @@ def _check_crankshafts_used(path, crankshafts, throws):
             raise ConfigError(path, f"crankshafts[{k + 1}]", f"carries no throw; give it throws "
                               f"(crankshaft = {k + 1} in [[throws]]) or remove it")
         for j in range(k):
-            if abs(shaft.centre - crankshafts[j].centre) < 1e-9:
+            if abs(shaft.centre - crankshafts[j].centre) < SAME_POSITION_M:
                 raise ConfigError(path, f"crankshafts[{k + 1}]", f"shares its axis with "
                                   f"crankshafts[{j + 1}]; give it its own x and y")
 

@@ -629,3 +629,16 @@ def test_torque_csv_gives_each_crankshafts_torque():
     means = {row.split(",")[2]: float(row.split(",")[4]) for row in result.output.splitlines()[1:]
              if row.split(",")[3] == "0.0"}
     assert_allclose(means["crankshaft 1"] + means["crankshaft 2"], means["total"], rtol=1e-9)
+
+
+def test_counterweight_on_a_folder_passes_over_engines_with_several_crankshafts():
+    from click.testing import CliRunner
+
+    from balance_cli.cli import main
+    result = CliRunner().invoke(main, ["counterweight", "configs/today/opposed-piston",
+                                       "configs/today/vr"])
+    assert result.exit_code == 0, result.output
+    assert "junkers-jumo-205.toml: 2 crankshafts" in result.output
+    assert "VW VR6" in result.output
+    alone = CliRunner().invoke(main, ["counterweight", JUMO])
+    assert alone.exit_code == 1 and "has 2 crankshafts" in alone.output

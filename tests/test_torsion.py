@@ -661,3 +661,16 @@ def test_plot_refuses_pictures_that_would_overwrite_each_other(tmp_path):
                  tmp_path / "pd/x-torque.png")
     assert result.exit_code == 2 and "one of the pictures" in result.output
     assert not (tmp_path / "pd").exists()
+
+
+def test_units_convert_the_vibratory_torque(tmp_path):
+    """--units kN: the table's torques are the N·m figures / 1000 (kN·m), the CSV's column
+    torque_kNm; JSON stays SI."""
+    path = tmp_path / "six.toml"
+    path.write_text(INLINE6 + TORSION6)
+    si = run("torsion", path, "--speeds", "2000", "--format", "csv").output.splitlines()
+    kn = run("torsion", path, "--speeds", "2000", "--format", "csv", "--units", "kN").output.splitlines()
+    assert si[0].split(",")[5] == "torque_Nm" and kn[0].split(",")[5] == "torque_kNm"
+    for a, b in zip(si[1:], kn[1:]):
+        assert_allclose(float(b.split(",")[5]), float(a.split(",")[5]) / 1000, rtol=1e-12)
+    assert "Torque (kN·m)" in run("torsion", path, "--speeds", "2000", "--units", "kn").output

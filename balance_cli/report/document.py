@@ -87,7 +87,7 @@ def blocks(comparison, balances, star_order, torques, scale=None, family=None, t
                      "a revolution:"))
     out.append(("table", mass_headers, mass_rows))
     if torsion:
-        out += _torsion_blocks(torsion)
+        out += _torsion_blocks(torsion, scale)
     if family is not None:
         title, headers, rows, note = family_parts(family, Scale.of(True, scale.units))
         out += [("h", 2, "Engine family"), ("table", ["Family"], [[title]]),
@@ -98,7 +98,7 @@ def blocks(comparison, balances, star_order, torques, scale=None, family=None, t
     return out
 
 
-def _torsion_blocks(torsion):
+def _torsion_blocks(torsion, scale):
     """The torsion section: per engine with a [torsion] table, its first modes, the major
     criticals in the speed range and the largest vibratory torque per section (a note
     instead when openTorsion is missing)."""
@@ -124,8 +124,9 @@ def _torsion_blocks(torsion):
                                       f"{c.speed_rpm:.0f} rpm" for c in majors) or "none")
                          + "."))
         stress = r.stress_pa is not None
-        out.append(("table", ["Section", "Torque (N·m)", "at (rpm)"]
+        out.append(("table", ["Section", f"Torque ({scale.moment_label})", "at (rpm)"]
                     + (["τ (MPa)"] if stress else []),
-                    [[name, figure(t), f"{v:g}"] + ([figure(s / 1e6)] if stress else [])
+                    [[name, figure(scale.moment(t)), f"{v:g}"]
+                     + ([figure(s / 1e6)] if stress else [])
                      for name, t, v, s in r.largest()]))
     return out

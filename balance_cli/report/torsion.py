@@ -7,7 +7,7 @@ import io
 import numpy as np
 
 from ..units import significant
-from .display import figure, markdown_text, plain_text
+from .display import Scale, figure, markdown_text, plain_text
 from .tables import render
 
 __all__ = ["torsion_tables", "torsion_csv", "campbell", "mode_shapes", "torque_speed"]
@@ -20,9 +20,10 @@ def _sum_text(value):
     return "0" if value < _ZERO_SUM else significant(value, 3)
 
 
-def torsion_tables(results, fmt):
+def torsion_tables(results, fmt, scale=None):
     """Modes, phase-vector sums, criticals in the speed range and the largest vibratory
-    torque per section, engine by engine."""
+    torque per section, engine by engine; torques in ``scale``'s moment unit (N·m)."""
+    scale = scale or Scale()
     heading = "#### " if fmt == "markdown" else ""
     safe = markdown_text if fmt == "markdown" else plain_text
     out = []
@@ -51,37 +52,41 @@ def torsion_tables(results, fmt):
         out += ["Criticals in the speed range (the order's frequency equals the mode's):", "",
                 render(["Speed (rpm)", "Mode", "Order", "Kind", "Phase-vector sum"], rows, fmt)
                 if rows else "none", ""]
-        rows = [[name, figure(t), f"{v:g}"] + ([] if s is None else [figure(s / 1e6)])
+        rows = [[name, figure(scale.moment(t)), f"{v:g}"]
+                + ([] if s is None else [figure(s / 1e6)])
                 + [", ".join(f"{c.order:g}/{c.mode}" for c in r.near(v)) or "-"]
                 for name, t, v, s in r.largest()]
         stress = [] if r.stress_pa is None else ["τ (MPa)"]
         out += ["Largest vibratory torque per section (peak of all orders together; the "
                 "criticals, order/mode, that speed of the sweep stands for):", "",
-                render(["Section", "Torque (N·m)", "at (rpm)"] + stress + ["Critical"], rows,
-                       fmt), "",
+                render(["Section", f"Torque ({scale.moment_label})", "at (rpm)"] + stress
+                       + ["Critical"], rows, fmt), "",
                 f"Free end: largest angular amplitude {figure(r.free_end_deg.max())}° at "
                 f"{r.speeds_rpm[int(np.argmax(r.free_end_deg))]:g} rpm.", ""]
     return "\n".join(out)
 
 
-def torsion_csv(results):
+def torsion_csv(results, scale=None):
     """The forced response in long form: engine, config, speed_rpm, section, order (``all``
-    for the synthesised waveform's peak), torque_Nm, stress_Pa (empty without a shaft
-    diameter), and the free end's amplitude (free_end_deg, on the ``all`` rows)."""
+    for the synthesised waveform's peak), torque_Nm (``scale``'s moment unit: torque_kNm,
+    ...), stress_Pa (empty without a shaft diameter), and the free end's amplitude
+    (free_end_deg, on the ``all`` rows)."""
+    scale = scale or Scale()
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(["engine", "config", "speed_rpm", "section", "order", "torque_Nm",
-                     "stress_Pa", "free_end_deg"])
+    writer.writerow(["engine", "config", "speed_rpm", "section", "order",
+                     f"torque_{scale.column_moment}", "stress_Pa", "free_end_deg"])
     for r in results:
         for i, speed in enumerate(r.speeds_rpm):
             for s, name in enumerate(r.sections):
                 stress = "" if r.stress_pa is None else repr(float(r.stress_pa[i, s]))
                 writer.writerow([r.engine.name, r.engine.config_path, repr(float(speed)), name,
-                                 "all", repr(float(r.torque_nm[i, s])), stress,
+                                 "all", repr(float(scale.moment(r.torque_nm[i, s]))), stress,
                                  repr(float(r.free_end_deg[i]))])
                 for o, k in enumerate(r.orders):
                     writer.writerow([r.engine.name, r.engine.config_path, repr(float(speed)), name,
-                                     repr(float(k)), repr(float(r.order_torque_nm[i, s, o])), "",
+                                     repr(float(k)),
+                                     repr(float(scale.moment(r.order_torque_nm[i, s, o]))), "",
                                      ""])
     return buffer.getvalue()
 
@@ -136,19 +141,21 @@ def mode_shapes(result, fig=None):
     return fig
 
 
-def torque_speed(result, fig=None):
+def torque_speed(result, fig=None, scale=None):
     """Vibratory torque (peak of all orders together) against speed, one line per section,
-    criticals of major orders marked. Returns the Figure."""
+    criticals of major orders marked, in ``scale``'s moment unit (N·m). Returns the Figure."""
+    scale = scale or Scale()
     fig = _figure(fig, (8, 5))
     ax = fig.add_subplot()
     for s, name in enumerate(result.sections):
-        ax.plot(result.speeds_rpm, result.torque_nm[:, s], label=name, linewidth=1.0)
+        ax.plot(result.speeds_rpm, scale.moment(result.torque_nm[:, s]), label=name,
+                linewidth=1.0)
     for c in result.criticals:
         if c.major:
             ax.axvline(c.speed_rpm, color="0.6", linestyle=":", linewidth=0.8)
             ax.annotate(f"{c.order:g}/{c.mode}", (c.speed_rpm, ax.get_ylim()[1]), fontsize=7,
                         va="top")
-    ax.set(xlabel="Engine speed (rpm)", ylabel="Vibratory torque (N·m)",
+    ax.set(xlabel="Engine speed (rpm)", ylabel=f"Vibratory torque ({scale.moment_label})",
            title=f"{result.engine.name}: vibratory torque per section")
     ax.legend(fontsize=7, ncol=2)
     return fig
