@@ -548,6 +548,26 @@ def _pin_forces(engine, state, angles, turns, net_pressure, area):
     return forces, crank_inertia
 
 
+def _gas_bore(engine, pressure, bore_m):
+    """The bore the gas torque acts on, m (None: no gas torque): ``bore_m`` (or the [gas]
+    table's) for a pressure curve of the engine's cycle, the [gas] table's without one; a bore
+    without a pressure is an error, as is a pressure curve without a bore."""
+    if pressure is not None:
+        instance(pressure, PressureCurve, "pressure", hint=" (balance.read_pressure_csv gives one)")
+        if pressure.cycle_deg != engine.cycle_deg:
+            raise AnalysisError(f"covers {pressure.cycle_deg:g}°, but {engine.name!r} is a "
+                                f"{engine.cycle}-stroke ({engine.cycle_deg:g}°)", "pressure")
+        bore_m = bore_m if bore_m is not None else (engine.gas.bore_m if engine.gas else None)
+        if bore_m is None:
+            raise AnalysisError("is missing for the pressure curve: give the bore, or a [gas] "
+                                "table with one", "bore_m")
+        return positive(bore_m, "bore_m", "length")
+    if bore_m is not None:
+        raise AnalysisError("applies to a pressure curve only; give the pressure too (a [gas] "
+                            "table has its own bore)", "bore_m")
+    return None if engine.gas is None else engine.gas.bore_m
+
+
 def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressure=None,
            bore_m=None, inertia_kgm2=None, load="propeller", target=None,
            bearings=True, guide=True) -> TorqueResult:
@@ -592,7 +612,7 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
     if bore_m is not None:
         # the command line refused NaN, inf, zero and negative bores; the library took
         # a negative one as its absolute value and NaN as a gas torque of NaN
-        bore_m = positive(bore_m, "bore_m", "length")
+        positive(bore_m, "bore_m", "length")
     if inertia_kgm2 is not None:
         inertia_kgm2 = positive(inertia_kgm2, "inertia_kgm2", "moment of inertia")
     if target is not None and (not is_real(target) or not 0.5 < target < math.inf):
@@ -601,19 +621,7 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
     if not isinstance(load, str) or load not in LOADS:
         raise AnalysisError(f"must be one of {', '.join(LOADS)}, got {load!r}", "load")
     check_assembly(engine)
-    if pressure is not None:
-        if pressure.cycle_deg != engine.cycle_deg:
-            raise AnalysisError(f"covers {pressure.cycle_deg:g}°, but {engine.name!r} is a "
-                                f"{engine.cycle}-stroke ({engine.cycle_deg:g}°)", "pressure")
-        bore_m = bore_m if bore_m is not None else (engine.gas.bore_m if engine.gas else None)
-        if bore_m is None:
-            raise AnalysisError("is missing for the pressure curve: give the bore, or a [gas] "
-                                "table with one", "bore_m")
-    elif bore_m is not None:
-        raise AnalysisError("applies to a pressure curve only; give the pressure too (a [gas] "
-                            "table has its own bore)", "bore_m")
-    elif engine.gas is not None:
-        bore_m = engine.gas.bore_m
+    bore_m = _gas_bore(engine, pressure, bore_m)
     omega = engine.speed_rad_s
     angles = engine_angles(samples)
     state = linkage_state(engine, angles)
@@ -727,15 +735,7 @@ def cylinder_torques(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDE
     if engine.has_several_crankshafts or any(c.is_opposed for c in engine.cylinders):
         raise AnalysisError("has several crankshafts or opposed pistons; a cylinder's torque "
                             "on one throw is given for one crankshaft only", "engine")
-    if pressure is not None:
-        instance(pressure, PressureCurve, "pressure", hint=" (balance.read_pressure_csv gives one)")
-        bore_m = bore_m if bore_m is not None else (engine.gas.bore_m if engine.gas else None)
-        if bore_m is None:
-            raise AnalysisError("is missing for the pressure curve: give the bore, or a [gas] "
-                                "table with one", "bore_m")
-        bore_m = positive(bore_m, "bore_m", "length")
-    elif engine.gas is not None:
-        bore_m = engine.gas.bore_m
+    bore_m = _gas_bore(engine, pressure, bore_m)
     omega = engine.speed_rad_s
     angles = engine_angles(samples)
     state = linkage_state(engine, angles)

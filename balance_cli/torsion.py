@@ -377,6 +377,8 @@ def torsion(engine, speeds_rpm=None, max_order=DEFAULT_MAX_ORDER,
         _torsion_model(engine)
         speeds_rpm = default_speeds_rpm(engine)
     try:
+        if isinstance(speeds_rpm, (bool, str, bytes)) or np.ndim(speeds_rpm) > 1:
+            raise TypeError
         speeds = np.asarray(speeds_rpm, dtype=float).ravel()
     except (TypeError, ValueError):
         raise AnalysisError(f"must be speeds in rpm, got {speeds_rpm!r}", "speeds_rpm") from None

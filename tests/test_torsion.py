@@ -674,3 +674,17 @@ def test_units_convert_the_vibratory_torque(tmp_path):
     for a, b in zip(si[1:], kn[1:]):
         assert_allclose(float(b.split(",")[5]), float(a.split(",")[5]) / 1000, rtol=1e-12)
     assert "Torque (kN·m)" in run("torsion", path, "--speeds", "2000", "--units", "kn").output
+
+
+@pytest.mark.parametrize("kwargs, parameter", [
+    (dict(bore_m=-1.0), "bore_m"), (dict(bore_m=0.1), "bore_m"),      # a bore without a pressure
+    (dict(speeds_rpm=True), "speeds_rpm"), (dict(speeds_rpm=[[1000, 2000]]), "speeds_rpm"),
+    (dict(max_order=math.nan), "max_order"), (dict(samples="x"), "samples"),
+])
+def test_the_library_checks_what_the_command_line_checks(kwargs, parameter):
+    """A bore without a pressure curve once failed with an AttributeError; a bool or a table
+    of speeds was taken as speeds."""
+    engine = balance.loads(INLINE6 + TORSION6)
+    with pytest.raises(balance.BalanceError) as info:
+        balance.torsional_vibration(engine, **kwargs)
+    assert info.value.parameter == parameter
