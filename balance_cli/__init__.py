@@ -16,20 +16,19 @@ Every error is a :class:`BalanceError`. SI units and radians throughout; see the
 
 __version__ = "0.1.0"
 
-from .analysis import Comparison, EngineResult, analyse, compare  # noqa: E402
+from .analysis.results import Comparison, EngineResult, analyse, compare  # noqa: E402
 from .config import find_configs, load, load_many, load_template, loads  # noqa: E402
-from .counterweight import (Antivibrateur, Balance, Counterweight, Plane, Shaft,  # noqa: E402
-                            counterweights)
-from .errors import (AnalysisError, BalanceError, ConfigError, CounterweightError,  # noqa: E402
-                     FiringError, ModelError, OrderError, OutputError, PlotError, SamplingWarning,
-                     UnitError)
-from .firing import Firing  # noqa: E402
-from .gas import PressureCurve, read_cycle_csv, read_pressure_csv  # noqa: E402
+from .analysis.counterweight import (Antivibrateur, Balance, Counterweight, Plane, Shaft,
+                                     counterweights)
+from .errors import (AnalysisError, BalanceError, ConfigError, CounterweightError, FiringError,
+                     ModelError, OrderError, OutputError, PlotError, SamplingWarning, UnitError)
+from .analysis.firing import Firing  # noqa: E402
+from .analysis.gas import PressureCurve, read_cycle_csv, read_pressure_csv  # noqa: E402
 from .model import Cylinder, Engine, GasCycle, Parts, Throw  # noqa: E402
-from .regress import Moved, Regression, RegressError, regression  # noqa: E402
-from .shaking import OrderComponents, Shaking  # noqa: E402
-from .flywheel import Steadiness, flywheel_for, steadiness  # noqa: E402
-from .torques import PinForce, ReducedMass, Series, TorqueResult, TorqueSet, torque  # noqa: E402
+from .studies.regress import Moved, Regression, RegressError, regression  # noqa: E402
+from .analysis.shaking import OrderComponents, Shaking  # noqa: E402
+from .analysis.steadiness import Steadiness, flywheel_for, steadiness  # noqa: E402
+from .analysis.torque import PinForce, ReducedMass, Series, TorqueResult, TorqueSet, torque  # noqa: E402
 
 __all__ = [
     "load", "loads", "load_many", "find_configs", "analyse", "compare", "counterweights",
@@ -52,13 +51,13 @@ _LAZY = {"plot": (".plot", None), "search": (".cranksearch", "search"),
          "Arrangement": (".cranksearch", "Arrangement"), "Term": (".cranksearch", "Term")}
 
 # the sweep loads on first use too; a statement of its own keeps merges of the lists above simple
-_LAZY.update({"sweep": (".sweeps", "sweep"), "SweepResult": (".sweeps", "SweepResult"),
-              "family": (".families", "family"), "FamilyResult": (".families", "FamilyResult"),
-              "GuideForces": (".guideforce", "GuideForces")})
+_LAZY.update({"sweep": (".studies.sweep", "sweep"), "SweepResult": (".studies.sweep", "SweepResult"),
+              "family": (".studies.family", "family"), "FamilyResult": (".studies.family", "FamilyResult"),
+              "GuideForces": (".analysis.guideforce", "GuideForces")})
 __all__ += ["sweep", "SweepResult", "SweepError", "family", "FamilyResult", "GuideForces",
             "load_data", "power_related_unbalance", "PowerRelatedUnbalance"]
 from .config import load_data  # noqa: E402
-from .marine import PowerRelatedUnbalance, power_related_unbalance  # noqa: E402
+from .analysis.marine import PowerRelatedUnbalance, power_related_unbalance  # noqa: E402
 from .errors import SweepError  # noqa: E402
 # counterweights and balancer shafts as built (a statement of its own, for the same reason)
 __all__ += ["CounterweightMass", "BalancerMass", "BalancerShaftSpec"]
@@ -69,8 +68,8 @@ from .model import BalancerMass, BalancerShaftSpec, CounterweightMass  # noqa: E
 _LAZY.update({"torsional_vibration": (".torsion", "torsion"),
               "TorsionResult": (".torsion", "TorsionResult"),
               "TorsionUnavailable": (".torsion", "TorsionUnavailable"),
-              "cylinder_torques": (".torques", "cylinder_torques"),
-              "CylinderTorque": (".torques", "CylinderTorque"),
+              "cylinder_torques": (".analysis.torque", "cylinder_torques"),
+              "CylinderTorque": (".analysis.torque", "CylinderTorque"),
               "TorsionModel": (".model", "TorsionModel"), "ShaftDisk": (".model", "ShaftDisk")})
 __all__ += ["torsional_vibration", "TorsionResult", "TorsionUnavailable", "cylinder_torques",
             "CylinderTorque", "TorsionModel", "ShaftDisk"]
@@ -88,5 +87,5 @@ def __getattr__(name):
 
 # several crankshafts (issue 19): a statement of its own, as above
 from .model import Crankshaft  # noqa: E402
-from .torques import CrankshaftTorque  # noqa: E402
+from .analysis.torque import CrankshaftTorque  # noqa: E402
 __all__ += ["Crankshaft", "CrankshaftTorque"]

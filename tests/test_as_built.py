@@ -17,8 +17,8 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.cli import main
-from balance_cli.counterweight import built_shafts, rolling_moment_phasor
-from balance_cli.kinematics import BALANCER, COUNTERWEIGHT, CRANK, engine_angles, linkage_state
+from balance_cli.analysis.counterweight import built_shafts, rolling_moment_phasor
+from balance_cli.kinematics.linkage import BALANCER, COUNTERWEIGHT, CRANK, engine_angles, linkage_state
 from balance_cli.model import BalancerMass, BalancerShaftSpec, CounterweightMass
 
 from conftest import CONFIGS, exact_b

@@ -12,8 +12,8 @@ from numpy.testing import assert_allclose
 
 from balance_cli import load
 from balance_cli.cli import main
-from balance_cli.counterweight import Plane, plane_at_throw
-from balance_cli.counterweight import counterweights as balance
+from balance_cli.analysis.counterweight import Plane, plane_at_throw
+from balance_cli.analysis.counterweight import counterweights as balance
 from balance_cli.errors import CounterweightError
 from conftest import CONFIGS, exact_b, make_engine
 
@@ -283,7 +283,7 @@ def bramo_with_angular_eccentricity(epsilon, rho=6.0):
 
 def test_eccentricity_sign():
     """§ 7: ε = +1 (sin ε_n = λ sin ψ_n) spaces the top dead centres regularly, to second order."""
-    from balance_cli.firing import tdc_angles
+    from balance_cli.analysis.firing import tdc_angles
 
     def worst(epsilon):
         tdc = tdc_angles(bramo_with_angular_eccentricity(epsilon))

@@ -10,7 +10,7 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.errors import ConfigError
-from balance_cli.firing import firing_sequence, tdc_angles
+from balance_cli.analysis.firing import firing_sequence, tdc_angles
 
 R, L = 0.08, 0.32           # crank radius and rod, m
 M = 2.0                     # one piston's reciprocating mass, kg
@@ -217,7 +217,7 @@ def test_the_deltic_lead_closes_round_the_triangle_only_with_one_shaft_reversed(
     turning against B and C the bank terms give 3ε ≡ 60°: ε = 20°, the Deltic's. The library's
     Deltic has that 20° lead in all eighteen bores, its inner dead centres 10° after the exhaust
     pistons' and 20° apart all round."""
-    from balance_cli.kinematics import pin_angle
+    from balance_cli.kinematics.linkage import pin_angle
     engine = balance.load("configs/today/opposed-piston/napier-deltic-d18.toml")
     assert [s.direction for s in engine.crankshafts] == [1, -1, -1]
 
@@ -577,7 +577,7 @@ def test_the_readmes_mirror_image_rule_for_a_slanted_bore(direction, gamma, gear
 def test_closed_form_top_dead_centres_match_the_travels_maximum(config):
     """Plain rods' TDCs are computed in closed form (crank and rod in line); the second method
     is the maximum of each piston's exact travel on a grid of 1e-5° round it."""
-    from balance_cli.kinematics import piston_travel
+    from balance_cli.kinematics.linkage import piston_travel
     engine = balance.load(config)
     if config == VR6:
         # a reversed copy with a gear phase too: the offset's sense follows the crankshaft

@@ -20,7 +20,7 @@ from numpy.testing import assert_allclose
 import balance_cli as balance
 from balance_cli.cli import main
 from balance_cli.config import load_data
-from balance_cli.families import family
+from balance_cli.studies.family import family
 
 from conftest import CONFIGS, exact_b
 

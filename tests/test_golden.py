@@ -1,7 +1,7 @@
 """CI regression tables: the whole library against tests/golden/compare.json, checked by
 `balance regress` itself (one implementation for the project and its users).
 
-Tolerances (balance_cli.regress): 1e-9 of each engine's m_rec·r·ω²·n for forces and moments
+Tolerances (balance_cli.studies.regress): 1e-9 of each engine's m_rec·r·ω²·n for forces and moments
 (rounding differs between machines far below that), 1e-6° for phases of phasors above 1e-6 of
 it, 1e-4° for firing angles (the TDC search is good to about 2e-6°).
 `make regress-update` rewrites the file after an intended change.
@@ -14,7 +14,7 @@ from click.testing import CliRunner
 
 import balance_cli as balance
 from balance_cli.cli import main
-from balance_cli.regress import regression as regress
+from balance_cli.studies.regress import regression as regress
 from conftest import ROOT
 
 GOLDEN = ROOT / "tests" / "golden" / "compare.json"

@@ -12,7 +12,7 @@ import pytest
 import balance_cli as balance
 from balance_cli.cranksearch import search
 from balance_cli.errors import AnalysisError
-from balance_cli.torques import torque
+from balance_cli.analysis.torque import torque
 from conftest import CONFIGS
 
 # a crosshead two-stroke, round figures of a 600 mm bore engine: rods with mass and inertia

@@ -829,7 +829,7 @@ def test_a_tiny_fluctuation_is_resolved_by_the_library(load):
     2·I·ω₀²/(2A) to second order in A/(I·ω₀²) ≈ 1e-18; under a propeller the load's own
     ℓ·ω² adds a relative 1/(r_v²) ≈ 1e-12 only. The integration (linear between 4096
     samples, trapezoids) is exact to (2·Δθ)²/12 ≈ 3e-6 of the fluctuation."""
-    from balance_cli.flywheel import steadiness
+    from balance_cli.analysis.steadiness import steadiness
 
     theta = np.arange(4096) * 4 * np.pi / 4096
     amplitude, inertia, omega = 1e-3, 1e6, 1e5 * math.pi / 30
@@ -895,7 +895,7 @@ def test_a_target_just_above_one_half_gives_the_least_steadiness():
     import re
 
     from balance_cli.errors import AnalysisError
-    from balance_cli.flywheel import flywheel_for, steadiness
+    from balance_cli.analysis.steadiness import flywheel_for, steadiness
 
     theta = np.arange(720) * 4 * np.pi / 720
     torque = 100.0 + 200.0 * np.sin(theta / 2)

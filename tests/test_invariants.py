@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from balance_cli.kinematics import check_assembly, mass_positions
-from balance_cli.shaking import shaking_forces as shaking
+from balance_cli.kinematics.linkage import check_assembly, mass_positions
+from balance_cli.analysis.shaking import shaking_forces as shaking
 from conftest import make_engine
 
 SAMPLES = 256

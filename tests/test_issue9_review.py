@@ -8,6 +8,7 @@ import pytest
 from click.testing import CliRunner
 from numpy.testing import assert_allclose
 
+import balance_cli
 import balance_cli as balance
 from balance_cli.cli import main
 from balance_cli.model import Throw
@@ -112,7 +113,7 @@ def test_regression_refuses_engines_analysed_otherwise():
     baseline = balance.compare([balance.analyse(engine)]).to_dict()
     with pytest.raises(balance.RegressError, match="analysed with max_order = 10"):
         balance.regression(baseline, balance.compare([balance.analyse(engine, max_order=10)]))
-    assert not balance.regression(baseline, balance.regress.reanalyse(baseline, [engine])).moved
+    assert not balance.regression(baseline, balance_cli.studies.regress.reanalyse(baseline, [engine])).moved
 
 
 def test_rtol_loosens_a_firing_angle_by_radians_not_by_its_size():
@@ -130,9 +131,9 @@ def test_tdc_search_memory_is_linear_in_cylinders():
     refinement of a 400-cylinder grid needs arrays of 101 angles, not 400 × 400 × 101."""
     engine = make_engine([3.6 * i for i in range(20)], [(18 * t, 0.05 * t) for t in range(20)],
                          cycle=2)
-    travel = balance.kinematics.piston_travel(engine, [0.0, 0.1], [7])
+    travel = balance_cli.kinematics.linkage.piston_travel(engine, [0.0, 0.1], [7])
     assert list(travel) == [7]
-    tdc = balance.firing.tdc_angles(engine)
+    tdc = balance_cli.analysis.firing.tdc_angles(engine)
     assert len(tdc) == 400
     cylinder = engine.cylinder(27)   # bank 2 (3.6°), throw 7 (108°): TDC at 3.6 − 108 mod 360
     assert_allclose(tdc[27], (3.6 - 108.0) % 360, atol=1e-5)

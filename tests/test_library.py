@@ -8,7 +8,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from balance_cli import analyse, load
-from balance_cli.shaking import ellipse
+from balance_cli.analysis.shaking import ellipse
 from balance_cli.units import STANDARD_GRAVITY
 from conftest import CONFIGS, PART3, exact_b
 

@@ -15,7 +15,7 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.cli import main
-from balance_cli.marine import DEFAULT_PRU_CLASSES, check_classes, pru_class
+from balance_cli.analysis.marine import DEFAULT_PRU_CLASSES, check_classes, pru_class
 from balance_cli.units import parse_quantity
 
 from conftest import CONFIGS, TWIN, exact_b

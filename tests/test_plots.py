@@ -376,7 +376,7 @@ def gas_config(tmp_path_factory):
 @pytest.fixture(scope="module")
 def torques(gas_config):
     """A four-stroke with gas, a four-stroke without and a two-stroke, in that order."""
-    from balance_cli.torques import torque
+    from balance_cli.analysis.torque import torque
 
     return [torque(load(path)) for path in (gas_config, V8, CONFIGS / "inline-4-marine.toml",
                                             CONFIGS / "nakanishi-w12-60-2stroke.toml")]
@@ -441,7 +441,7 @@ def test_torque_figure_draws_each_engines_torques_mean_and_orders(torques, units
 def test_torque_figure_keeps_each_engine_in_its_cell_below_its_title(torques, library):
     """No title overlaps another, none leaves the figure, and each engine's curves stay in its
     column of the grid, below its own title (17 engines: 3 columns, 6 rows)."""
-    from balance_cli.torques import torque
+    from balance_cli.analysis.torque import torque
 
     for chosen in (torques, [torque(r.engine, bearings=False) for r in library]):
         fig = plot.torque(chosen)
@@ -481,8 +481,8 @@ def test_plot_command_draws_torques_as_png_and_in_kgf(tmp_path, gas_config, torq
 
 
 def test_plot_command_torques_respect_samples_and_max_order(tmp_path, monkeypatch):
-    # the module (the package's attribute balance_cli.torques may be the function)
-    torque_module = importlib.import_module("balance_cli.torques")
+    # the module (the package's attribute balance_cli.analysis.torque may be the function)
+    torque_module = importlib.import_module("balance_cli.analysis.torque")
     seen = []
     real = torque_module.torque
 
@@ -503,7 +503,7 @@ def test_plot_command_reports_a_torque_error_in_one_line(tmp_path, monkeypatch):
     def refuse(engine, *args, **kwargs):
         raise AnalysisError("cannot be computed", "engine")
 
-    monkeypatch.setattr(importlib.import_module("balance_cli.torques"), "torque", refuse)
+    monkeypatch.setattr(importlib.import_module("balance_cli.analysis.torque"), "torque", refuse)
     out = tmp_path / "t.png"
     result = run("plot", V8, "--kind", "torque", "--output", out)
     assert result.exit_code == 1
@@ -521,7 +521,7 @@ def test_plot_command_reports_a_torque_error_in_one_line(tmp_path, monkeypatch):
 
 
 def test_report_torque_bearings_left_out_change_no_torque(torques):
-    from balance_cli.torques import torque
+    from balance_cli.analysis.torque import torque
 
     result = torques[0]
     light = torque(result.engine, bearings=False)

@@ -18,10 +18,10 @@ from numpy.testing import assert_allclose
 from balance_cli.cli import main
 from balance_cli.config import build
 from balance_cli.errors import ConfigError
-from balance_cli.kinematics import check_assembly
+from balance_cli.kinematics.linkage import check_assembly
 from balance_cli.errors import ModelError
 from balance_cli.model import Throw
-from balance_cli.shaking import shaking_forces as shaking
+from balance_cli.analysis.shaking import shaking_forces as shaking
 from conftest import make_engine
 from test_cli import GOOD, LINKED
 

@@ -5,7 +5,7 @@ import math
 import pytest
 from numpy.testing import assert_allclose
 
-from balance_cli.shaking import shaking_forces as shaking
+from balance_cli.analysis.shaking import shaking_forces as shaking
 from conftest import make_engine
 
 

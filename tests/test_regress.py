@@ -9,7 +9,7 @@ from click.testing import CliRunner
 
 import balance_cli as balance
 from balance_cli.cli import main
-from balance_cli.regress import regression as regress
+from balance_cli.studies.regress import regression as regress
 from conftest import CONFIGS
 
 

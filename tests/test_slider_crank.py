@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from balance_cli.kinematics import mass_positions
-from balance_cli.shaking import shaking_forces as shaking
+from balance_cli.kinematics.linkage import mass_positions
+from balance_cli.analysis.shaking import shaking_forces as shaking
 from conftest import make_engine
 
 

@@ -14,7 +14,7 @@ from numpy.testing import assert_allclose
 import balance_cli as balance
 from balance_cli.cli import main
 from balance_cli.errors import AnalysisError
-from balance_cli.flywheel import flywheel_for, steadiness
+from balance_cli.analysis.steadiness import flywheel_for, steadiness
 from conftest import CONFIGS
 
 OMEGA = 2 * math.pi * 1200 / 60
@@ -181,7 +181,7 @@ def test_torque_command_table_json_csv(tmp_path):
     pin = bramo["bearing"]["crank_pins"][0]
     assert set(pin["orders"][2]["force"]) >= {"forward_N", "backward_N", "max_N", "min_N", "axis_deg"}
     engine = balance.load(CONFIGS / "bramo-323.toml")
-    from balance_cli.torques import torque
+    from balance_cli.analysis.torque import torque
     assert bramo == torque(engine, max_order=4).to_dict()   # the JSON is the result's to_dict
     csv_text = invoke("torque", CONFIGS / "inline-4-car.toml", "--format", "csv", "--units", "kgf").stdout
     assert csv_text.startswith("engine,config,torque,order,cos_kgfm")
@@ -190,7 +190,7 @@ def test_torque_command_table_json_csv(tmp_path):
     assert numbers and all(float(cell) == float(cell) for cell in numbers)   # plain numbers only
     # the order rows read back as the JSON's values, in kgf·m
     car = balance.load(CONFIGS / "inline-4-car.toml")
-    from balance_cli.torques import torque as torque_of
+    from balance_cli.analysis.torque import torque as torque_of
     inertia = torque_of(car).inertia
     second = next(row for row in rows if row[2] == "inertia" and float(row[3]) == 2.0)
     assert_allclose(float(second[5]), inertia.order(2)[1] / 9.80665, rtol=1e-12)

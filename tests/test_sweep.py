@@ -20,7 +20,7 @@ from numpy.testing import assert_allclose
 import balance_cli as balance
 from balance_cli import config as config_module
 from balance_cli.cli import main
-from balance_cli.sweeps import SCHEMA, span
+from balance_cli.studies.sweep import SCHEMA, span
 from conftest import CONFIGS, ROOT, SINGLE, TWIN
 
 M_REC, R = 0.5, 0.040           # kg, m: SINGLE's and TWIN's reciprocating mass and crank radius

@@ -19,7 +19,7 @@ from balance_cli.cli import main
 from balance_cli.errors import AnalysisError, ConfigError
 from balance_cli.torsion import (TorsionUnavailable, phase_vector_sum, throw_inertias,
                                  torsion)
-from balance_cli.torques import cylinder_torques, torque
+from balance_cli.analysis.torque import cylinder_torques, torque
 
 pytest.importorskip("opentorsion")
 
@@ -481,7 +481,7 @@ def test_search_tv1_is_the_largest_minor_order(tmp_path):
     template, _ = balance.load_template(path)
     result = balance.search(template, "TV1", top=1000, workers=1)
     assert len(result.arrangements) == result.arrangements_distinct == 60
-    from balance_cli.torques import _firing_angles_deg
+    from balance_cli.analysis.torque import _firing_angles_deg
 
     scores = []
     for a in result.arrangements:

@@ -36,7 +36,7 @@ PICTURES = [
 
 def blocks(comparison, balances, star_order, torques, scale=None, family=None, torsion=None):
     """The report: engines, comparison tables, counterweights, torques (the
-    :class:`~balance_cli.torques.TorqueResult` of each engine), pictures; forces per cylinder,
+    :class:`~balance_cli.analysis.torque.TorqueResult` of each engine), pictures; forces per cylinder,
     moments and torques in ``scale``'s units (default N·m)."""
     scale = Scale() if scale is None else scale
     results = comparison.results

@@ -21,7 +21,7 @@ def _failure_text(rows):
 
 
 def junit_xml(regression):
-    """The XML text of a :class:`~balance_cli.regress.Regression`."""
+    """The XML text of a :class:`~balance_cli.studies.regress.Regression`."""
     cases = []
     for name in list(regression.checked) + list(regression.added) + list(regression.removed):
         case = ET.Element("testcase", classname="balance.regress", name=name,

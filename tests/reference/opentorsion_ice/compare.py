@@ -6,7 +6,7 @@ from pathlib import Path
 import numpy as np
 
 import balance_cli as balance
-from balance_cli.gas import PressureCurve
+from balance_cli.analysis.gas import PressureCurve
 from balance_cli.torsion import torsion
 
 HERE = Path(__file__).resolve().parent

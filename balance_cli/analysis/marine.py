@@ -11,9 +11,9 @@ M1V, M2V) and horizontal (yawing, M1H, M2H) components of balance's exact free m
 import math
 from dataclasses import dataclass
 
-from .checks import instance, positive
-from .errors import AnalysisError, BalanceError
-from .kinematics import engine_angles, piston_travel
+from ..checks import instance, positive
+from ..errors import AnalysisError, BalanceError
+from ..kinematics.linkage import engine_angles, piston_travel
 
 __all__ = ["DEFAULT_PRU_CLASSES", "DEFAULT_PRU_ORDERS", "Power", "PowerRelatedUnbalance",
            "engine_power", "power_related_unbalance", "pru_class", "check_classes"]
@@ -159,7 +159,7 @@ def power_related_unbalance(result, power_w=None, orders=DEFAULT_PRU_ORDERS,
     classes : tuple of (bound, word)
         :data:`DEFAULT_PRU_CLASSES` or :func:`check_classes` of other bounds
     """
-    from .analysis import EngineResult
+    from .results import EngineResult
     from .counterweight import counterweights
 
     instance(result, EngineResult, "result", hint=" (balance.analyse(engine))")

@@ -29,9 +29,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .checks import curve, is_real, positive
-from .errors import AnalysisError
-from .units import rad_s_to_rpm
+from ..checks import curve, is_real, positive
+from ..errors import AnalysisError
+from ..units import rad_s_to_rpm
 
 __all__ = ["LOADS", "Steadiness", "steadiness", "flywheel_for"]
 

@@ -20,11 +20,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .analysis import DOCUMENT_VERSION, READABLE_VERSIONS, Comparison, analyse, compare
-from .errors import AnalysisError, BalanceError
-from .shaking import check_settings
-from .tolerances import FIRING_CHANGE_DEG, NOISE_FLOOR, PHASE_CHANGE_DEG, PHASE_FLOOR
-from .units import angle_change
+from ..analysis.results import DOCUMENT_VERSION, READABLE_VERSIONS, Comparison, analyse, compare
+from ..errors import AnalysisError, BalanceError
+from ..analysis.shaking import check_settings
+from ..tolerances import FIRING_CHANGE_DEG, NOISE_FLOOR, PHASE_CHANGE_DEG, PHASE_FLOOR
+from ..units import angle_change
 
 __all__ = ["RegressError", "Moved", "Regression", "regression", "check_baseline", "check_rtol",
            "baseline_configs", "compared_like", "reanalyse"]

@@ -3,7 +3,7 @@
 This is the ground floor of the analyses: it imports only the errors, tolerances and units.
 An :class:`Engine` built in code is checked exactly as one read from a configuration file
 (the reader puts its key names into the messages); whether its linkage can be assembled over
-a revolution is checked by :func:`balance_cli.kinematics.check_assembly`, which every analysis
+a revolution is checked by :func:`balance_cli.kinematics.linkage.check_assembly`, which every analysis
 calls first.
 """
 
@@ -12,10 +12,10 @@ import math
 import numbers
 from dataclasses import dataclass, field, fields
 
-from .checks import is_real
-from .errors import ModelError, UnitError
-from .tolerances import NOISE_FLOOR, SAME_DIRECTION_RAD, SAME_POSITION_M
-from .units import check_finite_range
+from ..checks import is_real
+from ..errors import ModelError, UnitError
+from ..tolerances import NOISE_FLOOR, SAME_DIRECTION_RAD, SAME_POSITION_M
+from ..units import check_finite_range
 
 __all__ = ["Crankshaft", "Throw", "Cylinder", "Engine", "Parts", "GasCycle", "FRAMES",
            "CounterweightMass", "BalancerMass", "BalancerShaftSpec", "MAX_SHAFT_RATIO",
@@ -389,7 +389,7 @@ class Parts:
 @dataclass(frozen=True)
 class GasCycle:
     """A single-zone gas cycle: polytropic compression and expansion with a Wiebe heat release
-    scaled to the indicated mean effective pressure (see :mod:`balance_cli.gas`).
+    scaled to the indicated mean effective pressure (see :mod:`balance_cli.analysis.gas`).
 
     Parameters
     ----------
@@ -612,7 +612,7 @@ class Engine:
         engine = dataclasses.replace(self, **changes)
         # the model is the package's ground floor; the assembly check lives above it, and a
         # replaced engine must be checked as fully as one read from a file
-        from .kinematics import check_assembly
+        from ..kinematics.linkage import check_assembly
 
         check_assembly(engine)
         return engine

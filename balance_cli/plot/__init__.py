@@ -6,7 +6,7 @@ otherwise a new pyplot figure is made, so figures show inline in a notebook. Imp
 module never chooses a backend: that is the application's business (the command line uses Agg).
 
 Kinds: :func:`locus` (Tanaka's Fig. 9), :func:`spectrum`, :func:`star`, :func:`firing` (of
-:func:`balance_cli.analyse`'s results) and :func:`torque` (of :func:`balance_cli.torques.torque`'s);
+:func:`balance_cli.analyse`'s results) and :func:`torque` (of :func:`balance_cli.analysis.torque.torque`'s);
 ``of="moment"`` makes the locus and the star those of the free moment instead of the force.
 :func:`save` writes a figure in the format its file name's extension names.
 """
@@ -24,19 +24,19 @@ import matplotlib
 import numpy as np
 from matplotlib.artist import Artist
 
-from .checks import instance, items
-from .errors import PlotError
-from .output import write_bytes
-from .report.display import Scale
-from .tolerances import SPECTRUM_FLOOR
-from .units import UNIT_SYSTEMS
+from ..checks import instance, items
+from ..errors import PlotError
+from ..output import write_bytes
+from ..report.display import Scale
+from ..tolerances import SPECTRUM_FLOOR
+from ..units import UNIT_SYSTEMS
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from .analysis import EngineResult
-    from .torques import TorqueResult
+    from ..analysis.results import EngineResult
+    from ..analysis.torque import TorqueResult
 
 __all__ = ["KINDS", "FORMATS", "QUANTITIES", "locus", "spectrum", "star", "firing", "torque", "save",
            "format_of", "grid_size", "locus_points", "spectrum_data", "star_chains", "torque_data",
@@ -64,7 +64,7 @@ def _new_figure(size):
 
 def _results(results, order=None) -> "list[EngineResult]":
     """The results as a list; an ``order`` every one of them was analysed to."""
-    from .analysis import EngineResult
+    from ..analysis.results import EngineResult
 
     chosen = items(results, EngineResult, "results", PlotError)
     if order is not None:
@@ -627,7 +627,7 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
 
 
 def torque_data(result: "TorqueResult", units: str = "N") -> dict:
-    """What :func:`torque` draws of one engine's :class:`~balance_cli.torques.TorqueResult`.
+    """What :func:`torque` draws of one engine's :class:`~balance_cli.analysis.torque.TorqueResult`.
 
     Returns ``theta_deg`` (the crank angle of throw 1 over one period, the first angle repeated
     at the end to close the curve), ``inertia``, ``gas`` (None without one) and ``total`` at
@@ -635,7 +635,7 @@ def torque_data(result: "TorqueResult", units: str = "N") -> dict:
     for a four-stroke) with their ``amplitudes`` √(cos² + sin²); torques in the moment unit of
     ``units`` (N·m for "N", kN·m, MN·m, kgf·m, lbf·ft). Also ``name``, ``period_deg``, ``cycle``, ``speed_rpm``, ``unit``.
     """
-    from .units import rad_s_to_rpm
+    from ..units import rad_s_to_rpm
 
     if units not in TORQUE_UNITS:
         raise PlotError(f"must be one of {', '.join(TORQUE_UNITS)}, got {units!r}", "units")
@@ -820,7 +820,7 @@ def _compound(polylines, closed=False):
 
 
 def torque(results: "Iterable[TorqueResult]", units: str = "N", fig: "Figure | None" = None) -> "Figure":
-    """Torques of :func:`balance_cli.torques.torque`, one small picture per engine: above, the
+    """Torques of :func:`balance_cli.analysis.torque.torque`, one small picture per engine: above, the
     inertia, gas (when there is one) and total torque over one period (360°, or 720° for a
     four-stroke) against the crank angle of throw 1, and the mean total torque (dashed); below,
     the amplitude of each order of the total torque (half orders too for a four-stroke).
@@ -836,7 +836,7 @@ def torque(results: "Iterable[TorqueResult]", units: str = "N", fig: "Figure | N
     from matplotlib.lines import Line2D
     from matplotlib.patches import PathPatch
 
-    from .torques import TorqueResult
+    from ..analysis.torque import TorqueResult
 
     chosen = items(results, TorqueResult, "results", PlotError, "engine's torques")
     engines = [torque_data(r, units) for r in chosen]

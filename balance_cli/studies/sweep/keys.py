@@ -13,8 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import BalanceError, SweepError
-from ..units import DIMENSIONS, parse_quantity
+from ...errors import BalanceError, SweepError
+from ...units import DIMENSIONS, parse_quantity
 
 __all__ = ["SCHEMA", "BALANCE_FACTOR", "MAX_POINTS", "ANGLE", "NUMBER", "WHOLE", "FRACTION",
            "Parameter", "parameter_of", "normalised", "span"]

@@ -17,13 +17,14 @@ import tomllib
 from collections.abc import Iterable
 from pathlib import Path
 
-from . import checks
-from .errors import ConfigError, ModelError, UnitError
-from .kinematics import check_assembly
-from .model import (FRAMES, MAX_SHAFT_RATIO, BalancerMass, BalancerShaftSpec, CounterweightMass,
-                    Crankshaft, Cylinder, Engine, GasCycle, Parts, ShaftDisk, Throw, TorsionModel)
-from .tolerances import SAME_POSITION_M
-from .units import parse_quantity
+from .. import checks
+from ..errors import ConfigError, ModelError, UnitError
+from ..kinematics.linkage import check_assembly
+from ..model import (FRAMES, MAX_SHAFT_RATIO, BalancerMass, BalancerShaftSpec, CounterweightMass,
+                     Crankshaft, Cylinder, Engine, GasCycle, Parts, ShaftDisk, Throw,
+                     TorsionModel)
+from ..tolerances import SAME_POSITION_M
+from ..units import parse_quantity
 
 __all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template", "load_data",
            "arrangement_toml", "as_built_toml"]
@@ -178,7 +179,7 @@ def load(path: "str | os.PathLike[str]") -> Engine:
 
 def load_data(path: "str | os.PathLike[str]") -> dict:
     """The parsed TOML of the file at ``path``, checked as a configuration (its throws'
-    phases may be given or not): what :func:`balance_cli.families.family` repeats.
+    phases may be given or not): what :func:`balance_cli.studies.family.family` repeats.
 
     Raises
     ------
@@ -835,7 +836,7 @@ def arrangement_toml(template: dict, phases_deg: "Iterable[float]",
 def as_built_toml(data: dict, tables: dict, header: str = "") -> str:
     """A complete configuration: the parsed ``data`` of one (see :func:`load_data`) with the
     rows of ``tables`` (``{"counterweights": [...], "shafts": [...]}``, in the file's keys, as
-    :meth:`balance_cli.counterweight.Balance.configuration_tables` gives them) added after its
+    :meth:`balance_cli.analysis.counterweight.Balance.configuration_tables` gives them) added after its
     own ``[[counterweights]]`` and ``[[shafts]]``; ``header`` becomes comment lines at the top.
     The file's comments are not kept (TOML readers drop them)."""
     data = dict(data)

@@ -6,14 +6,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .checks import instance, items
-from .errors import AnalysisError
+from ..checks import instance, items
+from ..errors import AnalysisError
 from .firing import Firing, firing_sequence
-from .kinematics import check_assembly
-from .model import Engine
+from ..kinematics.linkage import check_assembly
+from ..model import Engine
 from .shaking import (DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, OrderComponents, Shaking, part_values,
                       shaking_forces)
-from .units import rad_s_to_rpm, wrap_degrees
+from ..units import rad_s_to_rpm, wrap_degrees
 
 __all__ = ["EngineResult", "Comparison", "analyse", "compare", "find_reference"]
 
@@ -155,8 +155,8 @@ class EngineResult:
 
     def power_related_unbalance(self, power_w: float | None = None, orders=(1, 2),
                                 classes=None):
-        """The power related unbalance of this engine (:mod:`balance_cli.marine`): a
-        :class:`~balance_cli.marine.PowerRelatedUnbalance`, or (None, why not) without a
+        """The power related unbalance of this engine (:mod:`balance_cli.analysis.marine`): a
+        :class:`~balance_cli.analysis.marine.PowerRelatedUnbalance`, or (None, why not) without a
         power."""
         # marine balances the crank with counterweight, which builds on this module
         from .marine import DEFAULT_PRU_CLASSES, power_related_unbalance

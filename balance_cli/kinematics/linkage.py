@@ -17,8 +17,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .errors import ModelError
-from .units import round_degrees
+from ..errors import ModelError
+from ..units import round_degrees
 
 __all__ = ["MassSet", "RodSet", "Linkage", "LinkageState", "linkage", "linkage_state", "pin_angle",
            "BIG_ENDS", "CRANK", "COUNTERWEIGHT", "BALANCER", "CRANKSHAFT_OWNERS", "UNKNOWN_RADIUS_M",

@@ -26,12 +26,12 @@ from typing import Any
 
 import numpy as np
 
-from ..analysis import DOCUMENT_VERSION, analyse
-from ..config import _parse, _read_text, build
-from ..counterweight import check_options, counterweights
-from ..errors import BalanceError, ConfigError, FiringError, SweepError
-from ..shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings
-from ..units import parse_quantity, rad_s_to_rpm
+from ...analysis.results import DOCUMENT_VERSION, analyse
+from ...config import _parse, _read_text, build
+from ...analysis.counterweight import check_options, counterweights
+from ...errors import BalanceError, ConfigError, FiringError, SweepError
+from ...analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings
+from ...units import parse_quantity, rad_s_to_rpm
 from .keys import (ANGLE, BALANCE_FACTOR, FRACTION, MAX_POINTS, SCHEMA, Parameter, normalised,
                    parameter_of, span)
 from .quantities import DEFAULT_QUANTITIES, QUANTITY_NAMES, Quantity, quantities_of
@@ -301,7 +301,7 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
 
     torque_of: Any = None
     if torque_wanted:
-        from ..torques import torque as torque_of   # the torques load scipy for the steadiness
+        from ...analysis.torque import torque as torque_of   # the torques load scipy for the steadiness
 
     points = []
     for i, (engine, value, value_si) in enumerate(zip(engines, values, values_si)):

@@ -1,7 +1,7 @@
 """A project-guide table for an engine family: one cylinder's data, every number of cylinders.
 
 For each cylinder count the in-line engine is built at the family's cylinder pitch, its crank
-and firing order found by the exhaustive search (:func:`balance_cli.search`, proved optimal
+and firing order found by the exhaustive search (:func:`balance_cli.cranksearch`, proved optimal
 for the objective; the labelled heuristic where the count is too large to enumerate) or taken
 from the firing orders the user gives, and analysed as the makers' project guides tabulate
 it: the external moments M1V, M1H, M2V, M2H, their power related unbalance and its class, the
@@ -14,13 +14,13 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from .analysis import DOCUMENT_VERSION, analyse
-from .checks import instance, positive, whole
-from .config import as_template, build
-from .cranksearch import DEFAULT_LIMIT, search
-from .errors import AnalysisError, BalanceError
-from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES
-from .torques import torque
+from ..analysis.results import DOCUMENT_VERSION, analyse
+from ..checks import instance, positive, whole
+from ..config import as_template, build
+from ..cranksearch import DEFAULT_LIMIT, search
+from ..errors import AnalysisError, BalanceError
+from ..analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES
+from ..analysis.torque import torque
 
 __all__ = ["FamilyRow", "FamilyResult", "family", "default_objective"]
 
@@ -162,7 +162,7 @@ def family(data: dict, path: str, cylinders: Sequence[int], objective: str | Non
         a given firing order for some cylinder counts (two-stroke, even firing), instead of
         the search's
     workers, limit : int, optional
-        as for :func:`~balance_cli.search`; a count whose exhaustive search would pass
+        as for :func:`~balance_cli.cranksearch`; a count whose exhaustive search would pass
         ``limit`` is searched by the heuristic, and labelled so
 
     Raises

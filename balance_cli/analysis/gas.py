@@ -22,9 +22,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import checks
-from .errors import AnalysisError, ConfigError, UnitError
-from .units import DIMENSIONS, check_finite_range, parse_quantity
+from .. import checks
+from ..errors import AnalysisError, ConfigError, UnitError
+from ..units import DIMENSIONS, check_finite_range, parse_quantity
 
 __all__ = ["PressureCurve", "read_pressure_csv", "read_cycle_csv", "cycle_pressure"]
 

@@ -18,14 +18,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .analysis import DOCUMENT_VERSION, EngineResult, analyse
-from . import checks
-from .errors import CounterweightError, UnitError
-from .kinematics import BALANCER, BIG_ENDS, COUNTERWEIGHT
-from .model import Engine, offset_position
+from .results import DOCUMENT_VERSION, EngineResult, analyse
+from .. import checks
+from ..errors import CounterweightError, UnitError
+from ..kinematics.linkage import BALANCER, BIG_ENDS, COUNTERWEIGHT
+from ..model import Engine, offset_position
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, Shaking
-from .tolerances import SAME_POSITION_M
-from .units import check_finite_range, phasor_deg, rad_s_to_rpm
+from ..tolerances import SAME_POSITION_M
+from ..units import check_finite_range, phasor_deg, rad_s_to_rpm
 
 __all__ = ["Plane", "Counterweight", "Shaft", "ShaftMass", "BalancerShaft", "RollingMoment",
            "Antivibrateur", "Balance", "Balances", "counterweights", "check_options",

@@ -28,20 +28,20 @@ from typing import Any
 
 import numpy as np
 
-from .analysis import DOCUMENT_VERSION
-from .checks import instance, is_real, items, positive
-from .errors import AnalysisError, OrderError, SamplingWarning
+from .results import DOCUMENT_VERSION
+from ..checks import instance, is_real, items, positive
+from ..errors import AnalysisError, OrderError, SamplingWarning
 from .gas import PressureCurve, cycle_pressure
-from .harmonics import orders_of
+from ..harmonics import orders_of
 from .firing import firing_sequence
-from .kinematics import (BIG_ENDS, CRANKSHAFT_OWNERS, check_assembly, crank_angles_of,
-                         engine_angles, linkage, linkage_state, pin_angle, piston_travel,
-                         travel_at)
-from .model import Engine
+from ..kinematics.linkage import (BIG_ENDS, CRANKSHAFT_OWNERS, check_assembly, crank_angles_of,
+                                  engine_angles, linkage, linkage_state, pin_angle, piston_travel,
+                                  travel_at)
+from ..model import Engine
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings, part_values
-from .flywheel import LOADS, Steadiness, flywheel_for, steadiness
-from .tolerances import NOISE_FLOOR
-from .units import phasor_deg, rad_s_to_rpm
+from .steadiness import LOADS, Steadiness, flywheel_for, steadiness
+from ..tolerances import NOISE_FLOOR
+from ..units import phasor_deg, rad_s_to_rpm
 
 __all__ = ["Series", "ReducedMass", "PinForce", "CrankshaftTorque", "TorqueResult", "TorqueSet",
            "torque", "periodic_derivative"]
@@ -255,7 +255,7 @@ class TorqueResult:
         the flywheel inertia that reaches a target steadiness, when asked for
     guide : GuideForces or None
         every cylinder's guide force and couple, and the H-type and X-type guide-force
-        moments (:mod:`balance_cli.guideforce`); None for a rotary, and for an engine with
+        moments (:mod:`balance_cli.analysis.guideforce`); None for a rotary, and for an engine with
         several crankshafts
     crankshafts : tuple of CrankshaftTorque
         each crankshaft's torque and main-bearing load, for an engine with several (empty
@@ -589,7 +589,7 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
     inertia_kgm2 : float, optional
         a flywheel (and propeller) inertia: then the speed over the cycle is integrated with
         the gas torque driving, the moving parts' μ(θ) and the ``load`` ("propeller" or
-        "constant"; see :func:`balance_cli.flywheel.steadiness`)
+        "constant"; see :func:`balance_cli.analysis.steadiness.steadiness`)
     target : float, optional
         a steadiness to reach: the flywheel inertia that does is given too (and the speed
         with it, when no ``inertia_kgm2`` is given)

@@ -3,7 +3,7 @@
 The shaft line and its solution are openTorsion's (Aalto University's library of disks and
 shafts: ``pip install 'balance[torsion]'``); balance supplies the engine's side: each throw's
 inertia (or the mean reduced mass of the parts on it), and the excitation, each cylinder's exact
-tangential torque order by order (:func:`balance_cli.torques.cylinder_torques`), which carries
+tangential torque order by order (:func:`balance_cli.analysis.torque.cylinder_torques`), which carries
 its firing phase because it is given against the crank angle of throw 1.
 
 The model, free end first: the ``front`` inertias (pulley, damper), the throws, the flywheel and
@@ -19,12 +19,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .checks import instance
-from .errors import AnalysisError, BalanceError
-from .firing import firing_sequence
-from .model import Engine
-from .shaking import DEFAULT_SAMPLES
-from .units import rad_s_to_rpm
+from ..checks import instance
+from ..errors import AnalysisError, BalanceError
+from ..analysis.firing import firing_sequence
+from ..model import Engine
+from ..analysis.shaking import DEFAULT_SAMPLES
+from ..units import rad_s_to_rpm
 
 __all__ = ["require_opentorsion", "first_mode_amplitudes", "TorsionUnavailable", "Mode",
            "Critical", "TorsionResult", "torsion", "throw_inertias", "phase_vector_sum",
@@ -102,8 +102,8 @@ def throw_inertias(engine, samples=DEFAULT_SAMPLES) -> np.ndarray:
     """Each throw's inertia about the crank axis, kg·m²: the [torsion] table's
     ``throw_inertia``, or the mean over a revolution of the reduced mass of the parts on the
     throw (pistons, rods, pins: ½·μ_j·ω² their kinetic energy) plus ``web_inertia``."""
-    from .kinematics import engine_angles, linkage_state
-    from .torques import _reduced_mass_and_momentum, selected
+    from ..kinematics.linkage import engine_angles, linkage_state
+    from ..analysis.torque import _reduced_mass_and_momentum, selected
 
     model = _torsion_model(engine)
     if model.throw_inertia_kgm2 is not None:
@@ -336,7 +336,7 @@ class TorsionResult:
 def _excitation(engine, samples, max_order, pressure, bore_m):
     """Per throw and order, the gas and inertia parts' complex amplitudes U (N·m; the torque
     is Re(U·e^{ikθ}) = cos_k·cos kθ + sin_k·sin kθ, so U = cos_k − i·sin_k)."""
-    from .torques import cylinder_torques
+    from ..analysis.torque import cylinder_torques
 
     cylinders = cylinder_torques(engine, samples, max_order, pressure, bore_m)
     orders = np.array([k for k, _, _ in cylinders[0].inertia.orders])
@@ -439,7 +439,7 @@ def torsion(engine, speeds_rpm=None, max_order=DEFAULT_MAX_ORDER,
 
 def _firing_deg(engine):
     """Each cylinder's firing angle (crank angle of throw 1 at its firing top dead centre), deg."""
-    from .torques import _firing_angles_deg
+    from ..analysis.torque import _firing_angles_deg
 
     return _firing_angles_deg(engine, firing_sequence(engine))
 

@@ -6,15 +6,15 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .errors import AnalysisError, OrderError
-from .harmonics import check_sampling, forward_backward, fourier, orders_of, synthesize
-from .kinematics import (BALANCER, BIG_ENDS, COUNTERWEIGHT, CRANK, MassSet, engine_angles,
-                         mass_positions)
-from .tolerances import minimum_samples
-from .units import phasor_deg, wrap_degrees
+from ..errors import AnalysisError, OrderError
+from ..harmonics import check_sampling, forward_backward, fourier, orders_of, synthesize
+from ..kinematics.linkage import (BALANCER, BIG_ENDS, COUNTERWEIGHT, CRANK, MassSet,
+                                  engine_angles, mass_positions)
+from ..tolerances import minimum_samples
+from ..units import phasor_deg, wrap_degrees
 
 if TYPE_CHECKING:
-    from .model import Engine
+    from ..model import Engine
 
 __all__ = ["DEFAULT_SAMPLES", "DEFAULT_MAX_ORDER", "MAX_SAMPLES", "OrderComponents", "Shaking",
            "shaking_forces", "ellipse", "check_settings", "part_values", "directional"]

@@ -7,7 +7,7 @@ of its two top dead centres each cylinder fires at.
 
 **Evaluation.** Every throw's order-k phasors (its cylinders and crank-pin masses, forces
 and moments about the cylinders' mean axial position) are computed once, from the exact
-kinematics of the template (:func:`balance_cli.shaking.shaking_forces`). Turning a throw by
+kinematics of the template (:func:`balance_cli.analysis.shaking.shaking_forces`). Turning a throw by
 β turns its forward parts by kβ and its backward parts by −kβ, so an arrangement's orders
 are sums of rotated phasors: exact for any rod type, and no per-layout formula.
 
@@ -52,15 +52,15 @@ from typing import Any
 
 import numpy as np
 
-from .analysis import DOCUMENT_VERSION, EngineResult, analyse
-from .errors import AnalysisError
-from .firing import firing_sequence, tdc_angles
-from .kinematics import check_assembly
-from .model import MAX_NAME_LENGTH, Engine, Throw
-from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings, shaking_forces
-from .tolerances import UNIFORM_FIRING_DEG
-from .torques import torque
-from .units import round_degrees
+from ..analysis.results import DOCUMENT_VERSION, EngineResult, analyse
+from ..errors import AnalysisError
+from ..analysis.firing import firing_sequence, tdc_angles
+from ..kinematics.linkage import check_assembly
+from ..model import MAX_NAME_LENGTH, Engine, Throw
+from ..analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings, shaking_forces
+from ..tolerances import UNIFORM_FIRING_DEG
+from ..analysis.torque import torque
+from ..units import round_degrees
 
 __all__ = ["Term", "parse_objective", "default_objective", "coefficients", "Arrangement",
            "SearchResult", "search", "DEFAULT_TOP", "DEFAULT_LIMIT"]
@@ -477,7 +477,7 @@ def _torsion_phasors(template, samples, max_order):
     turning the throw by β turns the phasor by e^{ikβ} like a forward force phasor, and the
     sum's modulus is the phase-vector sum |Σ_c β·e^{ik·φ_c}|. Also the unit of each order:
     Σ_c |β| (every cylinder in phase)."""
-    from .torsion import first_mode_amplitudes
+    from ..torsion import first_mode_amplitudes
 
     beta = first_mode_amplitudes(template, samples)
     orders = np.arange(1, max_order + 1)
@@ -1233,7 +1233,7 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     limit : int
         refuse an exhaustive search that would evaluate more cranks than this
     samples, max_order : int
-        as for :func:`balance_cli.analysis.analyse`
+        as for :func:`balance_cli.analysis.results.analyse`
     progress : callable(done, total) or None
         called as work completes
 
@@ -1528,8 +1528,8 @@ def _coefficients_of(result, units, pitch, terms, couple_units=None, tv_orders=(
             values[t.name] = float(c[t.kind][1 if t.part == "forward" else 2][t.order - 1])
     if any(t.kind in ("V", "TV") for t in terms):
         # the arrangement's own firing angles and first mode, as balance torsion sums them
-        from .torques import _firing_angles_deg
-        from .torsion import first_mode_amplitudes, phase_vector_sum
+        from ..analysis.torque import _firing_angles_deg
+        from ..torsion import first_mode_amplitudes, phase_vector_sum
 
         beta = first_mode_amplitudes(engine, result.samples)
         fire = _firing_angles_deg(engine, result.firing)

@@ -4,8 +4,8 @@ the largest resultant force and free moment, torques and steadiness."""
 import re
 from dataclasses import dataclass
 
-from ..errors import SweepError
-from ..shaking import DEFAULT_MAX_ORDER
+from ...errors import SweepError
+from ...analysis.shaking import DEFAULT_MAX_ORDER
 
 __all__ = ["Quantity", "quantities_of", "QUANTITY_NAMES", "DEFAULT_QUANTITIES"]
 

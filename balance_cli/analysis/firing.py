@@ -6,13 +6,13 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .errors import FiringError
-from .kinematics import piston_travel
-from .tolerances import TDC_PRECISION_DEG, UNIFORM_FIRING_DEG
-from .units import round_degrees, wrap_degrees
+from ..errors import FiringError
+from ..kinematics.linkage import piston_travel
+from ..tolerances import TDC_PRECISION_DEG, UNIFORM_FIRING_DEG
+from ..units import round_degrees, wrap_degrees
 
 if TYPE_CHECKING:
-    from .model import Engine
+    from ..model import Engine
 
 __all__ = ["Firing", "tdc_angles", "firing_sequence"]
 

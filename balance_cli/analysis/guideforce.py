@@ -28,7 +28,7 @@ The couple on the frame is −(s·N + e·g), s the pin's distance from the crank
 cylinder axis and e the pin offset: the gas force acts along the cylinder axis, not through
 an offset pin, so the piston's moment balance moves the guide force's line by e·g/N. With no
 offset (every crosshead engine) it is s times the piston's force on its guide. The couples add
-up to the frame reaction torque of :mod:`balance_cli.torques` (a second method: there it comes
+up to the frame reaction torque of :mod:`balance_cli.analysis.torque` (a second method: there it comes
 from the kinetic energy), the crank pins' masses turning at constant radius adding nothing.
 """
 
@@ -40,7 +40,7 @@ from typing import Any
 
 import numpy as np
 
-from .harmonics import orders_of
+from ..harmonics import orders_of
 
 __all__ = ["CylinderGuide", "GuideForces", "guide_forces"]
 
@@ -192,7 +192,7 @@ def _lateral(engine, state, net_pressure, area, turns):
 def guide_forces(engine, state, net_pressure, area, turns, series) -> GuideForces | None:
     """The guide forces of ``engine`` from its linkage ``state`` over one revolution, with the
     net pressures (by cylinder over the cycle, Pa; empty for none) on pistons of ``area`` m²;
-    ``series(curve, unit)`` makes a :class:`~balance_cli.torques.Series` of a curve over the
+    ``series(curve, unit)`` makes a :class:`~balance_cli.analysis.torque.Series` of a curve over the
     cycle. None for a rotary: its cylinders turn with the frame, and the project guides'
     couples are those of an engine on its seating."""
     if engine.is_rotary:

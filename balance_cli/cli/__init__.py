@@ -16,23 +16,24 @@ from pathlib import Path
 import click
 import numpy as np
 
-from . import __version__
-from .analysis import DOCUMENT_VERSION, analyse, compare as comparison_of
-from .config import as_built_toml, find_configs, load, load_data
-from .counterweight import Balances, check_options, counterweights
-from .errors import (BalanceError, ConfigError, FiringError, ModelError, OutputError,
-                     SamplingWarning)
-from .firing import firing_sequence
-from .output import check_folder, refuse_inputs, to_json, write_folder, write_text
-from .regress import RegressError, baseline_configs, check_baseline, check_rtol, compared_like
-from .regress import regression as regression_of
-from .report.csvfile import balance_csv, compare_csv, search_csv, torque_csv
-from .report.display import Scale
-from .report.junit import junit_xml
-from .report.tables import (balance_tables, compare_tables, list_tables, regression_tables,
-                            search_tables, show_table, steadiness_text, torque_tables)
-from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings
-from .units import UNIT_SYSTEMS, parse_quantity, rad_s_to_rpm, unit_system
+from .. import __version__
+from ..analysis.results import DOCUMENT_VERSION, analyse, compare as comparison_of
+from ..config import as_built_toml, find_configs, load, load_data
+from ..analysis.counterweight import Balances, check_options, counterweights
+from ..errors import (BalanceError, ConfigError, FiringError, ModelError, OutputError,
+                      SamplingWarning)
+from ..analysis.firing import firing_sequence
+from ..output import check_folder, refuse_inputs, to_json, write_folder, write_text
+from ..studies.regress import (RegressError, baseline_configs, check_baseline, check_rtol,
+                               compared_like)
+from ..studies.regress import regression as regression_of
+from ..report.csvfile import balance_csv, compare_csv, search_csv, torque_csv
+from ..report.display import Scale
+from ..report.junit import junit_xml
+from ..report.tables import (balance_tables, compare_tables, list_tables, regression_tables,
+                             search_tables, show_table, steadiness_text, torque_tables)
+from ..analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES, check_settings
+from ..units import UNIT_SYSTEMS, parse_quantity, rad_s_to_rpm, unit_system
 
 __all__ = ["main"]
 
@@ -581,13 +582,13 @@ def plot(paths, kind, output, order, quantity, units, samples, max_order, speed)
     if order is not None and order > max_order:
         raise click.ClickException(f"--order {order} is above --max-order {max_order}")
     _use_agg()
-    from . import plot as drawing  # matplotlib only for commands that draw
+    from .. import plot as drawing  # matplotlib only for commands that draw
 
     with _reported():
         drawing.format_of(output)
     engines = _load_all(files, speed)
     if kind == "torque":
-        from .torques import torque as torque_of
+        from ..analysis.torque import torque as torque_of
 
         # the picture draws the torques only
         results = _run_each(engines, "Torques", lambda e: torque_of(
@@ -640,7 +641,7 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
     """
     files = _inputs(paths)
     _use_agg()
-    from .report.folder import REPORT_FILES, write_report
+    from ..report.folder import REPORT_FILES, write_report
 
     with _reported():
         check_folder(output)   # the text given: Path("") would be the current folder
@@ -656,15 +657,15 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
     # counterweights are proposed for one crankshaft; the report names the engines left out
     balances = _run_each([r for r in results if not r.engine.has_several_crankshafts],
                          "Balancing", counterweights)
-    from .torques import torque as torque_of
+    from ..analysis.torque import torque as torque_of
 
     # the report shows no bearing forces: leaving them out halves the work
     torques = _run_each([r.engine for r in results], "Torques",
                         lambda e: torque_of(e, samples, max_order, bearings=False, guide=False))
     family_table = None
     if family_path is not None:
-        from .config import load_data
-        from .families import family
+        from ..config import load_data
+        from ..studies.family import family
 
         with _reported(flags={"cylinders": "--family-cylinders", "template": family_path}):
             family_table = family(load_data(family_path), str(family_path),
@@ -672,7 +673,7 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
                                   max_order=max_order)
     torsion = None
     if any(r.engine.torsion is not None for r in results):
-        from .torsion import TorsionUnavailable, require_opentorsion, torsion as torsion_of
+        from ..torsion import TorsionUnavailable, require_opentorsion, torsion as torsion_of
 
         try:
             require_opentorsion()
@@ -738,8 +739,8 @@ def torque(paths, pressure, bore, inertia, target, load, samples, max_order, uni
     With --inertia (or --target), the speed over the cycle with a flywheel and a load, and its
     steadiness (Margoulis).
     """
-    from .gas import read_pressure_csv
-    from .torques import TorqueSet, torque as torque_of
+    from ..analysis.gas import read_pressure_csv
+    from ..analysis.torque import TorqueSet, torque as torque_of
 
     if bore is not None and pressure is None:
         raise click.UsageError("--bore applies with --pressure only (a [gas] table gives its own bore)")
@@ -778,7 +779,7 @@ def _speeds_option(text):
     the default (20 % to 120 % of each engine's speed)."""
     if text is None:
         return None
-    from .torsion import MAX_SPEEDS
+    from ..torsion import MAX_SPEEDS
 
     try:
         if ":" in text:
@@ -829,7 +830,7 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
     order, at its throw: the gas torque the same at every speed, the inertia torque growing
     as the speed squared.
     """
-    from .torsion import require_opentorsion, torsion as torsion_of
+    from ..torsion import require_opentorsion, torsion as torsion_of
 
     with _reported():
         require_opentorsion()   # before any work, and not tied to one file
@@ -860,7 +861,7 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
                                          "the tables elsewhere", param_hint="--output")
     results = _run_each(engines, "Torsion", lambda e: torsion_of(e, speeds_rpm, max_order,
                                                                  samples))
-    from .report.torsion import torsion_csv, torsion_tables
+    from ..report.torsion import torsion_csv, torsion_tables
 
     scale = Scale.of(False, units)
 
@@ -873,7 +874,7 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
         text = torsion_tables(results, fmt, scale)
     if plot_dir is not None:
         _use_agg()
-        from .report import torsion as pictures
+        from ..report import torsion as pictures
 
         def fill(folder):
             names = []
@@ -910,8 +911,8 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
 def steadiness(torque_file, inertia, speed, load, target, fmt, output):
     """Speed fluctuation of an engine set driven by a measured torque curve: the periodic speed,
     the steadiness ω_m/(ω_max − ω_min), and Margoulis's closed forms r_c, r_v, r_h."""
-    from .gas import read_cycle_csv
-    from .flywheel import flywheel_for, steadiness as steadiness_of
+    from ..analysis.gas import read_cycle_csv
+    from ..analysis.steadiness import flywheel_for, steadiness as steadiness_of
 
     _guard([output], [Path(torque_file)])
     inertia_kgm2 = _quantity_option(inertia, "--inertia", "moment of inertia")
@@ -1103,9 +1104,9 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
     alike and are listed, but evaluated once. Without --heuristic the result is exhaustive:
     nothing scores better than what is listed.
     """
-    from .config import arrangement_toml, load_template
-    from .cranksearch import DEFAULT_LIMIT
-    from .cranksearch import search as search_of
+    from ..config import arrangement_toml, load_template
+    from ..cranksearch import DEFAULT_LIMIT
+    from ..cranksearch import search as search_of
 
     with _reported():
         refuse_inputs([output], [Path(template_path)])
@@ -1208,8 +1209,8 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
     Each value is set in the file's TOML and the engine rebuilt and checked exactly as a file
     is, so a value that makes no engine is reported with the file, the key and the value.
     """
-    from .report.sweeps import sweep_csv, sweep_figure, sweep_tables
-    from .sweeps import span, sweep as sweep_of
+    from ..report.sweeps import sweep_csv, sweep_figure, sweep_tables
+    from ..studies.sweep import span, sweep as sweep_of
 
     spanned = (start, stop, steps)
     if listed is not None and any(v is not None for v in spanned):
@@ -1233,7 +1234,7 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
     drawing = None
     if picture is not None:
         _use_agg()
-        from . import plot as drawing   # matplotlib only when a picture is asked for
+        from .. import plot as drawing   # matplotlib only when a picture is asked for
 
         with _reported(flags={"path": "--plot"}):
             drawing.format_of(picture)
@@ -1348,9 +1349,9 @@ def family_(path, counts, objective, firing_orders, pitch, power, workers, sampl
     FILE.toml is a configuration or search template of the family's in-line engine: one
     cylinder's data repeated at the pitch (its throws' phases and firing order are not used).
     """
-    from .config import load_data
-    from .families import family
-    from .report.tables import family_tables
+    from ..config import load_data
+    from ..studies.family import family
+    from ..report.tables import family_tables
 
     counts = _counts_option(counts)
     given = _firing_orders_option(firing_orders)
@@ -1369,7 +1370,7 @@ def family_(path, counts, objective, firing_orders, pitch, power, workers, sampl
     if fmt == "json":
         text = to_json(result.to_dict())
     elif fmt == "csv":
-        from .report.csvfile import family_csv
+        from ..report.csvfile import family_csv
 
         text = family_csv(result)
     else:
