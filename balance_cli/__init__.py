@@ -18,17 +18,19 @@ __version__ = "0.1.0"
 
 from .analysis.results import Comparison, EngineResult, analyse, compare  # noqa: E402
 from .config import find_configs, load, load_many, load_template, loads  # noqa: E402
-from .analysis.counterweight import (Antivibrateur, Balance, Counterweight, Plane, Shaft,
-                                     counterweights)
+from .analysis.balancing import Antivibrateur, Balance, Counterweight, Plane, Shaft
+from .analysis.counterweight import counterweights
 from .errors import (AnalysisError, BalanceError, ConfigError, CounterweightError, FiringError,
                      ModelError, OrderError, OutputError, PlotError, SamplingWarning, UnitError)
 from .analysis.firing import Firing  # noqa: E402
-from .analysis.gas import PressureCurve, read_cycle_csv, read_pressure_csv  # noqa: E402
+from .analysis.pressure import PressureCurve, read_cycle_csv, read_pressure_csv  # noqa: E402
 from .model import Cylinder, Engine, GasCycle, Parts, Throw  # noqa: E402
 from .studies.regress import Moved, Regression, RegressError, regression  # noqa: E402
 from .analysis.shaking import OrderComponents, Shaking  # noqa: E402
 from .analysis.steadiness import Steadiness, flywheel_for, steadiness  # noqa: E402
-from .analysis.torque import PinForce, ReducedMass, Series, TorqueResult, TorqueSet, torque  # noqa: E402
+from .analysis.pins import PinForce  # noqa: E402
+from .analysis.series import ReducedMass, Series  # noqa: E402
+from .analysis.torque import TorqueResult, TorqueSet, torque  # noqa: E402
 
 __all__ = [
     "load", "loads", "load_many", "find_configs", "analyse", "compare", "counterweights",
@@ -65,11 +67,11 @@ from .model import BalancerMass, BalancerShaftSpec, CounterweightMass  # noqa: E
 
 # torsional vibration (openTorsion, an optional extra) on first use too; not named "torsion",
 # which is its module's name
-_LAZY.update({"torsional_vibration": (".torsion", "torsion"),
+_LAZY.update({"torsional_vibration": (".torsion", "torsional_vibration"),
               "TorsionResult": (".torsion", "TorsionResult"),
-              "TorsionUnavailable": (".torsion", "TorsionUnavailable"),
-              "cylinder_torques": (".analysis.torque", "cylinder_torques"),
-              "CylinderTorque": (".analysis.torque", "CylinderTorque"),
+              "TorsionUnavailable": (".errors", "TorsionUnavailable"),
+              "cylinder_torques": (".analysis.cylinders", "cylinder_torques"),
+              "CylinderTorque": (".analysis.cylinders", "CylinderTorque"),
               "TorsionModel": (".model", "TorsionModel"), "ShaftDisk": (".model", "ShaftDisk")})
 __all__ += ["torsional_vibration", "TorsionResult", "TorsionUnavailable", "cylinder_torques",
             "CylinderTorque", "TorsionModel", "ShaftDisk"]

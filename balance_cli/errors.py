@@ -10,6 +10,7 @@ zero`` without parsing the message.
 __all__ = [
     "BalanceError", "UnitError", "ConfigError", "ModelError", "FiringError", "AnalysisError",
     "CounterweightError", "PlotError", "OutputError", "SamplingWarning", "OrderError",
+    "SweepError", "RegressError", "TorsionUnavailable",
 ]
 
 
@@ -112,5 +113,10 @@ class SweepError(BalanceError, ValueError):
         super().__init__(problem, parameter)
 
 
-# appended here rather than in the list above, so that merging other changes to it stays simple
-__all__.append("SweepError")
+
+class RegressError(BalanceError, ValueError):
+    """A baseline that is not a comparison balance can check against."""
+
+
+class TorsionUnavailable(BalanceError, ImportError):
+    """openTorsion, which torsional vibration needs, is not installed."""

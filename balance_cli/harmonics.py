@@ -7,6 +7,7 @@ constant speed ω multiplies c_k by −(kω)², so a position signal gives the a
 coefficients exactly, with no finite differences. Any N works, odd or even.
 """
 
+import math
 import warnings
 
 import numpy as np
@@ -14,7 +15,8 @@ import numpy as np
 from .errors import SamplingWarning
 from .tolerances import ALIASING_TOLERANCE
 
-__all__ = ["fourier", "orders_of", "forward_backward", "check_sampling", "synthesize"]
+__all__ = ["fourier", "orders_of", "forward_backward", "check_sampling", "synthesize",
+           "periodic_derivative", "accelerations", "shifted", "resampled"]
 
 
 def fourier(signal):
@@ -90,3 +92,40 @@ def synthesize(coefficients, upsample=1):
         # the Nyquist term is split between +N/2 and −N/2 so the padded signal stays exact
         padded[..., half] = padded[..., m - half] = coefficients[..., half] / 2
     return np.fft.ifft(padded * m, axis=-1)
+
+
+def periodic_derivative(values, period=2 * math.pi):
+    """d/dθ of samples of a periodic function over one ``period`` (last axis), spectrally."""
+    n = values.shape[-1]
+    k = orders_of(n) * (2 * math.pi / period)
+    if n % 2 == 0:
+        k[n // 2] = 0.0   # the Nyquist term has no sign; its derivative is dropped
+    return np.fft.ifft(np.fft.fft(values, axis=-1) * 1j * k, axis=-1)
+
+
+def accelerations(positions, omega):
+    """d²x/dt² at constant speed ``omega`` (rad/s) of positions over one revolution (last
+    axis), spectrally: exact for the band-limited motion."""
+    k = orders_of(positions.shape[-1]) * omega
+    return np.fft.ifft(np.fft.fft(positions, axis=-1) * -(k**2), axis=-1)
+
+
+def shifted(values, shift_rad):
+    """Samples of a real periodic signal (last axis: one revolution, evenly spaced from 0) on
+    the same grid moved on by ``shift_rad``: x(θ_j + shift), by the shift theorem (exact for a
+    signal of orders below half the samples, to rounding for one resolved by them)."""
+    n = values.shape[-1]
+    c = np.fft.rfft(values, axis=-1)
+    return np.fft.irfft(c * np.exp(1j * np.arange(c.shape[-1]) * shift_rad), n=n, axis=-1)
+
+
+def resampled(values, samples):
+    """A real periodic signal (last axis: one revolution, evenly spaced from 0) on ``samples``
+    evenly spaced angles instead: its orders below half the new samples kept (exact for a
+    signal resolved by both grids)."""
+    n = values.shape[-1]
+    c = np.fft.rfft(values, axis=-1) * (samples / n)
+    keep = samples // 2 + 1
+    if c.shape[-1] < keep:
+        c = np.concatenate([c, np.zeros(c.shape[:-1] + (keep - c.shape[-1],), complex)], axis=-1)
+    return np.fft.irfft(c[..., :keep], n=samples, axis=-1)

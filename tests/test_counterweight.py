@@ -283,7 +283,7 @@ def bramo_with_angular_eccentricity(epsilon, rho=6.0):
 
 def test_eccentricity_sign():
     """§ 7: ε = +1 (sin ε_n = λ sin ψ_n) spaces the top dead centres regularly, to second order."""
-    from balance_cli.analysis.firing import tdc_angles
+    from balance_cli.kinematics import tdc_angles
 
     def worst(epsilon):
         tdc = tdc_angles(bramo_with_angular_eccentricity(epsilon))

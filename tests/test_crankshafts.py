@@ -10,7 +10,8 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.errors import ConfigError
-from balance_cli.analysis.firing import firing_sequence, tdc_angles
+from balance_cli.analysis.firing import firing_sequence
+from balance_cli.kinematics import tdc_angles
 
 R, L = 0.08, 0.32           # crank radius and rod, m
 M = 2.0                     # one piston's reciprocating mass, kg

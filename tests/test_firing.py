@@ -8,7 +8,8 @@ from numpy.testing import assert_allclose
 
 from balance_cli import load
 from balance_cli.errors import FiringError, ModelError
-from balance_cli.analysis.firing import firing_sequence as firing, tdc_angles
+from balance_cli.analysis.firing import firing_sequence as firing
+from balance_cli.kinematics import tdc_angles
 from balance_cli.model import Cylinder, Engine, Throw
 from conftest import CONFIGS, make_engine
 

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from balance_cli.kinematics.linkage import check_assembly, mass_positions
+from balance_cli.kinematics.linkage import check_assembly, linkage_state
 from balance_cli.analysis.shaking import shaking_forces as shaking
 from conftest import make_engine
 
@@ -72,7 +72,7 @@ def test_time_domain_resultant_equals_the_sum_of_its_orders(engine):
     angles = 2 * np.pi * np.arange(SAMPLES) / SAMPLES
 
     def weighted(a):
-        masses = mass_positions(engine, a)
+        masses = linkage_state(engine, a).masses
         return masses.masses_kg @ masses.positions
 
     h, levels = 0.02, 4

@@ -235,7 +235,7 @@ def test_item9_every_angle_of_the_library_is_in_its_range():
 def test_item9_tdc_of_cylinder_one_is_zero_not_360():
     """A plain in-line engine's cylinder 1 is at TDC at θ = 0 exactly; the TDC search lands a
     hair below 360°, which must read 0."""
-    tdc = balance_cli.analysis.firing.tdc_angles(balance.load(CONFIGS / "inline-4-car.toml"))
+    tdc = balance_cli.kinematics.tdc_angles(balance.load(CONFIGS / "inline-4-car.toml"))
     assert tdc[1] == 0.0 and all(0.0 <= a < 360.0 for a in tdc.values())
     shown = invoke("show", CONFIGS / "inline-4-car.toml").stdout
     assert "360.00" not in shown

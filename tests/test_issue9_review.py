@@ -133,7 +133,7 @@ def test_tdc_search_memory_is_linear_in_cylinders():
                          cycle=2)
     travel = balance_cli.kinematics.linkage.piston_travel(engine, [0.0, 0.1], [7])
     assert list(travel) == [7]
-    tdc = balance_cli.analysis.firing.tdc_angles(engine)
+    tdc = balance_cli.kinematics.tdc_angles(engine)
     assert len(tdc) == 400
     cylinder = engine.cylinder(27)   # bank 2 (3.6°), throw 7 (108°): TDC at 3.6 − 108 mod 360
     assert_allclose(tdc[27], (3.6 - 108.0) % 360, atol=1e-5)

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from balance_cli.kinematics.linkage import mass_positions
+from balance_cli.kinematics.linkage import linkage_state
 from balance_cli.analysis.shaking import shaking_forces as shaking
 from conftest import make_engine
 
@@ -50,7 +50,7 @@ def test_harmonics_match_second_differences_of_the_exact_positions():
     samples = 128
     result = shaking(engine, samples=samples, max_order=20)
     angles = 2 * np.pi * np.arange(samples) / samples
-    acceleration = _richardson_second_derivative(lambda a: mass_positions(engine, a).positions[0],
+    acceleration = _richardson_second_derivative(lambda a: linkage_state(engine, a).masses.positions[0],
                                                  angles, 0.02, 4)
     direct = -engine.cylinders[0].reciprocating_kg * acceleration * engine.speed_rad_s**2
     from_orders = result.force()

@@ -156,7 +156,7 @@ def test_mean_gas_torque_is_the_indicated_work(cycle):
 def test_a_pressure_curve_from_a_file_gives_the_parametric_torque(tmp_path):
     """The [gas] cycle written to a CSV every 0.25° and read back: the same torque to the
     linear interpolation of that grid (1e-3 of the largest order)."""
-    from balance_cli.analysis.gas import read_pressure_csv
+    from balance_cli.analysis.pressure import CYCLE_GRID_DEG, cycle_pressure, read_pressure_csv
 
     engine = engine_with_gas([(0, 0.0), (180, 0.1), (180, 0.2), (0, 0.3)])
     reference = torque(engine, max_order=6)
@@ -164,9 +164,9 @@ def test_a_pressure_curve_from_a_file_gives_the_parametric_torque(tmp_path):
     fire = 0.0
 
     def travel(psi):
-        return balance_cli.kinematics.linkage.travel_at(engine, np.radians(fire + psi), [n])[n]
+        return balance_cli.kinematics.linkage_state(engine, np.radians(fire + psi)).travel[n]
 
-    curve = balance_cli.analysis.gas.cycle_pressure(engine.gas, travel, 720.0)
+    curve = cycle_pressure(engine.gas, travel(CYCLE_GRID_DEG), 720.0)
     angles = np.arange(0, 720, 0.25)
     rows = ["angle_deg,pressure_bar"] + [f"{float(a)!r},{float(p) / 1e5!r}"
                                          for a, p in zip(angles, curve.at(angles))]

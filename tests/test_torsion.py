@@ -17,9 +17,12 @@ from scipy.integrate import quad
 import balance_cli as balance
 from balance_cli.cli import main
 from balance_cli.errors import AnalysisError, ConfigError
-from balance_cli.torsion import (TorsionUnavailable, phase_vector_sum, throw_inertias,
-                                 torsion)
-from balance_cli.analysis.torque import cylinder_torques, torque
+from balance_cli.analysis.cylinders import cylinder_torques
+from balance_cli.analysis.firing import firing_angles
+from balance_cli.analysis.torque import torque
+from balance_cli.errors import TorsionUnavailable
+from balance_cli.torsion import phase_vector_sum, throw_inertias
+from balance_cli.torsion import torsional_vibration as torsion
 
 pytest.importorskip("opentorsion")
 
@@ -167,9 +170,7 @@ def test_holzer_three_masses():
 def test_inline6_firing_angles():
     """Firing 1-5-3-6-2-4 every 120°: cylinder c's firing angle (θ of its firing TDC) is
     120° × its place in the order."""
-    from balance_cli.torsion import _firing_deg
-
-    fire = _firing_deg(balance.loads(INLINE6))
+    fire = firing_angles(balance.loads(INLINE6))
     assert_allclose([fire[c] for c in (1, 5, 3, 6, 2, 4)], [0, 120, 240, 360, 480, 600],
                     atol=1e-9)
 
@@ -340,14 +341,14 @@ def test_missing_opentorsion(monkeypatch, tmp_path):
     """Without openTorsion: one line naming the extra; the rest of balance works."""
     monkeypatch.setitem(sys.modules, "opentorsion", None)   # import raises ImportError
     engine = balance.loads(INLINE6 + TORSION6)
-    with pytest.raises(TorsionUnavailable, match=r"pip install 'balance\[torsion\]'"):
+    with pytest.raises(TorsionUnavailable, match=r"pip install 'engine-balance\[torsion\]'"):
         torsion(engine)
     path = tmp_path / "six.toml"
     path.write_text(INLINE6 + TORSION6)
     result = run("torsion", path)
     assert result.exit_code == 1
     assert result.output.strip().splitlines() == [
-        "Error: balance torsion needs openTorsion: pip install 'balance[torsion]'"]
+        "Error: balance torsion needs openTorsion: pip install 'engine-balance[torsion]'"]
     assert run("compare", path).exit_code == 0
     assert run("torque", path).exit_code == 0
 
@@ -481,12 +482,10 @@ def test_search_tv1_is_the_largest_minor_order(tmp_path):
     template, _ = balance.load_template(path)
     result = balance.search(template, "TV1", top=1000, workers=1)
     assert len(result.arrangements) == result.arrangements_distinct == 60
-    from balance_cli.analysis.torque import _firing_angles_deg
-
     scores = []
     for a in result.arrangements:
         beta = torsion(a.engine, [1000.0], 8).modes[0].throw_amplitudes
-        fire = _firing_angles_deg(a.engine, a.result.firing)
+        fire = firing_angles(a.engine)
         amplitudes = [beta[c.throw] for c in a.engine.cylinders]
         angles = [fire[c.number] for c in a.engine.cylinders]
         by_hand = max(abs(phase_vector_sum(amplitudes, angles, k)) for k in (1, 2, 4, 5, 7, 8))
@@ -517,7 +516,7 @@ def test_report_has_a_torsion_section(tmp_path, monkeypatch):
     monkeypatch.setitem(sys.modules, "opentorsion", None)
     result = run("report", six, "-o", tmp_path / "without")
     assert result.exit_code == 0, result.output
-    assert ("Not computed: balance torsion needs openTorsion: pip install 'balance[torsion]'."
+    assert ("Not computed: balance torsion needs openTorsion: pip install 'engine-balance[torsion]'."
             in (tmp_path / "without" / "report.md").read_text())
 
 

@@ -129,12 +129,12 @@ def torsion_bench():
     try:
         import opentorsion  # noqa: F401
     except ImportError:
-        print("torsion: openTorsion is not installed (pip install 'balance[torsion]'): skipped\n")
+        print("torsion: openTorsion is not installed (pip install 'engine-balance[torsion]'): skipped\n")
         return False
     import numpy as np
 
     import balance_cli as balance
-    from balance_cli.torsion import torsion
+    from balance_cli.torsion import torsional_vibration as torsion
 
     text = (ROOT / "tests/reference/opentorsion_ice/mendes2008.toml").read_text(encoding="utf-8")
     engine = balance.loads(text + '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\n'

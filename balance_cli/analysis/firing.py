@@ -1,20 +1,20 @@
-"""Top-dead-centre angles from the geometry, and firing orders and intervals."""
+"""Firing orders and intervals, fitted to the top dead centres of the geometry."""
 
-import math
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..errors import FiringError
-from ..kinematics.linkage import piston_travel
+from ..kinematics.tdc import tdc_angles
 from ..tolerances import TDC_PRECISION_DEG, UNIFORM_FIRING_DEG
 from ..units import round_degrees, wrap_degrees
 
 if TYPE_CHECKING:
     from ..model import Engine
 
-__all__ = ["Firing", "tdc_angles", "firing_sequence"]
+__all__ = ["Firing", "firing_sequence", "firing_angles"]
 
 #: brute-force search of four-stroke orders up to this many cylinders
 _EXHAUSTIVE_LIMIT = 16
@@ -58,70 +58,6 @@ class Firing:
         return {"order": list(self.order), "angles_deg": list(self.angles_deg),
                 "intervals_deg": list(self.intervals_deg), "uniform": self.uniform,
                 "max_deviation_deg": self.max_deviation_deg, "given": self.given}
-
-
-#: cylinders whose TDCs are refined together
-_TDC_BLOCK = 16
-
-
-def tdc_angles(engine: "Engine") -> dict[int, float]:
-    """Engine angle (degrees in [0, 360)) at which each piston is farthest out, by cylinder number.
-
-    A plain rod's piston is farthest out where crank and rod are in line: in closed form. A
-    link rod's or an opposed bore's travel has one maximum a revolution: found on a 0.5° grid,
-    then refined three times by a factor of 50 on the exact linkage (to about 2e-6°).
-    """
-    closed = _plain_tdc_crank_angles(engine)
-    numbers = [c.number for c in engine.cylinders if c.number not in closed]
-    if not numbers:
-        return _as_engine_angles(engine, closed)
-    grid = np.linspace(0.0, 2 * np.pi, 720, endpoint=False)
-    travel = piston_travel(engine, grid, numbers)
-    best = np.array([grid[np.argmax(travel[n])] for n in numbers])
-    step = grid[1]
-    for _ in range(3):
-        # a fine grid round each cylinder's best angle, a block of cylinders at a time (each
-        # block's grids are closed together and the diagonal kept): memory stays linear in
-        # the number of cylinders, and the Python loop short
-        for start in range(0, len(numbers), _TDC_BLOCK):
-            block = numbers[start:start + _TDC_BLOCK]
-            local = best[start:start + len(block), None] + np.linspace(-step, step, 101)
-            travel = piston_travel(engine, local, block)
-            for i, n in enumerate(block):
-                best[start + i] = local[i, np.argmax(travel[n][i])]
-        step /= 50
-    closed.update(zip(numbers, best))
-    return _as_engine_angles(engine, closed)
-
-
-def _plain_tdc_crank_angles(engine):
-    """The crank angle (rad) of each plain-rod piston's top dead centre, in closed form: a
-    piston offset o from its axis is farthest out, at l + r from the crank axis, where crank
-    and rod are in line, the pin at asin(o/(l + r)) from the axis; link rods and opposed
-    bores are found on the linkage instead."""
-    out = {}
-    reach = engine.rod_length_m + engine.crank_radius_m
-    for c in engine.cylinders:
-        if c.is_link or c.is_opposed:
-            continue
-        throw = engine.throws[c.throw]
-        shaft = engine.crankshafts[throw.crankshaft]
-        d = shaft.direction
-        pin = engine.bank_angles_rad[c.bank] + math.asin(d * engine.pin_offset_of(c) / reach)
-        # the pin points at d·(θ + φ_s + β)
-        out[c.number] = d * pin - shaft.phase_rad - throw.phase_rad
-    return out
-
-
-def _as_engine_angles(engine, crank_rad):
-    """Crank angles (rad) by cylinder as engine angles in degrees [0, 360), in the engine's
-    cylinder order (a rotary's crankcase turns the other way)."""
-    out = {}
-    for c in engine.cylinders:
-        angle = math.degrees(float(crank_rad[c.number]))
-        out[c.number] = wrap_degrees(-angle if engine.is_rotary else angle,
-                                     tolerance=TDC_PRECISION_DEG)
-    return out
 
 
 def _after(angle, reference):
@@ -206,9 +142,10 @@ def _most_uniform_four_stroke(numbers, tdc, cycle_deg):
     return order, [float(angles[j]) for j in sequence[choice]]
 
 
+@lru_cache(maxsize=256)
 def firing_sequence(engine: "Engine") -> Firing:
     """The engine's firing sequence: the configured order fitted to the crank, or the most
-    uniform one the crank allows.
+    uniform one the crank allows. Found once per engine: every analysis asks for it.
 
     Raises
     ------
@@ -232,3 +169,11 @@ def firing_sequence(engine: "Engine") -> Firing:
     ideal = cycle_deg / len(order)
     uniform = max(abs(i - ideal) for i in intervals) <= UNIFORM_FIRING_DEG
     return Firing(order, tuple(angles), tuple(intervals), uniform, given, tdc)
+
+
+def firing_angles(engine: "Engine") -> dict[int, float]:
+    """The engine angle of each cylinder's firing top dead centre, by cylinder number, degrees
+    in [0, cycle): where the gas torque and the torsional excitation put its pressure curve."""
+    firing = firing_sequence(engine)
+    start = firing.tdc_deg[firing.order[0]]
+    return {n: (start + a) % engine.cycle_deg for n, a in zip(firing.order, firing.angles_deg)}

@@ -1,245 +1,140 @@
-"""Cylinder pressure over a working cycle: read from a CSV file, or a parametric cycle.
+"""The gas torque: every cylinder's pressure at its own firing angle, acting on its piston.
 
-The parametric cycle is a single-zone model of each cylinder, on its own exact volume curve:
-
-- from bottom dead centre before firing (ψ = −180°, ψ the crank angle from the firing top dead
-  centre) the charge is compressed polytropically from the intake pressure;
-- heat Q is released along a Wiebe curve x(ψ) = 1 − exp(−a·((ψ − ψ₀)/Δψ)^(m+1)), normalised to
-  release all of Q between the start ψ₀ and ψ₀ + Δψ;
-- the first law for a polytropic gas, dp = −n·p·dV/V + (n − 1)·dQ/V, is integrated exactly
-  through its integrating factor: p·Vⁿ = p₁·V₁ⁿ + (n − 1)·∫ Vⁿ⁻¹ dQ;
-- expansion runs to bottom dead centre (ψ = 180°), where the pressure falls to the intake
-  pressure for the rest of the cycle (gas exchange without pumping work);
-- Q is chosen so that the indicated mean effective pressure ∮ p dV / V_d is the one asked for
-  (the indicated work is linear in Q, so two passes find it exactly).
-
-The clearance volume of each cylinder is its own swept volume over (ε − 1).
+By virtual work the gas torque is −Σ (p − p_crankcase)·A·ds/dθ, s each piston's travel. The
+pressure over the cycle is a curve read from a file (the same for every cylinder, shifted to
+its firing angle) or each cylinder's own parametric [gas] cycle, integrated on the
+kinematics' fine grid of its own piston's travel.
 """
 
-import csv
-import os
+import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
-from .. import checks
-from ..errors import AnalysisError, ConfigError, UnitError
-from ..units import DIMENSIONS, check_finite_range, parse_quantity
+from ..checks import instance, positive
+from ..errors import AnalysisError, SamplingWarning
+from ..harmonics import periodic_derivative, resampled
+from ..kinematics import FINE_SAMPLES, engine_angles, fine_travel, kinematic_state
+from .firing import firing_angles
+from .pressure import PressureCurve, cycle_pressure
+from .pressure import read_cycle_csv, read_pressure_csv  # noqa: F401 TEMPORARY (cli split)
+from .shaking import MAX_SAMPLES
 
-__all__ = ["PressureCurve", "read_pressure_csv", "read_cycle_csv", "cycle_pressure"]
+__all__ = ["GasLoad", "gas_bore", "gas_load", "gas_torque", "check_gas_sampling",
+           "GAS_CONVERGENCE"]
 
-#: resolution of the parametric cycle's integration, points per crank degree: interpolated onto the
-#: analysis grid, its cylinders agree to about 1e-6 of the largest torque order
-_FINE = 20
+#: the gas torque's mean may move by this fraction (of its mean, or of a hundredth of its
+#: peak for a cycle that averages out) when the samples are doubled before a warning: the
+#: README promises a few 1e-3 at the default sampling
+GAS_CONVERGENCE = 1e-3
+
+
+def gas_bore(engine, pressure, bore_m):
+    """The bore the gas torque acts on, m (None: no gas torque): ``bore_m`` (or the [gas]
+    table's) for a pressure curve of the engine's cycle, the [gas] table's without one; a bore
+    without a pressure is an error, as is a pressure curve without a bore."""
+    if pressure is not None:
+        instance(pressure, PressureCurve, "pressure", hint=" (balance.read_pressure_csv gives one)")
+        if pressure.cycle_deg != engine.cycle_deg:
+            raise AnalysisError(f"covers {pressure.cycle_deg:g}°, but {engine.name!r} is a "
+                                f"{engine.cycle}-stroke ({engine.cycle_deg:g}°)", "pressure")
+        bore_m = bore_m if bore_m is not None else (engine.gas.bore_m if engine.gas else None)
+        if bore_m is None:
+            raise AnalysisError("is missing for the pressure curve: give the bore, or a [gas] "
+                                "table with one", "bore_m")
+        return positive(bore_m, "bore_m", "length")
+    if bore_m is not None:
+        raise AnalysisError("applies to a pressure curve only; give the pressure too (a [gas] "
+                            "table has its own bore)", "bore_m")
+    return None if engine.gas is None else engine.gas.bore_m
+
+
+def _pressure_curves(engine, fire, pressure):
+    """Every cylinder's pressure curve: ``pressure``, or its own [gas] cycle on its own
+    piston's travel from bottom dead centre to bottom dead centre round its firing."""
+    if pressure is not None:
+        return {c.number: pressure for c in engine.cylinders}
+    return {c.number: cycle_pressure(engine.gas, fine_travel(engine, c.number, fire[c.number] - 180.0),
+                                     engine.cycle_deg, engine.config_path)
+            for c in engine.cylinders}
+
+
+def _net_pressures(engine, samples, turns, fire, curves):
+    """(p − p_crankcase) of every cylinder over the cycle at ``samples`` a revolution, Pa."""
+    gas = engine.gas
+    crankcase = gas.crankcase_pa if gas is not None else 101325.0
+    theta_deg = np.degrees(engine_angles(samples * turns) * turns)
+    return {n: curve.at(theta_deg - fire[n]) - crankcase for n, curve in curves.items()}
 
 
 @dataclass(frozen=True)
-class PressureCurve:
-    """Cylinder pressure over one working cycle, from the firing top dead centre.
+class GasLoad:
+    """The gas pressure on every piston over the cycle.
 
     Attributes
     ----------
-    angles_deg : ndarray
-        crank angles from the firing TDC, increasing, within one cycle
-    pressures_pa : ndarray
-        absolute pressure at those angles, Pa
-    cycle_deg : float
-        360 or 720
-    source : str
-        where it came from (a file, or "[gas]")
+    net_pressure : dict
+        p − p_crankcase over the cycle at the analysis's samples a revolution, Pa, by
+        cylinder number
+    area_m2 : float
+        the piston area it acts on, m²
+    curves : dict
+        each cylinder's pressure curve from its firing top dead centre, by cylinder number
+    firing_deg : dict
+        each cylinder's firing angle (engine angle), degrees, by cylinder number
     """
 
-    angles_deg: np.ndarray
-    pressures_pa: np.ndarray
-    cycle_deg: float
-    source: str = ""
-
-    def at(self, angles_deg):
-        """Pressure at crank angles from the firing TDC (any, wrapped into the cycle), Pa;
-        linear between the given points, periodic."""
-        period = self.cycle_deg
-        x = np.concatenate([self.angles_deg, [self.angles_deg[0] + period]])
-        y = np.concatenate([self.pressures_pa, [self.pressures_pa[0]]])
-        return np.interp((np.asarray(angles_deg) - x[0]) % period + x[0], x, y)
+    net_pressure: dict
+    area_m2: float
+    curves: dict
+    firing_deg: dict
 
 
-def read_pressure_csv(path, cycle_deg=None):
-    """A pressure curve from a CSV file: a header ``angle_deg,pressure_<unit>`` (or
-    ``angle (deg),pressure (<unit>)``), then one row per crank angle from the firing top dead
-    centre, increasing, covering one working cycle once; absolute pressures, none negative.
-    ``cycle_deg`` 360 or 720, or None (as the README documents the call) for the cycle the
-    angles span.
-
-    Raises
-    ------
-    ConfigError
-        naming the file, the line and the fix
-    """
-    angles, values, cycle = read_cycle_csv(path, "pressure", cycle_deg)
-    return PressureCurve(angles, values, cycle, str(path))
+def gas_load(engine, samples, pressure=None, bore_m=None) -> "GasLoad | None":
+    """The :class:`GasLoad` of ``engine`` at ``samples`` a revolution, or None without a gas
+    torque; ``pressure`` and ``bore_m`` as for :func:`gas_bore`."""
+    bore = gas_bore(engine, pressure, bore_m)
+    if bore is None:
+        return None
+    fire = firing_angles(engine)
+    curves = _pressure_curves(engine, fire, pressure)
+    turns = int(round(engine.cycle_deg / 360.0))
+    return GasLoad(_net_pressures(engine, samples, turns, fire, curves), math.pi * bore**2 / 4,
+                   curves, fire)
 
 
-def read_cycle_csv(path, quantity, cycle_deg=None):
-    """Angles (degrees) and values (SI) of a quantity over one cycle from a CSV file with the
-    header ``angle_deg,<quantity>_<unit>``. ``quantity`` is "pressure" (absolute, not
-    negative) or "torque"; ``cycle_deg`` 360 or 720, or None to take the cycle the angles
-    span (up to 360°, else 720°). Returns (angles, values, cycle_deg).
-
-    Raises
-    ------
-    ConfigError
-        naming the file, the line and the fix
-    """
-    checks.path(path)
-    if quantity not in ("pressure", "torque"):
-        raise AnalysisError(f"must be 'pressure' or 'torque', got {quantity!r}", "quantity")
-    if cycle_deg is not None and (not checks.is_real(cycle_deg) or cycle_deg not in (360, 720)):
-        raise AnalysisError(f"must be 360, 720 or None (the cycle the angles span), got "
-                            f"{cycle_deg!r}", "cycle_deg")
-    if os.path.exists(path) and not os.path.isdir(path) and not os.path.isfile(path):
-        # a FIFO or a device would block or never end: only regular files are read
-        raise ConfigError(path, "", "is not a regular file; give a CSV file")
-    try:
-        with open(path, encoding="utf-8-sig", newline="") as handle:
-            rows = list(csv.reader(handle))
-    except FileNotFoundError:
-        raise ConfigError(path, "", "no such file; check the path") from None
-    except IsADirectoryError:
-        raise ConfigError(path, "", "is a folder; give a CSV file") from None
-    except UnicodeDecodeError:
-        raise ConfigError(path, "", "is not UTF-8 text; give a CSV file") from None
-    except (OSError, csv.Error) as exc:
-        raise ConfigError(path, "", f"cannot read the file ({getattr(exc, 'strerror', None) or exc})") from None
-    rows = [(i, row) for i, row in enumerate(rows, 1) if row and any(cell.strip() for cell in row)]
-    example = f"angle_deg,{quantity}_{'bar' if quantity == 'pressure' else 'Nm'}"
-    if not rows:
-        raise ConfigError(path, "", f"is empty; give a header {example} and one row per angle")
-    line, header = rows[0]
-    unit, factor = _column_unit(path, line, header, quantity, example)
-    first = header[0].strip().lower()
-    if first not in ("angle_deg", "angle (deg)", "angle [deg]", "angle"):
-        raise ConfigError(path, f"line {line}", f"the first column is {header[0].strip()!r}; name "
-                                                f"it angle_deg and give crank angles in degrees")
-    angles, values = [], []
-    for line, row in rows[1:]:
-        if len(row) != 2:
-            raise ConfigError(path, f"line {line}", f"has {len(row)} column{'' if len(row) == 1 else 's'}; give two: the angle "
-                                                    f"in degrees and the {quantity}")
-        try:
-            angle, value = float(row[0]), float(row[1])
-        except ValueError:
-            raise ConfigError(path, f"line {line}", f"cannot read {row!r} as two numbers; write "
-                                                    "them with a decimal point (12.5, not 12,5) "
-                                                    "and separate the columns by a comma") from None
-        if not np.isfinite(angle) or not np.isfinite(value):
-            raise ConfigError(path, f"line {line}", "holds a number that is not finite")
-        if abs(angle) > 2 * 720.0:
-            raise ConfigError(path, f"line {line}", f"angle {angle:g}° is beyond two cycles; give "
-                                                    "crank angles in degrees over one cycle")
-        try:
-            check_finite_range(value * factor, quantity, f"{value:g} {unit}", smallest=False)
-        except UnitError as exc:
-            raise ConfigError(path, f"line {line}", str(exc)) from None
-        if quantity == "pressure" and value < 0:
-            raise ConfigError(path, f"line {line}", f"pressure {value:g} {unit} is negative; give "
-                                                    "absolute pressures")
-        if angles and angle <= angles[-1]:
-            problem = "repeats the angle" if angle == angles[-1] else "goes back"
-            raise ConfigError(path, f"line {line}", f"{problem} ({angle:g}° after {angles[-1]:g}°); "
-                                                    "sort the rows by angle and give each once")
-        angles.append(angle)
-        values.append(value * factor)
-    if len(angles) < 8:
-        raise ConfigError(path, "", f"has {len(angles)} rows; give the cycle in at least 8 points")
-    angles = np.array(angles)
-    span = angles[-1] - angles[0]
-    steps = np.diff(angles)
-    if cycle_deg is None:
-        cycle_deg = 360.0 if span <= 360.0 else 720.0
-    if np.isclose(span, cycle_deg, atol=1e-9 * cycle_deg):
-        # the last row closes the cycle on the first: keep one of them
-        angles, values = angles[:-1], values[:-1]
-    elif span > cycle_deg or cycle_deg - span > 2 * steps.max():
-        raise ConfigError(path, f"line {rows[-1][0]}", f"the angles cover {span:g}°, not one "
-                                                       f"{cycle_deg:g}° cycle; give one cycle")
-    return angles, np.array(values), float(cycle_deg)
+def gas_torque(engine, travel_rates, net_pressure, area):
+    """The gas torque over the cycle, N·m: −Σ (p − p_c)·A·ds/dθ with each cylinder's travel
+    rate over a revolution (m/rad, by number) repeated over the cycle."""
+    turns = int(round(engine.cycle_deg / 360.0))
+    return sum(-net_pressure[c.number] * area * np.tile(travel_rates[c.number], turns)
+               for c in engine.cylinders)
 
 
-def _column_unit(path, line, header, quantity, example):
-    """The second column's unit as written, and its factor to SI."""
-    if len(header) != 2:
-        raise ConfigError(path, f"line {line}", f"the header must name two columns, such as {example}")
-    name = header[1].strip()
-    dimension = quantity
-    for prefix, suffix in ((f"{quantity}_", ""), (f"{quantity} (", ")"), (f"{quantity} [", "]")):
-        if name.lower().startswith(prefix) and name.endswith(suffix) and len(name) > len(prefix):
-            unit = name[len(prefix): len(name) - len(suffix)].strip()
-            try:
-                return unit, parse_quantity(f"1 {unit}", dimension)
-            except UnitError as exc:
-                raise ConfigError(path, f"line {line}", f"the {quantity} column's unit: {exc}") from None
-    units = ", ".join(DIMENSIONS[dimension])
-    raise ConfigError(path, f"line {line}", f"the second column is {name!r}; name it "
-                                            f"{quantity}_<unit> with a unit of {units}")
-
-
-def _wiebe(psi, start, duration, a, m):
-    """Fraction of the heat released by crank angle ψ (degrees from the firing TDC)."""
-    s = np.clip((psi - start) / duration, 0.0, 1.0)
-    return (1.0 - np.exp(-a * s ** (m + 1))) / (1.0 - np.exp(-a))
-
-
-def _compression_expansion(psi, volume, gas, heat_j):
-    """Pressure from ψ = −180° to 180° (fine grid ``psi``, volumes ``volume``)."""
-    n = gas.polytropic_exponent
-    released = heat_j * _wiebe(psi, gas.combustion_start_deg, gas.combustion_duration_deg,
-                               gas.wiebe_a, gas.wiebe_m)
-    # p·Vⁿ = p₁·V₁ⁿ + (n − 1)·∫ Vⁿ⁻¹ dQ, by the trapezoidal rule on the fine grid
-    integrand = volume ** (n - 1) * np.gradient(released, psi)
-    integral = np.concatenate([[0.0], np.cumsum(0.5 * (integrand[1:] + integrand[:-1]) * np.diff(psi))])
-    return (gas.intake_pa * volume[0] ** n + (n - 1) * integral) / volume ** n
-
-
-def cycle_pressure(gas, travel_m, cycle_deg, where="[gas]"):
-    """The parametric cycle of one cylinder.
-
-    Parameters
-    ----------
-    gas : GasCycle
-    travel_m : callable
-        the piston's distance from the crank axis (m) at crank angles from its firing TDC
-        (degrees, array)
-    cycle_deg : float
-        360 or 720
-
-    Returns
-    -------
-    PressureCurve
-    """
-    psi = np.linspace(-180.0, 180.0, 360 * _FINE + 1)
-    travel = travel_m(psi)
-    area = gas.piston_area_m2
-    swept = area * (travel.max() - travel.min())
-    clearance = swept / (gas.compression_ratio - 1)
-    volume = clearance + area * (travel.max() - travel)
-
-    def work(heat_j):
-        pressure = _compression_expansion(psi, volume, gas, heat_j)
-        # ∮ p dV: compression and expansion; gas exchange at constant pressure adds nothing
-        return pressure, np.sum(0.5 * (pressure[1:] + pressure[:-1]) * np.diff(volume))
-
-    motored, w0 = work(0.0)
-    if gas.imep_pa is None:
-        heat, pressure = 0.0, motored
-    else:
-        # pressure and work are affine in the heat released: two passes give both exactly
-        unit, w1 = work(1.0)
-        heat = (gas.imep_pa * swept - w0) / (w1 - w0)
-        if heat < 0:
-            raise ConfigError(where, "gas.imep", "is below what compression and expansion alone "
-                                                 "give; raise it or leave it out for a motored cycle")
-        pressure = motored + heat * (unit - motored)
-    angles = np.arange(0.0, cycle_deg, 1.0 / _FINE)
-    signed = (angles + cycle_deg / 2) % cycle_deg - cycle_deg / 2
-    values = np.where(np.abs(signed) <= 180.0, np.interp(signed, psi, pressure), gas.intake_pa)
-    return PressureCurve(angles, values, float(cycle_deg), "[gas]")
+def check_gas_sampling(engine, samples, load, gas_curve):
+    """Warn (:class:`SamplingWarning`) when doubling the samples moves the mean of the gas
+    torque ``gas_curve`` (of ``load`` at ``samples`` a revolution) by more than
+    :data:`GAS_CONVERGENCE`: a sharp pressure curve (a compression ratio of 100 burning in 1°)
+    aliased by 1.3 % at 256 samples, silently. The travel rates at twice the samples come from
+    the fine grid's travel (no new closing of the linkage)."""
+    finer = 2 * samples
+    turns = int(round(engine.cycle_deg / 360.0))
+    fine = kinematic_state(engine, FINE_SAMPLES).travel
+    numbers = list(fine)
+    rates = periodic_derivative(resampled(np.array([fine[n] for n in numbers]), finer)).real
+    better_curve = gas_torque(engine, dict(zip(numbers, rates)),
+                              _net_pressures(engine, finer, turns, load.firing_deg, load.curves),
+                              load.area_m2)
+    mean, better = float(np.mean(gas_curve)), float(np.mean(better_curve))
+    scale = max(abs(better), 1e-2 * float(np.abs(better_curve).max()))
+    moved = abs(mean - better) / scale if scale > 0 else 0.0
+    if moved > GAS_CONVERGENCE:
+        # an aliasing error falls at least as the square of the samples
+        needed = samples * 2 ** math.ceil(math.log2(math.sqrt(moved / GAS_CONVERGENCE)) + 1)
+        warning = SamplingWarning(
+            f"{engine.name}: the gas torque is not converged at {samples} samples a revolution: "
+            f"its mean moves by {moved:.1e} of itself at {finer} (a sharp pressure curve); "
+            f"use {min(needed, MAX_SAMPLES)} samples or more")
+        warning.samples, warning.excess = samples, moved
+        warnings.warn(warning, stacklevel=3)

@@ -40,7 +40,9 @@ from typing import Any
 
 import numpy as np
 
-from ..harmonics import orders_of
+from ..harmonics import accelerations as harmonic_accelerations
+from ..harmonics import periodic_derivative
+from .series import Series, cycle_series
 
 __all__ = ["CylinderGuide", "GuideForces", "guide_forces"]
 
@@ -105,8 +107,8 @@ class GuideForces:
         in the engine's cylinder order
     """
 
-    h_type: Any
-    x_type: Any
+    h_type: Series
+    x_type: Series
     lever_m: float
     mean_z_m: float
     cylinders: tuple
@@ -123,21 +125,6 @@ class GuideForces:
                 "cylinders": [c.to_dict() for c in self.cylinders]}
 
 
-def _accelerations(positions, omega):
-    """d²x/dt² at constant speed, spectrally (exact for the band-limited motion)."""
-    n = positions.shape[-1]
-    k = orders_of(n) * omega
-    return np.fft.ifft(np.fft.fft(positions, axis=-1) * -(k**2), axis=-1)
-
-
-def _derivative(values):
-    n = values.shape[-1]
-    k = orders_of(n).astype(float)
-    if n % 2 == 0:
-        k[n // 2] = 0.0
-    return np.fft.ifft(np.fft.fft(values, axis=-1) * 1j * k, axis=-1)
-
-
 def _lateral(engine, state, net_pressure, area, turns):
     """(lateral force of each piston on its guide, couple on the frame), by cylinder number:
     curves over the cycle (``turns`` revolutions), N and N·m."""
@@ -147,10 +134,10 @@ def _lateral(engine, state, net_pressure, area, turns):
     for index, owner in enumerate(masses.cylinder):
         row.setdefault(int(owner), index)   # a cylinder's piston comes before its knuckle
     rod_row = {int(c): i for i, c in enumerate(rods.cylinder)}
-    rates = (np.conj(rods.directions) * _derivative(rods.directions)).imag
+    rates = (np.conj(rods.directions) * periodic_derivative(rods.directions)).imag
     # every mass's acceleration in one transform
-    accelerations = _accelerations(masses.positions, omega)
-    angular = omega**2 * _derivative(rates).real
+    accelerations = harmonic_accelerations(masses.positions, omega)
+    angular = omega**2 * periodic_derivative(rates).real
     link_moments: dict = {}
     forces, couples = {}, {}
     # link rods load their master rods: solve them first
@@ -182,21 +169,21 @@ def _lateral(engine, state, net_pressure, area, turns):
             big_end = masses.positions[row[master.number]] - \
                 engine.rod_length_m * rods.directions[rod_row[master.number]]
             load = (t + 1j * w) * np.tile(u, turns) - np.tile(
-                cyl.knuckle_kg * _accelerations(knuckle, omega), turns)
+                cyl.knuckle_kg * harmonic_accelerations(knuckle, omega), turns)
             arm = np.tile(knuckle - big_end, turns)
             link_moments[master.number] = link_moments.get(master.number, 0.0) + \
                 (np.conj(arm) * load).imag
     return forces, couples
 
 
-def guide_forces(engine, state, net_pressure, area, turns, series) -> GuideForces | None:
-    """The guide forces of ``engine`` from its linkage ``state`` over one revolution, with the
-    net pressures (by cylinder over the cycle, Pa; empty for none) on pistons of ``area`` m²;
-    ``series(curve, unit)`` makes a :class:`~balance_cli.analysis.torque.Series` of a curve over the
-    cycle. None for a rotary: its cylinders turn with the frame, and the project guides'
-    couples are those of an engine on its seating."""
+def guide_forces(engine, state, net_pressure, area, turns, max_order) -> GuideForces | None:
+    """The guide forces of ``engine`` from its kinematic ``state`` over one revolution, with
+    the net pressures (by cylinder over the cycle, Pa; empty for none) on pistons of ``area``
+    m², as series of orders up to ``max_order``. None for a rotary: its cylinders turn with the
+    frame, and the project guides' couples are those of an engine on its seating."""
     if engine.is_rotary:
         return None
+    series = functools.partial(_series, engine, max_order)
     forces, couples = _lateral(engine, state, net_pressure, area, turns)
     mean = engine.mean_z_m
     lever = engine.rod_length_m
@@ -205,3 +192,7 @@ def guide_forces(engine, state, net_pressure, area, turns, series) -> GuideForce
     h = sum(couples[c.number] for c in engine.cylinders)
     x = sum(couples[c.number] * (c.z_m - mean) for c in engine.cylinders) / lever
     return GuideForces(series(h, "Nm"), series(x, "Nm"), lever, mean, cylinders)
+
+
+def _series(engine, max_order, values, unit):
+    return cycle_series(engine, values, max_order, unit)

@@ -13,7 +13,9 @@ from dataclasses import dataclass
 
 from ..checks import instance, positive
 from ..errors import AnalysisError, BalanceError
-from ..kinematics.linkage import engine_angles, piston_travel
+from ..kinematics import FINE_SAMPLES, kinematic_state
+from .counterweight import counterweights
+from .shaking import Shaking
 
 __all__ = ["DEFAULT_PRU_CLASSES", "DEFAULT_PRU_ORDERS", "Power", "PowerRelatedUnbalance",
            "engine_power", "power_related_unbalance", "pru_class", "check_classes"]
@@ -25,8 +27,9 @@ DEFAULT_PRU_CLASSES = ((60.0, "not relevant"), (120.0, "unlikely"), (220.0, "lik
 DEFAULT_PRU_ORDERS = (1, 2)
 _CLASS_WORDS = ("not relevant", "unlikely", "likely", "most likely")
 #: crank angles a revolution on which a cylinder's stroke is found (its extremes are flat:
-#: 3600 points put them within 1e-8 of the exact stroke)
+#: 3600 points put them within 1e-8 of the exact stroke): every second point of the fine grid
 _STROKE_SAMPLES = 3600
+_STROKE_STEP = FINE_SAMPLES // _STROKE_SAMPLES
 
 
 @dataclass(frozen=True)
@@ -94,8 +97,9 @@ def engine_power(engine, power_w=None):
         return Power(engine.power_at_speed_w, "given"), None
     gas = engine.gas
     if gas is not None and gas.imep_pa is not None:
-        travel = piston_travel(engine, engine_angles(_STROKE_SAMPLES))
-        swept = sum(gas.piston_area_m2 * (t.max() - t.min()) for t in travel.values())
+        travel = kinematic_state(engine, FINE_SAMPLES).travel
+        swept = sum(gas.piston_area_m2 * (t[::_STROKE_STEP].max() - t[::_STROKE_STEP].min())
+                    for t in travel.values())
         cycles_per_s = engine.speed_rad_s / (2 * math.pi) * 2 / engine.cycle
         return Power(gas.imep_pa * swept * cycles_per_s, "indicated"), None
     if engine.power_w is not None:
@@ -159,10 +163,8 @@ def power_related_unbalance(result, power_w=None, orders=DEFAULT_PRU_ORDERS,
     classes : tuple of (bound, word)
         :data:`DEFAULT_PRU_CLASSES` or :func:`check_classes` of other bounds
     """
-    from .results import EngineResult
-    from .counterweight import counterweights
-
-    instance(result, EngineResult, "result", hint=" (balance.analyse(engine))")
+    if not isinstance(getattr(result, "shaking", None), Shaking):
+        instance(result, Shaking, "result", hint=" (balance.analyse(engine))")
     if classes is not DEFAULT_PRU_CLASSES:
         _check_class_table(classes)
     power, why = engine_power(result.engine, power_w)
@@ -173,7 +175,7 @@ def power_related_unbalance(result, power_w=None, orders=DEFAULT_PRU_ORDERS,
             for k in orders) or not orders:
         raise AnalysisError(f"must be orders from 1 to {result.max_order}, got {orders!r}",
                             "orders")
-    records = result._records()
+    records = result.order_records()
     entries = tuple(_entry(k, records[k - 1], power.kilowatts, classes) for k in orders)
     balanced = None
     # counterweights are proposed for an engine with one crankshaft only

@@ -8,20 +8,17 @@ import numpy as np
 
 from ..checks import instance, items
 from ..errors import AnalysisError
+from ..kinematics import check_assembly
 from .firing import Firing, firing_sequence
-from ..kinematics.linkage import check_assembly
+from .marine import DEFAULT_PRU_CLASSES, check_classes, power_related_unbalance
 from ..model import Engine
+from ..output import DOCUMENT_VERSION, READABLE_VERSIONS  # noqa: F401 (re-exported until importers move)
 from .shaking import (DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, OrderComponents, Shaking, part_values,
                       shaking_forces)
 from ..units import rad_s_to_rpm, wrap_degrees
 
 __all__ = ["EngineResult", "Comparison", "analyse", "compare", "find_reference"]
 
-#: version of the JSON documents balance writes. 2 added the vertical and horizontal
-#: components, the free moments' summary and an axis of None for circles; balance regress
-#: still reads baselines of version 1 (their keys are a subset)
-DOCUMENT_VERSION = 2
-READABLE_VERSIONS = (1, 2)
 
 #: an ellipse's axis within this of the vertical or the horizontal is called so in words
 _DIRECTION_WORD_DEG = 1.0
@@ -123,7 +120,7 @@ class EngineResult:
         unit = "N" if part == "force" else "Nm"
         floor = engine.noise_floor_n if part == "force" else engine.noise_floor_nm
         best = None
-        records = self._records()
+        records = self.order_records()
         skip_forward, skip_backward = self.counterweight_cancels
         for o in self.shaking.orders:
             if o.order == 1 and (skip_forward or skip_backward):
@@ -145,8 +142,9 @@ class EngineResult:
         del best["min"], best["sense"]
         return best
 
-    def _records(self) -> list:
-        """The orders' JSON records, made once (the summary and the PRU read them too)."""
+    def order_records(self) -> list:
+        """The orders' JSON records (``orders`` of ``compare --format json``), made once: the
+        summary and the PRU read them too. Shared: copy before changing one."""
         cached = self.__dict__.get("_order_records")
         if cached is None:
             cached = self.shaking.records(self.engine)
@@ -158,9 +156,6 @@ class EngineResult:
         """The power related unbalance of this engine (:mod:`balance_cli.analysis.marine`): a
         :class:`~balance_cli.analysis.marine.PowerRelatedUnbalance`, or (None, why not) without a
         power."""
-        # marine balances the crank with counterweight, which builds on this module
-        from .marine import DEFAULT_PRU_CLASSES, power_related_unbalance
-
         return power_related_unbalance(self, power_w, orders, classes or DEFAULT_PRU_CLASSES)
 
     def to_dict(self, reference: "EngineResult | None" = None, pru_classes=None,
@@ -202,7 +197,7 @@ class EngineResult:
             "sampling_ok": self.shaking.sampling_ok,
             # the cached records are flat dicts in a dict: a copy two levels deep is a copy
             "orders": [{k: dict(v) if isinstance(v, dict) else v for k, v in record.items()}
-                       for record in self._records()],
+                       for record in self.order_records()],
         }
 
 
@@ -362,8 +357,6 @@ def compare(results: "Iterable[EngineResult]", reference: str | None = None,
     if len({(r.samples, r.max_order) for r in results}) > 1:
         raise AnalysisError("must all be analysed with the same samples and max_order", "results")
     if pru_classes is not None:
-        from .marine import check_classes
-
         pru_classes = check_classes(pru_classes)
     if pru_orders is None:
         pru_orders = tuple(k for k in (1, 2) if k <= results[0].max_order)

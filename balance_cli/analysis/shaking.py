@@ -8,8 +8,7 @@ import numpy as np
 
 from ..errors import AnalysisError, OrderError
 from ..harmonics import check_sampling, forward_backward, fourier, orders_of, synthesize
-from ..kinematics.linkage import (BALANCER, BIG_ENDS, COUNTERWEIGHT, CRANK, MassSet,
-                                  engine_angles, mass_positions)
+from ..kinematics import BALANCER, BIG_ENDS, COUNTERWEIGHT, CRANK, MassSet, kinematic_state
 from ..tolerances import minimum_samples
 from ..units import phasor_deg, wrap_degrees
 
@@ -302,7 +301,7 @@ def shaking_forces(engine: "Engine", samples: int = DEFAULT_SAMPLES,
         a linkage that cannot be assembled
     """
     check_settings(samples, max_order)
-    masses = mass_positions(engine, engine_angles(samples))
+    masses = kinematic_state(engine, samples).masses
     positions = fourier(masses.masses_kg[:, None] * masses.positions)
     # the inertia force −m·a has the coefficients of m·x times (kω)²
     per_mass = positions * (orders_of(samples) * engine.speed_rad_s) ** 2

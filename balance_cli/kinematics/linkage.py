@@ -1,7 +1,9 @@
-"""Exact positions of every lumped mass of an engine, at any crank angles.
+"""Closing an engine's linkage: exact positions of every lumped mass, at any crank angles.
 
 No series: every position comes from closing the linkage triangle directly, so any
-rod ratio, piston-pin offset and link-rod geometry is exact.
+rod ratio, piston-pin offset and link-rod geometry is exact. An analysis reads the closed
+linkage over a revolution from :mod:`balance_cli.kinematics.state`, which closes it once per
+engine and sampling grid; this module closes it at whatever angles it is asked.
 
 Masses (point masses, as in Tanaka 1925 and Fraeys de Veubeke 1949 §8):
 - per cylinder, ``reciprocating_kg`` at its piston pin;
@@ -20,10 +22,10 @@ import numpy as np
 from ..errors import ModelError
 from ..units import round_degrees
 
-__all__ = ["MassSet", "RodSet", "Linkage", "LinkageState", "linkage", "linkage_state", "pin_angle",
-           "BIG_ENDS", "CRANK", "COUNTERWEIGHT", "BALANCER", "CRANKSHAFT_OWNERS", "UNKNOWN_RADIUS_M",
-           "counterweight_angle", "balancer_positions", "mass_positions", "rod_directions",
-           "crank_angles_of", "travel_at", "piston_travel", "check_assembly", "engine_angles"]
+__all__ = ["MassSet", "RodSet", "Linkage", "LinkageState", "close_linkage", "linkage_state",
+           "pin_angle", "BIG_ENDS", "CRANK", "COUNTERWEIGHT", "BALANCER", "CRANKSHAFT_OWNERS",
+           "UNKNOWN_RADIUS_M", "counterweight_angle", "balancer_positions", "crank_angles_of",
+           "piston_travel", "check_assembly", "engine_angles"]
 
 #: owner codes of MassSet.cylinder for masses of no cylinder: big ends at a pin, the
 #: crankshaft's own unbalance, counterweights as built, balancer-shaft masses
@@ -195,7 +197,7 @@ def _balancer_rows(engine, angles):
     return rows
 
 
-def linkage(engine, crank_angles, numbers=None, pin_shift=None):
+def close_linkage(engine, crank_angles, numbers=None, pin_shift=None):
     """The exact linkage at crank angles ``crank_angles`` seen from the crankcase (any shape),
     of every cylinder or of those ``numbers`` (with the master rods they ride on).
 
@@ -277,7 +279,7 @@ def check_assembly(engine):
     """
     links = [c.number for c in engine.cylinders if c.is_link]
     if links:
-        linkage(engine, engine_angles(_CHECK_SAMPLES), links)
+        close_linkage(engine, engine_angles(_CHECK_SAMPLES), links)
     _check_opposed_strokes(engine)
 
 
@@ -292,7 +294,7 @@ def _check_opposed_strokes(engine):
     opposed = [c.number for c in engine.cylinders if c.is_opposed]
     if not opposed:
         return
-    travel = linkage(engine, engine_angles(720), opposed).travel
+    travel = close_linkage(engine, engine_angles(720), opposed).travel
     for n in opposed:
         sweep = float(np.ptp(travel[n]))
         if sweep < _OPPOSED_SWEEP * 4 * engine.crank_radius_m:
@@ -309,18 +311,10 @@ def piston_travel(engine, crank_angles, numbers=None, pin_shift=None):
 
     ``crank_angles`` are crank angles seen from the crankcase (any shape); returns a dict
     keyed by cylinder number. ``pin_shift`` moves crank pins (crankcase frame, see
-    :func:`linkage`).
+    :func:`close_linkage`).
     """
     check_assembly(engine)
-    return linkage(engine, crank_angles, numbers, pin_shift).travel
-
-
-def travel_at(engine, angles, numbers=None, pin_shift=None):
-    """Piston travel at engine angles ``angles`` (any shape), with crank pins moved by
-    ``pin_shift`` (fixed-frame offsets by throw index), by cylinder number, m."""
-    check_assembly(engine)
-    return linkage(engine, crank_angles_of(engine, angles), numbers,
-                   _case_shift(engine, angles, pin_shift)).travel
+    return close_linkage(engine, crank_angles, numbers, pin_shift).travel
 
 
 def _case_shift(engine, angles, pin_shift):
@@ -332,11 +326,13 @@ def _case_shift(engine, angles, pin_shift):
 
 class LinkageState(NamedTuple):
     """What one closing of the linkage gives: the point masses, the rods and the pistons'
-    travel (by cylinder number, m), at the same engine angles."""
+    travel (by cylinder number, m; an opposed bore's two pistons added), at the same engine
+    angles, and an opposed bore's far piston's own travel (by cylinder number, m)."""
 
     masses: MassSet
     rods: RodSet
     travel: dict
+    opposed_travel: dict
 
 
 def linkage_state(engine, angles, pin_shift=None, throw=None) -> LinkageState:
@@ -354,7 +350,7 @@ def linkage_state(engine, angles, pin_shift=None, throw=None) -> LinkageState:
     angles = np.asarray(angles, dtype=float)
     chosen = engine.cylinders if throw is None else [c for c in engine.cylinders
                                                      if throw in (c.throw, c.opposed_throw)]
-    piston, travel, knuckle, pins, opposed = linkage(
+    piston, travel, knuckle, pins, opposed = close_linkage(
         engine, crank_angles_of(engine, angles), None if throw is None else [c.number for c in chosen],
         _case_shift(engine, angles, pin_shift))
     rows = []  # (position, mass, z, owner, throw)
@@ -395,16 +391,4 @@ def linkage_state(engine, angles, pin_shift=None, throw=None) -> LinkageState:
         positions, directions = positions * turn, directions * turn
     masses = MassSet(positions, *(np.array([row[i] for row in rows]) for i in range(1, 5)))
     rod_set = RodSet(directions, *(np.array([row[i] for row in rod_rows]) for i in range(3)))
-    return LinkageState(masses, rod_set, travel)
-
-
-def mass_positions(engine, angles, pin_shift=None):
-    """Every point mass of ``engine`` at engine angles ``angles`` (1-D, rad), in the fixed frame
-    (with crank pins moved by ``pin_shift``, fixed-frame offsets by throw index, if given)."""
-    return linkage_state(engine, angles, pin_shift).masses
-
-
-def rod_directions(engine, angles, pin_shift=None):
-    """Every rod's unit direction at engine angles ``angles`` (1-D, rad), in the fixed frame
-    (``pin_shift`` as for :func:`mass_positions`)."""
-    return linkage_state(engine, angles, pin_shift).rods
+    return LinkageState(masses, rod_set, travel, {n: own for n, (_, own) in opposed.items()})

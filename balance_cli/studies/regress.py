@@ -21,7 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from ..analysis.results import DOCUMENT_VERSION, READABLE_VERSIONS, Comparison, analyse, compare
-from ..errors import AnalysisError, BalanceError
+from ..errors import AnalysisError, BalanceError, RegressError  # noqa: F401 (re-exported until importers move)
 from ..analysis.shaking import check_settings
 from ..tolerances import FIRING_CHANGE_DEG, NOISE_FLOOR, PHASE_CHANGE_DEG, PHASE_FLOOR
 from ..units import angle_change
@@ -31,10 +31,6 @@ __all__ = ["RegressError", "Moved", "Regression", "regression", "check_baseline"
 
 #: what a quantity is: a value compared by size, a phase (period 360°) or an axis (period 180°)
 _PERIODS = {"value": None, "phase": 360.0, "axis": 180.0}
-
-
-class RegressError(BalanceError, ValueError):
-    """A baseline that is not a comparison balance can check against."""
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ import numpy as np
 import fraeys_series
 
 from balance_cli import analyse, load
-from balance_cli.kinematics.linkage import linkage
+from balance_cli.kinematics.linkage import close_linkage as linkage
 from balance_cli.analysis.marine import power_related_unbalance
 from balance_cli.analysis.steadiness import steadiness
 from balance_cli.analysis.torque import torque
@@ -279,7 +279,7 @@ def _lead(engine, number):
     opposed piston's, each found as the maximum of its own exact travel on a 0.001° grid."""
     import numpy as np
 
-    from balance_cli.kinematics.linkage import linkage
+    from balance_cli.kinematics.linkage import close_linkage as linkage
 
     theta = np.radians(np.arange(0.0, 360.0, 0.001))
     link = linkage(engine, theta, [number])

@@ -6,8 +6,8 @@ from pathlib import Path
 import numpy as np
 
 import balance_cli as balance
-from balance_cli.analysis.gas import PressureCurve
-from balance_cli.torsion import torsion
+from balance_cli.analysis.pressure import PressureCurve
+from balance_cli.torsion import torsional_vibration as torsion
 
 HERE = Path(__file__).resolve().parent
 BORE_M = 0.105
