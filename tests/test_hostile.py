@@ -673,13 +673,14 @@ def test_a_template_too_large_is_refused_at_once_with_its_count(tmp_path, n):
 def test_the_closed_form_count_is_the_dynamic_programmes():
     """The multinomial count of one-cylinder throws, (n − 1)!/((c − 1)!·c!^(P − 1)), against the
     count over lattice occupancies: in-line 10 two-stroke 9!, in-line 8 four-stroke 7!/2³."""
-    from balance_cli import cranksearch
+    from balance_cli.cranksearch import tables
+    from balance_cli.cranksearch.problem import Problem
 
     for n, P, cap, expected in ((10, 10, 1, math.factorial(9)), (8, 4, 2, 630)):
-        problem = cranksearch._Problem(n, P, 360.0 / P, np.zeros(n), cap, [[0]] * n, None,
-                                       None, False, False, 1 + (n - 1) // 2)
-        assert cranksearch._count_cranks(problem) == expected
-        assert cranksearch._count_by_occupancy(problem) == expected
+        problem = Problem(n, P, 360.0 / P, np.zeros(n), cap, [[0]] * n, None,
+                          None, False, False, 1 + (n - 1) // 2)
+        assert tables.count_cranks(problem) == expected
+        assert tables._count_by_occupancy(problem) == expected
 
 
 def test_a_top_beyond_what_can_be_held_is_refused(tmp_path):
@@ -698,14 +699,14 @@ def test_the_pool_of_best_scores_is_linear_in_its_size():
     threshold is the 1000th smallest score offered."""
     import time
 
-    from balance_cli import cranksearch
+    from balance_cli.cranksearch.kernel import Pool
 
     class Plain:
         def orbit_key(self, crank):
             return crank
 
     scores = np.random.default_rng(1).permutation(200_000) / 200_000
-    pool = cranksearch._Pool(Plain(), 1000)
+    pool = Pool(Plain(), 1000)
     started = time.perf_counter()
     for i, score in enumerate(scores):
         pool.offer(float(score), (i,))
@@ -733,7 +734,8 @@ def test_workers_are_capped_at_what_helps_and_reported_as_run():
     """Rough edge: --workers 1000 reported 1000 workers while about 460 processes ran, and
     took 4.5 s instead of 1 s."""
     import balance_cli as balance
-    from balance_cli.cranksearch import _cores, search
+    from balance_cli.cranksearch import search
+    from balance_cli.cranksearch.parallel import _cores
 
     template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
     found = search(template, "M1", top=2, workers=1000)
@@ -761,7 +763,7 @@ def test_ctrl_c_in_a_multi_process_search_prints_no_worker_traceback(tmp_path):
 
     template = tmp_path / "i13.toml"
     template.write_text(inline_template_text(13), encoding="utf-8")
-    code = ("import sys; from balance_cli import cranksearch as c; "
+    code = ("import sys; from balance_cli.cranksearch import parallel as c; "
             "c._cores = lambda: 2; "   # two processes even on a one-core machine
             "from balance_cli.cli import main; sys.exit(main())")
     process = subprocess.Popen([sys.executable, "-c", code, "search", str(template),

@@ -1,0 +1,302 @@
+"""The crank search itself: :func:`search` checks its arguments, builds the problem, runs the
+exhaustive enumeration (local processes or a Dask cluster) or the heuristic, and lists the best.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import os
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import replace
+
+import numpy as np
+
+from ..analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings
+from ..errors import AnalysisError
+from ..kinematics.linkage import check_assembly
+from ..model import Engine, Throw
+from .final import final
+from .firing import firing_orders, reversed_order
+from .kernel import SCORE_TIE, Pool, work_units
+from .lattice import check_mirror, check_reversal, lattice
+from .objective import Term, check_terms, parse_objective
+from .parallel import run_cluster, run_local
+from .problem import Problem, guide_phasors, minor_orders, throw_phasors, torsion_phasors
+from .results import SearchResult
+from .tables import build_tables, count_cranks
+# under their former names: search has parameters and locals named as the functions are
+from .heuristic import heuristic as _heuristic
+from .problem import channels as _channels
+from .problem import couple_units as _couple_units
+from .problem import pitch as _pitch
+from .problem import units as _units
+
+__all__ = ["search", "DEFAULT_TOP", "MAX_TOP", "DEFAULT_LIMIT", "MAX_WORKERS"]
+
+DEFAULT_TOP = 10
+#: more arrangements than this are not listed: each is analysed as compare analyses it (about
+#: 5 ms and 110 kB apiece, measured on an in-line 10), so 1000 take seconds and 110 MB where
+#: the 100 000 once accepted grew past 7 GB
+MAX_TOP = 1000
+#: an exhaustive search evaluating more arrangements than this is refused (about a minute
+#: on two cores); --limit raises it, --heuristic or a cluster are the alternatives
+DEFAULT_LIMIT = 2_000_000_000
+#: more processes than this are refused (each costs memory and start-up)
+MAX_WORKERS = 1024
+
+
+def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
+           top: int = DEFAULT_TOP, allow_uneven: bool = False, step_deg: float | None = None,
+           workers: int | None = None, scheduler=None, heuristic: bool = False,
+           restarts: int = 200, seed: int = 0, limit: int = DEFAULT_LIMIT,
+           samples: int = DEFAULT_SAMPLES, max_order: int = DEFAULT_MAX_ORDER,
+           progress: Callable[[int, int], None] | None = None) -> SearchResult:
+    """The best crank arrangements and firing orders of ``template``.
+
+    Parameters
+    ----------
+    template : Engine
+        its throw phases and firing order are ignored (see
+        :func:`balance_cli.config.load_template`); a fixed frame, two or more throws
+    objective : str or sequence of Term or None
+        such as ``"F2:4,M1,M2"`` (:func:`parse_objective`); None: every F_k and M_k
+    top : int
+        how many arrangements to list (ties with the last are ranked by firing order)
+    allow_uneven, step_deg : bool, float
+        search every crank on a grid of ``step_deg`` degrees, firing or not evenly
+    workers : int or None
+        processes (None: every core); ``scheduler``: a Dask scheduler address or Client
+        instead
+    heuristic : bool
+        a local search (``restarts`` random starts, ``seed``), not proved optimal
+    limit : int
+        refuse an exhaustive search that would evaluate more cranks than this
+    samples, max_order : int
+        as for :func:`balance_cli.analysis.results.analyse`
+    progress : callable(done, total) or None
+        called as work completes
+
+    Raises
+    ------
+    AnalysisError
+        naming ``template``, ``objective``, ``top``, ``step_deg``, ``workers``, ``limit`` or
+        ``scheduler``
+    """
+    started = time.perf_counter()
+    check_settings(samples, max_order)
+    if workers is None:
+        workers = os.cpu_count() or 1
+    for name, value, low, high in (("top", top, 1, MAX_TOP), ("restarts", restarts, 1, 1_000_000),
+                                   ("limit", limit, 1, 10**15), ("seed", seed, 0, 2**63 - 1),
+                                   ("workers", workers, 1, MAX_WORKERS)):
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) \
+                or not low <= value <= high:
+            raise AnalysisError(f"must be a whole number from {low:,} to {high:,}, got {value!r}",
+                                name)
+    top, restarts, limit, seed, workers = map(int, (top, restarts, limit, seed, workers))
+    if scheduler is not None and not isinstance(scheduler, str) \
+            and not all(hasattr(scheduler, a) for a in ("scatter", "submit", "nthreads")):
+        raise AnalysisError(f"must be a scheduler address such as tcp://host:8786 or a "
+                            f"distributed.Client, got {scheduler!r}", "scheduler")
+    if heuristic and scheduler is not None:
+        raise AnalysisError("applies to the exhaustive search, but the heuristic search runs in "
+                            "this process: leave out one of the two", "scheduler")
+    if isinstance(objective, str) or objective is None:
+        terms = parse_objective(objective, max_order)
+    elif isinstance(objective, Term):
+        terms = (objective,)
+    else:
+        try:
+            terms = tuple(objective)
+        except TypeError:
+            raise AnalysisError(f"must be a string such as 'M1,M2' or Terms, got {objective!r}",
+                                "objective") from None
+    check_terms(terms, max_order)
+    if not isinstance(template, Engine):
+        raise AnalysisError(f"must be an Engine (balance.load_template gives one), got "
+                            f"{type(template).__name__}", "template")
+    if progress is not None and not callable(progress):
+        raise AnalysisError(f"must be a callable(done, total), got {progress!r}", "progress")
+    if template.is_rotary:
+        raise AnalysisError("is a rotary engine: its crank does not turn, so there are no throw "
+                            "phases to arrange; search a fixed-frame template", "template")
+    if template.has_several_crankshafts:
+        raise AnalysisError(f"has {len(template.crankshafts)} crankshafts; the search arranges "
+                            "the throws of one crankshaft: give a template with one", "template")
+    if template.counterweights or template.balancer_shafts:
+        # a counterweight is sized for one crank and a shaft's force does not turn with the
+        # throws: the per-throw phasor sums would score a different engine than the one found
+        raise AnalysisError("has counterweights or balancer shafts as built; they belong to one "
+                            "arrangement, which the search is to choose: remove the "
+                            "[[counterweights]] and [[shafts]] tables from the template",
+                            "template")
+    n = len(template.throws)
+    if n < 2:
+        raise AnalysisError("has one throw: with throw 1 at 0° there is nothing to arrange; give "
+                            "the template two or more [[throws]]", "template")
+    if any(not any(c.throw == j for c in template.cylinders) for j in range(n)):
+        empty = next(j for j in range(n) if not any(c.throw == j for c in template.cylinders))
+        raise AnalysisError(f"has no cylinder on throw {empty + 1}; remove the throw or give "
+                            "it a cylinder", "template")
+    flat = replace(template, throws=tuple(Throw(0.0, t.z_m) for t in template.throws),
+                   firing_order=None)
+    check_assembly(flat)
+    phasors = throw_phasors(flat, samples, max_order)
+    units = _units(phasors, flat.noise_floor_n)
+    pitch = _pitch(flat)
+    couple_units = torsion_units = None
+    if any(term.kind in ("H", "X") for term in terms):
+        guide = guide_phasors(flat, samples, max_order)
+        couple_units = _couple_units(guide, flat.noise_floor_n * flat.crank_radius_m)
+        phasors = np.concatenate([phasors, guide])
+    tv_orders = ()
+    if any(term.kind in ("V", "TV") for term in terms):
+        if flat.torsion is None:
+            raise AnalysisError("has no [torsion] table: a V term needs the shaft line's first "
+                                "mode", "template")
+        if couple_units is None:
+            phasors = np.concatenate([phasors, np.zeros((2,) + phasors.shape[1:], complex)])
+        torsional, torsion_units = torsion_phasors(flat, samples, max_order)
+        # the same scale as the forces', so that the symmetry checks' floor reads alike
+        phasors = np.concatenate([phasors, torsional * units.max()])
+        torsion_units = torsion_units * units.max()
+        tv_orders = minor_orders(flat, allow_uneven, max_order)
+    channels, weights, largest = _channels(terms, units, pitch, couple_units, torsion_units,
+                                           tv_orders)
+    P, s, capacity, base, offsets = lattice(flat, allow_uneven, step_deg)
+    reversal, shift = check_reversal(phasors, offsets, base, P, flat.noise_floor_n)
+    mirror = check_mirror(phasors, offsets, base, flat.noise_floor_n)
+    phase = base[:, None] + s * np.arange(P)[None, :]                 # (n, P) degrees
+    rotated = np.zeros((n, P, len(channels)), complex)
+    for i, (kind, k) in enumerate(channels):
+        sign = -1.0 if kind in (1, 3) else 1.0
+        rotated[:, :, i] = phasors[kind, :, k][:, None] * np.exp(
+            1j * sign * (k + 1) * np.radians(phase))
+    split = 1 + (n - 1) // 2
+    problem = Problem(n, P, s, base, capacity, offsets, rotated, weights, reversal, False, split,
+                       largest=largest if np.any(largest) else None)
+    # the mirror condition reads throws n−1 and n from the suffix
+    problem.mirror = mirror and n - 2 >= split
+    symmetries = ["turning the whole crank (throw 1 at 0°)"]
+    if reversal:
+        symmetries.append("running the other way round (counted once)")
+    if mirror:
+        symmetries.append("mirror image, read from the other end (evaluated once, listed)")
+    cranks = count_cranks(problem)
+    firing_per_crank = (math.factorial(capacity) ** P // capacity if capacity else 1)
+    expected = cranks if cranks is not None else P ** (n - 1)
+    reduction = (2 if reversal else 1) * (2 if problem.mirror else 1)
+    if not heuristic and expected // reduction > limit:
+        _refuse_limit(limit, expected // reduction, "about " if cranks is not None else "up to ")
+
+    # progress counts the listed arrangements' analyses too (top of them at most), the
+    # last stage, which took minutes with a large top after the bar had shown 100 %
+    if heuristic:
+        tick = _ticker(progress, restarts + top)
+        chunks = _heuristic(problem, top, restarts, seed, tick)
+        total_cranks = cranks
+    else:
+        total_cranks = build_tables(problem)
+        planned = _planned(problem)
+        if planned > limit:
+            _refuse_limit(limit, planned, "")
+        units_of_work = work_units(problem)
+        tick = _ticker(progress, len(units_of_work) + top)
+        if scheduler is not None:
+            chunks, workers = run_cluster(problem, units_of_work, top, math.inf, scheduler,
+                                           tick)
+        else:
+            chunks, workers = run_local(problem, units_of_work, top, workers, math.inf, tick)
+    truncated = any(c.truncated for c in chunks)
+    merged = Pool(problem, top)
+    for chunk in chunks:
+        for score, key in chunk.candidates:
+            merged.offer(score, key)
+    truncated |= merged.truncated
+    orbits = sorted(((s, k) for k, s in merged.best.items()), key=lambda x: (x[0], x[1]))
+    if len(orbits) >= top:
+        cut = orbits[top - 1][0]
+        orbits = [o for o in orbits if o[0] <= cut + SCORE_TIE]
+    arrangements = final(template, flat, problem, orbits, shift, terms, top, samples,
+                          max_order, units, pitch, tick, couple_units, tv_orders)
+    total = (total_cranks or 0) * firing_per_crank
+    distinct = _distinct(flat, problem, total, shift) if reversal else total
+    return SearchResult(
+        template=template, objective=terms, arrangements=tuple(arrangements),
+        arrangements_total=total, arrangements_distinct=distinct,
+        evaluated=sum(c.evaluated for c in chunks), pruned=sum(c.pruned for c in chunks),
+        exhaustive=not heuristic, method="heuristic" if heuristic else "exhaustive",
+        symmetries=tuple(symmetries), firing_orders_per_crank=firing_per_crank,
+        even=not allow_uneven, step_deg=s, ties_truncated=truncated,
+        elapsed_s=time.perf_counter() - started, workers=1 if heuristic else workers,
+        max_order=max_order, samples=samples)
+
+
+def _refuse_limit(limit, cranks, about):
+    raise AnalysisError(
+        f"is {limit:,} (cranks to evaluate), but an exhaustive search of this template evaluates "
+        f"{about}{cranks:,}; raise it (about 30 million a second on two cores), or use the "
+        "heuristic search (not proved optimal) or a cluster scheduler", "limit")
+
+
+def _planned(problem):
+    """Cranks the enumeration will score before any bound: the prefixes times the suffixes the
+    symmetry conditions leave each of them."""
+    count = 0
+    rows, groups, ties = problem.prefix_rows, problem.prefix_group, problem.prefix_tie
+    second = rows[:, 0] if rows.shape[1] else np.zeros(len(rows), int)
+    for g in np.unique(groups):
+        mine = groups == g
+        key, leader = problem.suffix_key[g], problem.suffix_leader[g]
+        n = len(problem.suffix_rows[g])
+        start = np.searchsorted(key, second[mine]) if key is not None else np.zeros(mine.sum(), int)
+        plain = n - start
+        if ties[mine].any():
+            after = np.cumsum(leader[::-1])[::-1]  # leaders from each position on
+            tied = np.where(start < n, after[np.minimum(start, n - 1)], 0)
+            plain = np.where(ties[mine], tied, plain)
+        count += int(plain.sum())
+    return count
+
+
+def _ticker(progress, total):
+    if progress is None:
+        return None
+    done = [0]
+
+    def tick(k):
+        done[0] += k
+        progress(done[0], total)
+    return tick
+
+
+def _distinct(flat, problem, total, shift):
+    """Arrangements counted once with their reversal: (total + self-reversed) / 2."""
+    P, n = problem.lattice, problem.n_throws
+    if P % 2:
+        return total // 2 if total % 2 == 0 else (total + 1) // 2
+    if not problem.capacity:
+        return (total + 2 ** (n - 1)) // 2   # every crank of phases 0 and 180° is its own reversal
+    reach = {(e - p) % P for offsets in problem.offsets for e in offsets for p in (0, P // 2)}
+    if len(reach) < P:
+        # phases of 0 and 180° alone cannot fill the lattice: no crank is its own reversal (an
+        # in-line 22's 2^21 candidates took minutes to rule out one by one)
+        return total // 2
+    fixed = 0
+    for tail in itertools.product((0, P // 2), repeat=n - 1):
+        crank = (0,) + tail
+        if problem.capacity:
+            counts = np.zeros(P, int)
+            for j, p in enumerate(crank):
+                for e in problem.offsets[j]:
+                    counts[(e - p) % P] += 1
+            if (counts != problem.capacity).any():
+                continue
+            for order in firing_orders(flat, problem, crank):
+                if reversed_order(order, flat, problem, shift) == order:
+                    fixed += 1
+        else:
+            fixed += 1
+    return (total + fixed) // 2
