@@ -18,7 +18,7 @@ from click.testing import CliRunner
 from numpy.testing import assert_allclose
 
 import balance_cli as balance
-from balance_cli import config as config_module
+from balance_cli.config import reader as config_module
 from balance_cli.cli import main
 from balance_cli.studies.sweep import SCHEMA, span
 from conftest import CONFIGS, ROOT, SINGLE, TWIN
@@ -155,7 +155,7 @@ def test_a_missing_key_the_format_allows_is_added(tmp_path):
 
 
 def test_a_parsed_dict_is_swept_and_left_unchanged():
-    data = config_module._parse(TWIN, "twin")
+    data = config_module.parse_text(TWIN, "twin")
     before = json.dumps(data, sort_keys=True)
     result = balance.sweep(data, "throws[2].z", ["90 mm", "120 mm"], "M1", name="twin.toml")
     assert json.dumps(data, sort_keys=True) == before
@@ -203,13 +203,13 @@ def test_span_writes_values_as_the_file_does():
 
 def test_schema_covers_every_key_of_the_configuration_format():
     # a key added to the format must be sweepable (or named as text) here too
-    tables = {"": config_module._TOP_KEYS, "masses": config_module._MASS_KEYS,
-              "parts": config_module._PART_KEYS, "gas": config_module._GAS_KEYS,
-              "links": config_module._LINK_KEYS, "banks[]": config_module._BANK_KEYS,
-              "throws[]": config_module._THROW_KEYS, "cylinders[]": config_module._CYLINDER_KEYS,
-              "crankshafts[]": config_module._CRANKSHAFT_KEYS,
-              "counterweights[]": config_module._COUNTERWEIGHT_KEYS,
-              "shafts[]": config_module._SHAFT_KEYS}
+    tables = {"": config_module.TOP_KEYS, "masses": config_module.MASS_KEYS,
+              "parts": config_module.PART_KEYS, "gas": config_module.GAS_KEYS,
+              "links": config_module.LINK_KEYS, "banks[]": config_module.BANK_KEYS,
+              "throws[]": config_module.THROW_KEYS, "cylinders[]": config_module.CYLINDER_KEYS,
+              "crankshafts[]": config_module.CRANKSHAFT_KEYS,
+              "counterweights[]": config_module.COUNTERWEIGHT_KEYS,
+              "shafts[]": config_module.SHAFT_KEYS}
     text_or_tables = {"name", "source", "frame", "firing_order", "masses", "parts", "gas",
                       "banks", "throws", "links", "cylinders", "crankshafts", "counterweights",
                       "shafts",

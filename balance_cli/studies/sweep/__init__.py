@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 
 from ...analysis.results import DOCUMENT_VERSION, analyse
-from ...config import _parse, _read_text, build
+from ...config import build, parse_text, read_text
 from ...analysis.counterweight import check_options, counterweights
 from ...errors import BalanceError, ConfigError, FiringError, SweepError
 from ...analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings
@@ -172,7 +172,7 @@ def _load(config, name):
         return copy.deepcopy(config), name or "<config>"
     if isinstance(config, (str, os.PathLike)):
         path = os.fspath(config)
-        return _parse(_read_text(Path(path)), path), name or path
+        return parse_text(read_text(Path(path)), path), name or path
     raise SweepError(f"must be a configuration file's path or its parsed TOML (a dict), got "
                      f"{type(config).__name__}", "config")
 

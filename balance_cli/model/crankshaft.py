@@ -1,0 +1,84 @@
+"""The crankshafts and their throws: where each crank pin sits and how it turns."""
+
+import numbers
+from dataclasses import dataclass
+
+from ..errors import ModelError
+from .values import check_angle, check_quantity
+
+__all__ = ["Crankshaft", "Throw", "REFERENCE_CRANKSHAFT"]
+
+
+@dataclass(frozen=True)
+class Crankshaft:
+    """One crankshaft of an engine with several (an H engine, an opposed-piston engine, the
+    Napier Deltic), geared 1:1 to the first.
+
+    Every crankshaft makes one turn per turn of the first (the engine angle θ): the pistons it
+    drives share cylinders and a firing cycle with the others', which repeat only then.
+
+    Parameters
+    ----------
+    x_m, y_m : float
+        position of its axis in the transverse plane, m: along the reference axis (bank angle
+        0) and across it (bank angle 90°), from the first crankshaft's axis
+    direction : int
+        +1 turning with the first crankshaft, −1 against it
+    phase_rad : float
+        its angle when the first is at 0, measured in its own sense of turning, rad: a throw of
+        phase φ on it points at direction·(θ + phase_rad + φ) from the reference axis
+    """
+
+    x_m: float = 0.0
+    y_m: float = 0.0
+    direction: int = 1
+    phase_rad: float = 0.0
+
+    def __post_init__(self):
+        check_quantity(self.x_m, "length", "x_m", sign="any")
+        check_quantity(self.y_m, "length", "y_m", sign="any")
+        if isinstance(self.direction, bool) or not isinstance(self.direction, numbers.Integral) \
+                or self.direction not in (1, -1):
+            raise ModelError(f"must be +1 (with the first crankshaft) or -1 (against it), got "
+                             f"{self.direction!r}", "direction")
+        object.__setattr__(self, "direction", int(self.direction))
+        check_angle(self.phase_rad, "phase_rad")
+
+    @property
+    def centre(self) -> complex:
+        """The axis position as a complex number, m (real along the reference axis)."""
+        return complex(self.x_m, self.y_m)
+
+
+@dataclass(frozen=True)
+class Throw:
+    """One crank throw.
+
+    Parameters
+    ----------
+    phase_rad : float
+        angle of the throw relative to throw 1, positive with rotation (of its own
+        crankshaft), rad
+    z_m : float
+        axial position, m
+    crankshaft : int
+        0-based index into ``Engine.crankshafts`` (0, the first, for an engine with one)
+    """
+
+    phase_rad: float
+    z_m: float = 0.0
+    crankshaft: int = 0
+
+    def __post_init__(self):
+        # checked here too, not only in the Engine: a Throw of NaN once built without a word
+        check_angle(self.phase_rad, "phase_rad")
+        check_quantity(self.z_m, "length", "z_m", sign="any")
+        if isinstance(self.crankshaft, bool) or not isinstance(self.crankshaft, numbers.Integral) \
+                or self.crankshaft < 0:
+            raise ModelError(f"must be a 0-based crankshaft index, got {self.crankshaft!r}",
+                             "crankshaft")
+        object.__setattr__(self, "crankshaft", int(self.crankshaft))
+
+
+#: the one crankshaft of an engine that names none: the reference itself
+REFERENCE_CRANKSHAFT = Crankshaft()
