@@ -330,8 +330,3 @@ def _crankshaft_torques(engine, state, turns, net_pressure, area, max_order):
 
 
 
-
-# TEMPORARY (until the search split merges): the old private helper
-def _firing_angles_deg(engine, firing):
-    from .firing import firing_angles
-    return firing_angles(engine)

@@ -14,7 +14,7 @@ from ..analysis.results import analyse
 from ..analysis.torque import torque
 from ..model import MAX_NAME_LENGTH
 from .firing import arrangement_engine, expand
-from .firing import phases as _phases   # final has a local of that name
+from .firing import crank_phases
 from .kernel import SCORE_TIE
 from .objective import coefficients
 from .results import Arrangement
@@ -29,7 +29,7 @@ def final(template, flat, problem, orbits, shift, terms, top, samples, max_order
     members = expand(flat, problem, orbits, shift)
     rows = []
     for (crank, order), (score, position) in members.items():
-        phases = _phases(problem, crank)
+        phases = crank_phases(problem, crank)
         engine = None
         if order is None:  # uneven: the most uniform order the crank allows, not written
             engine = arrangement_engine(template, phases, order, template.name)
@@ -89,11 +89,11 @@ def _coefficients_of(result, units, pitch, terms, couple_units=None, tv_orders=(
             values[t.name] = float(c[t.kind][1 if t.part == "forward" else 2][t.order - 1])
     if any(t.kind in ("V", "TV") for t in terms):
         # the arrangement's own firing angles and first mode, as balance torsion sums them
-        from ..analysis.torque import _firing_angles_deg
+        from ..analysis.firing import firing_angles
         from ..torsion import first_mode_amplitudes, phase_vector_sum
 
         beta = first_mode_amplitudes(engine, result.samples)
-        fire = _firing_angles_deg(engine, result.firing)
+        fire = firing_angles(engine)
         amplitudes = [beta[c.throw] for c in engine.cylinders]
         angles = [fire[c.number] for c in engine.cylinders]
         unit = sum(abs(b) for b in amplitudes)

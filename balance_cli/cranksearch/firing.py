@@ -11,7 +11,7 @@ from dataclasses import replace
 from ..model import Throw
 from ..units import round_degrees
 
-__all__ = ["firing_orders", "reversed_order", "phases", "arrangement_engine", "expand"]
+__all__ = ["firing_orders", "reversed_order", "crank_phases", "arrangement_engine", "expand"]
 
 
 def _cylinder_lattice(template, problem, crank):
@@ -73,7 +73,7 @@ def reversed_order(order, template, problem, shift):
     return tuple(backwards[start:] + backwards[:start])
 
 
-def phases(problem, crank):
+def crank_phases(problem, crank):
     return tuple(round_degrees((problem.base_deg[j] + p * problem.step_deg) % 360.0, 9) % 360.0
                  for j, p in enumerate(crank))
 

@@ -8,7 +8,7 @@ import numpy as np
 
 from .kernel import SCORE_TIE, Chunk, Pool
 
-__all__ = ["heuristic"]
+__all__ = ["heuristic_search"]
 
 
 def _score_cranks(problem, cranks):
@@ -49,7 +49,7 @@ def _random_crank(problem, rng):
     return tuple(crank)
 
 
-def heuristic(problem, top, restarts, seed, progress):
+def heuristic_search(problem, top, restarts, seed, progress):
     """Steepest descent from random cranks; moves: swap the phases of two throws that fire
     alike (keeps even firing), or, without even firing, turn one throw to another phase."""
     rng = np.random.default_rng(seed)

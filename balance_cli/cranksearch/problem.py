@@ -17,7 +17,7 @@ from ..errors import AnalysisError
 from .objective import SCALAR_KINDS
 
 __all__ = ["Problem", "throw_phasors", "guide_phasors", "torsion_phasors", "minor_orders",
-           "couple_units", "units", "pitch", "channels"]
+           "guide_couple_units", "order_units", "mean_pitch", "objective_channels"]
 
 
 @dataclass
@@ -137,7 +137,7 @@ def minor_orders(template, allow_uneven, max_order):
                  if abs(math.remainder(k * interval, 360.0)) > 1e-9)
 
 
-def couple_units(guide, floor):
+def guide_couple_units(guide, floor):
     """The order-k couple amplitude of one throw alone, N·m (0 below the noise floor: the two
     cylinders of a 90° V throw cancel at order 2 to rounding, and a unit of 1e-10 made a
     coefficient of noise)."""
@@ -145,13 +145,13 @@ def couple_units(guide, floor):
     return np.where(largest > floor, largest, 0.0)
 
 
-def units(phasors, floor):
+def order_units(phasors, floor):
     """The largest order-k force of one throw alone, N (0 below the noise floor)."""
     largest = (np.abs(phasors[0]) + np.abs(phasors[1])).max(axis=0)
     return np.where(largest > floor, largest, 0.0)
 
 
-def pitch(template):
+def mean_pitch(template):
     z = sorted(t.z_m for t in template.throws)
     pitch = (z[-1] - z[0]) / (len(z) - 1)
     if pitch <= 0.0:
@@ -160,7 +160,7 @@ def pitch(template):
     return pitch
 
 
-def channels(objective, units, pitch, couple_units=None, torsion_units=None, tv_orders=()):
+def objective_channels(objective, units, pitch, couple_units=None, torsion_units=None, tv_orders=()):
     """The complex sums the score needs, (kind 0..6, order index), and their weights, divided
     by the largest term weight (the search compares scores of order one; see SCORE_TIE); and
     for a TV1 term, which of them it takes the largest of (a mask) with their scales."""

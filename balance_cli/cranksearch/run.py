@@ -27,11 +27,11 @@ from .problem import Problem, guide_phasors, minor_orders, throw_phasors, torsio
 from .results import SearchResult
 from .tables import build_tables, count_cranks
 # under their former names: search has parameters and locals named as the functions are
-from .heuristic import heuristic as _heuristic
-from .problem import channels as _channels
-from .problem import couple_units as _couple_units
-from .problem import pitch as _pitch
-from .problem import units as _units
+from .heuristic import heuristic_search
+from .problem import objective_channels
+from .problem import guide_couple_units
+from .problem import mean_pitch
+from .problem import order_units
 
 __all__ = ["search", "DEFAULT_TOP", "MAX_TOP", "DEFAULT_LIMIT", "MAX_WORKERS"]
 
@@ -144,12 +144,12 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
                    firing_order=None)
     check_assembly(flat)
     phasors = throw_phasors(flat, samples, max_order)
-    units = _units(phasors, flat.noise_floor_n)
-    pitch = _pitch(flat)
+    units = order_units(phasors, flat.noise_floor_n)
+    pitch = mean_pitch(flat)
     couple_units = torsion_units = None
     if any(term.kind in ("H", "X") for term in terms):
         guide = guide_phasors(flat, samples, max_order)
-        couple_units = _couple_units(guide, flat.noise_floor_n * flat.crank_radius_m)
+        couple_units = guide_couple_units(guide, flat.noise_floor_n * flat.crank_radius_m)
         phasors = np.concatenate([phasors, guide])
     tv_orders = ()
     if any(term.kind in ("V", "TV") for term in terms):
@@ -163,7 +163,7 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         phasors = np.concatenate([phasors, torsional * units.max()])
         torsion_units = torsion_units * units.max()
         tv_orders = minor_orders(flat, allow_uneven, max_order)
-    channels, weights, largest = _channels(terms, units, pitch, couple_units, torsion_units,
+    channels, weights, largest = objective_channels(terms, units, pitch, couple_units, torsion_units,
                                            tv_orders)
     P, s, capacity, base, offsets = lattice(flat, allow_uneven, step_deg)
     reversal, shift = check_reversal(phasors, offsets, base, P, flat.noise_floor_n)
@@ -195,7 +195,7 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     # last stage, which took minutes with a large top after the bar had shown 100 %
     if heuristic:
         tick = _ticker(progress, restarts + top)
-        chunks = _heuristic(problem, top, restarts, seed, tick)
+        chunks = heuristic_search(problem, top, restarts, seed, tick)
         total_cranks = cranks
     else:
         total_cranks = build_tables(problem)
