@@ -5,13 +5,12 @@ balance regress reads back.
 import click
 
 from ..analysis.results import compare as comparison_of
-from ..output import to_json
 from ..report.csvfile import compare_csv
 from ..report.display import Scale
 from ..report.tables import compare_tables
 from ..units import rad_s_to_rpm
 from .batch import analyse_all, inputs, load_all, settings
-from .dispatch import guard, write
+from .dispatch import emit, guard
 from .group import main, reported
 from .options import (ABSOLUTE, FORMAT, INPUTS, MAX_ORDER, OUTPUT, SAMPLES, SPEED, UNITS,
                       numbers_option, orders_option, quantity_option)
@@ -56,13 +55,9 @@ def compare(paths, samples, max_order, absolute, units, speed, reference, power,
     with reported(flags={"pru_classes": "--pru-classes", "pru_orders": "--pru-orders"}):
         comparison = comparison_of(results, reference, classes, orders)
     scale = Scale.of(absolute, units)
-    if fmt == "json":
-        text = to_json(compare_document(comparison, engines if speed else None))
-    elif fmt == "csv":
-        text = compare_csv(comparison, scale)
-    else:
-        text = compare_tables(comparison, scale, fmt)
-    write(output, text)
+    emit(output, fmt, json=lambda: compare_document(comparison, engines if speed else None),
+         csv=lambda: compare_csv(comparison, scale),
+         table=lambda: compare_tables(comparison, scale, fmt))
 
 
 def compare_document(comparison, overridden=None):

@@ -6,13 +6,12 @@ import click
 
 from ..analysis.counterweight import Balances, check_options, counterweights
 from ..config import as_built_toml, load_data
-from ..output import to_json
 from ..report.csvfile import balance_csv
 from ..report.display import Scale
 from ..report.tables import balance_tables
 from . import options
 from .batch import inputs, load_all, passed_over, run_each, settings
-from .dispatch import guard, write
+from .dispatch import guard, render, write
 from .group import main, reported
 from .options import (ABSOLUTE, FORMAT, INPUTS, MAX_ORDER, OUTPUT, SAMPLES, SPEED, UNITS,
                       length_option, orders_option, shaft_offsets_option)
@@ -105,12 +104,9 @@ def counterweight(paths, planes, radius, balance_factor, shafts, shaft_offsets, 
 
     balances = run_each(engines, "Balancing", work)
     scale = Scale.of(absolute, units)
-    if fmt == "json":
-        text = to_json(Balances(tuple(balances)).to_dict())
-    elif fmt == "csv":
-        text = balance_csv(balances, scale)
-    else:
-        text = balance_tables(balances, scale, fmt)
+    text = render(fmt, json=lambda: Balances(tuple(balances)).to_dict(),
+                  csv=lambda: balance_csv(balances, scale),
+                  table=lambda: balance_tables(balances, scale, fmt))
     configuration = None
     if write_path is not None:
         # built before anything is written: a failure leaves no file and no report half done

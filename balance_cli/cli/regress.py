@@ -17,7 +17,7 @@ from ..studies.regress import (RegressError, baseline_configs, check_baseline, c
 from ..studies.regress import regression as regression_of
 from .batch import analyse_all, load_all, settings
 from .compare import compare_document
-from .dispatch import write
+from .dispatch import emit, write
 from .group import main, reported
 from .options import OUTPUT, UNIT_CHOICE
 
@@ -83,13 +83,8 @@ def regress(baseline, paths, rtol, update, fmt, units, output):
     with reported():
         comparison = compared_like(document, results)
         regression = regression_of(document, comparison, rtol, str(baseline))
-    if fmt == "json":
-        text = to_json(regression.to_dict())
-    elif fmt == "junit":
-        text = junit_xml(regression)
-    else:
-        text = regression_tables(regression, fmt, Scale.of(True, units))
-    write(output, text)
+    emit(output, fmt, json=regression.to_dict, junit=lambda: junit_xml(regression),
+         table=lambda: regression_tables(regression, fmt, Scale.of(True, units)))
     if update:
         write(baseline, to_json(compare_document(comparison, engines if override else None)))
         click.echo(f"wrote {baseline}", err=True)

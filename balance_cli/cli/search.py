@@ -12,12 +12,12 @@ import click
 
 from ..analysis.results import compare as comparison_of
 from ..errors import BalanceError, OutputError
-from ..output import check_folder, refuse_inputs, to_json, write_folder, write_text
+from ..output import check_folder, refuse_inputs, write_folder, write_text
 from ..report.csvfile import search_csv
 from ..report.display import Scale
 from ..report.tables import search_tables
 from .batch import settings
-from .dispatch import guard, same_path, write
+from .dispatch import emit, guard, render, same_path, write
 from .group import main, message, reported
 from .options import (FORMAT, MAX_ORDER, OUTPUT, SAMPLES, SPEED, UNITS, counts_option,
                       firing_orders_option, quantity_option)
@@ -143,15 +143,14 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
                            heuristic=heuristic, restarts=restarts, seed=seed,
                            limit=DEFAULT_LIMIT if limit is None else limit, samples=samples,
                            max_order=max_order, progress=callback)
-    if fmt == "json":
-        text = to_json(result.to_dict())
-    elif fmt == "csv":
-        text = search_csv(result)
-    else:
+
+    def table():
         with reported():
             comparison = (comparison_of([a.result for a in result.arrangements])
                           if result.arrangements else None)
-        text = search_tables(result, comparison, Scale.of(False, units), fmt)
+        return search_tables(result, comparison, Scale.of(False, units), fmt)
+
+    text = render(fmt, json=result.to_dict, csv=lambda: search_csv(result), table=table)
     if write_dir is None:
         write(output, text)
         return
@@ -228,12 +227,11 @@ def family_(path, counts, objective, firing_orders, pitch, power, workers, sampl
     with reported(flags=flags), bar:
         result = family(data, str(path), counts, objective, pitch_m, power_w, given, samples,
                         max_order, workers, progress=callback)
-    if fmt == "json":
-        text = to_json(result.to_dict())
-    elif fmt == "csv":
+
+    def csv():
         from ..report.csvfile import family_csv
 
-        text = family_csv(result)
-    else:
-        text = family_tables(result, Scale.of(True, units), fmt)
-    write(output, text)
+        return family_csv(result)
+
+    emit(output, fmt, json=result.to_dict, csv=csv,
+         table=lambda: family_tables(result, Scale.of(True, units), fmt))

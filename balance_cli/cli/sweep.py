@@ -9,10 +9,9 @@ from pathlib import Path
 import click
 
 from ..errors import SamplingWarning
-from ..output import to_json
 from . import headless
 from .batch import settings
-from .dispatch import guard, same_path, write
+from .dispatch import guard, render, same_path, write
 from .group import main, reported
 from .options import FORMAT, LOAD, MAX_ORDER, OUTPUT, SAMPLES, UNIT_CHOICE, quantity_option
 
@@ -119,12 +118,8 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
             for w in caught:
                 if not issubclass(w.category, SamplingWarning):
                     warnings.showwarning(w.message, w.category, w.filename, w.lineno)
-    if fmt == "json":
-        text = to_json(result.to_dict())
-    elif fmt == "csv":
-        text = sweep_csv(result)
-    else:
-        text = sweep_tables(result, fmt, units)
+    text = render(fmt, json=result.to_dict, csv=lambda: sweep_csv(result),
+                  table=lambda: sweep_tables(result, fmt, units))
     if drawing is not None:
         with reported(flags={"path": "--plot"}), headless.drawing():
             drawing.save(sweep_figure(result, units), picture)

@@ -7,13 +7,12 @@ from pathlib import Path
 import click
 import numpy as np
 
-from ..output import to_json
 from ..report.csvfile import torque_csv
 from ..report.display import Scale
 from ..report.tables import steadiness_text, torque_tables
 from . import batch
 from .batch import load_all, run_each, settings
-from .dispatch import guard, write
+from .dispatch import emit, guard
 from .group import main, reported
 from .options import INPUTS, LOAD, MAX_ORDER, OUTPUT, SAMPLES, SPEED, UNIT_CHOICE, quantity_option
 
@@ -78,13 +77,8 @@ def torque(paths, pressure, bore, inertia, target, load, samples, max_order, uni
 
     results = run_each(engines, "Torques", work)
     scale = Scale.of(True, units)
-    if fmt == "json":
-        text = to_json(TorqueSet(tuple(results)).to_dict())
-    elif fmt == "csv":
-        text = torque_csv(results, scale)
-    else:
-        text = torque_tables(results, scale, fmt)
-    write(output, text)
+    emit(output, fmt, json=lambda: TorqueSet(tuple(results)).to_dict(),
+         csv=lambda: torque_csv(results, scale), table=lambda: torque_tables(results, scale, fmt))
 
 
 @main.command()
@@ -121,8 +115,5 @@ def steadiness(torque_file, inertia, speed, load, target, fmt, output):
                                                             load)
     document = {"balance_version": 1, "torque_file": str(torque_file), "cycle_deg": cycle,
                 **speed.to_dict(), "inertia_for_target_kgm2": flywheel}
-    if fmt == "json":
-        text = to_json(document)
-    else:
-        text = steadiness_text(speed, flywheel) + "\n"
-    write(output, text)
+    emit(output, fmt, json=lambda: document,
+         table=lambda: steadiness_text(speed, flywheel) + "\n")

@@ -7,11 +7,11 @@ from pathlib import Path
 import click
 
 from ..analysis.results import DOCUMENT_VERSION
-from ..output import to_json, write_folder
+from ..output import write_folder
 from ..report.display import Scale
 from . import headless
 from .batch import inputs, load_all, passed_over, run_each, settings
-from .dispatch import guard, write
+from .dispatch import guard, render, write
 from .group import main, reported
 from .options import INPUTS, OUTPUT, SAMPLES, UNITS, speeds_option
 
@@ -80,13 +80,10 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
 
     scale = Scale.of(False, units)
 
-    if fmt == "json":
-        text = to_json({"balance_version": DOCUMENT_VERSION, "max_order": max_order,
-                        "engines": [r.to_dict() for r in results]})
-    elif fmt == "csv":
-        text = torsion_csv(results, scale)
-    else:
-        text = torsion_tables(results, fmt, scale)
+    text = render(fmt, json=lambda: {"balance_version": DOCUMENT_VERSION, "max_order": max_order,
+                                     "engines": [r.to_dict() for r in results]},
+                  csv=lambda: torsion_csv(results, scale),
+                  table=lambda: torsion_tables(results, fmt, scale))
     if plot_dir is not None:
         headless.use_agg()
         from ..report import torsion as pictures
