@@ -257,9 +257,9 @@ def test_ambiguous_reference_lists_only_the_matches(tmp_path):
 
 @pytest.mark.parametrize("command", ["compare", "counterweight", "plot", "report"])
 def test_output_that_is_the_input_is_refused_before_computing(tmp_path, command, monkeypatch):
-    import balance_cli.cli as cli
+    from balance_cli.cli import batch
 
-    monkeypatch.setattr(cli, "analyse", lambda *a: pytest.fail("analysed before refusing"))
+    monkeypatch.setattr(batch, "analyse", lambda *a: pytest.fail("analysed before refusing"))
     config = tmp_path / "e.toml"
     config.write_text(GOOD, encoding="utf-8")
     before = snapshot(tmp_path)

@@ -17,7 +17,8 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli import analyse, load, plot
-from balance_cli.cli import _progress, main
+from balance_cli.cli import main
+from balance_cli.cli.batch import progress
 from balance_cli.errors import PlotError
 from balance_cli.units import STANDARD_GRAVITY
 from conftest import CONFIGS, PART3
@@ -235,9 +236,9 @@ def test_plot_command_writes_each_kind(tmp_path, kind):
 
 
 def test_plot_command_refuses_a_format_before_computing(tmp_path, monkeypatch):
-    import balance_cli.cli as cli
+    from balance_cli.cli import batch
 
-    monkeypatch.setattr(cli, "analyse", lambda *a: pytest.fail("analysed before refusing"))
+    monkeypatch.setattr(batch, "analyse", lambda *a: pytest.fail("analysed before refusing"))
     for name in ("pic.jpg2", "pic"):
         result = run("plot", V8, "--kind", "locus", "--output", tmp_path / name)
         assert result.exit_code == 1 and "end the file name in one of" in result.output
@@ -283,12 +284,12 @@ def test_progress_bar_only_on_a_terminal(monkeypatch):
 
     terminal = Terminal()
     monkeypatch.setattr(sys, "stderr", terminal)
-    with _progress([1, 2, 3], "Analysing") as bar:
+    with progress([1, 2, 3], "Analysing") as bar:
         assert list(bar) == [1, 2, 3]
     assert "Analysing" in terminal.getvalue()
     quiet = io.StringIO()
     monkeypatch.setattr(sys, "stderr", quiet)
-    with _progress([1, 2, 3], "Analysing") as bar:
+    with progress([1, 2, 3], "Analysing") as bar:
         assert list(bar) == [1, 2, 3]
     assert quiet.getvalue() == ""
 

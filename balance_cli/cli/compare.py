@@ -1,0 +1,81 @@
+"""balance compare: engines side by side, order by order, and the JSON document that
+balance regress reads back.
+"""
+
+import click
+
+from ..analysis.results import compare as comparison_of
+from ..report.csvfile import compare_csv
+from ..report.display import Scale
+from ..report.tables import compare_tables
+from ..units import rad_s_to_rpm
+from .batch import analyse_all, inputs, load_all, settings
+from .dispatch import emit, guard
+from .group import main, reported
+from .options import (ABSOLUTE, FORMAT, INPUTS, MAX_ORDER, OUTPUT, SAMPLES, SPEED, UNITS,
+                      numbers_option, orders_option, quantity_option)
+
+__all__ = ["compare", "compare_document"]
+
+
+@main.command()
+@INPUTS
+@SAMPLES
+@MAX_ORDER
+@ABSOLUTE
+@UNITS
+@SPEED
+@click.option("--reference", default=None, metavar="NAME",
+              help="Engine the percentages refer to (name or unique prefix); default the first.")
+@click.option("--power", default=None, metavar="POWER",
+              help="The engines' power at the speed analysed (e.g. '14 280 kW', '21 MW', "
+                   "'19 000 hp'), for the power related unbalance; default each file's power "
+                   "(or its [gas] cycle's indicated power).")
+@click.option("--pru-classes", default=None, metavar="A,B,C",
+              help="Bounds of the PRU classes not relevant / unlikely / likely / most likely, "
+                   "N·m/kW  [default: 60,120,220, the project guides'].")
+@click.option("--pru-orders", default=None, metavar="K[,K...]",
+              help="Orders whose moments the power related unbalance judges  [default: 1,2].")
+@FORMAT
+@OUTPUT
+def compare(paths, samples, max_order, absolute, units, speed, reference, power, pru_classes,
+            pru_orders, fmt, output):
+    """Compare engines order by order, in the style of Tanaka's Part III.
+
+    FILE|DIR...: configuration files, or folders searched recursively for .toml files,
+    compared in the order given (files of a folder sorted by path).
+    """
+    files = inputs(paths)
+    guard([output], files)
+    settings(samples, max_order)
+    classes = None if pru_classes is None else numbers_option(pru_classes, "--pru-classes")
+    orders = None if pru_orders is None else orders_option(pru_orders, "--pru-orders")
+    engines = _with_power(load_all(files, speed), power)
+    results = analyse_all(engines, samples, max_order)
+    with reported(flags={"pru_classes": "--pru-classes", "pru_orders": "--pru-orders"}):
+        comparison = comparison_of(results, reference, classes, orders)
+    scale = Scale.of(absolute, units)
+    emit(output, fmt, json=lambda: compare_document(comparison, engines if speed else None),
+         csv=lambda: compare_csv(comparison, scale),
+         table=lambda: compare_tables(comparison, scale, fmt))
+
+
+def compare_document(comparison, overridden=None):
+    """compare's JSON; with the engines of a --speed run, the speed it imposed, so that
+    balance regress analyses them again at that speed."""
+    document = comparison.to_dict()
+    if overridden:
+        document["speed_override_rpm"] = rad_s_to_rpm(overridden[0].speed_rad_s)
+    return document
+
+
+def _with_power(engines, power):
+    """The engines with --power as their power at the speed they are analysed at."""
+    if power is None:
+        return engines
+    power_w = quantity_option(power.replace("\u202f", " "), "--power", "power")
+    out = []
+    for engine in engines:
+        with reported(engine):
+            out.append(engine.replace(power_w=power_w, power_speed_rad_s=engine.speed_rad_s))
+    return out

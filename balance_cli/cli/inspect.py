@@ -1,0 +1,89 @@
+"""Looking at configurations without analysing them: validate, list and show."""
+
+from pathlib import Path
+
+import click
+
+from ..analysis.firing import firing_sequence
+from ..config import load
+from ..errors import ConfigError
+from ..report.tables import list_tables, show_table
+from .batch import inputs
+from .group import main, reported
+from .options import INPUTS
+
+__all__ = ["validate", "list_", "show"]
+
+
+@main.command()
+@INPUTS
+def validate(paths):
+    """Check configuration files (and the folders' .toml files): syntax, units, geometry, firing.
+
+    Prints one line per file; exits with status 1 if any file is invalid.
+    """
+    bad = 0
+    for path in inputs(paths):
+        try:
+            engine = load(path)
+            with reported(engine):
+                firing_sequence(engine)
+        except ConfigError as exc:
+            bad += 1
+            click.echo(f"invalid: {exc}", err=True)
+        except click.ClickException as exc:
+            bad += 1
+            click.echo(f"invalid: {exc.message}", err=True)
+        else:
+            count = engine.n_cylinders
+            click.echo(f"ok: {path} ({engine.name}, {count} cylinder{'s' if count != 1 else ''})")
+    if bad:
+        raise SystemExit(1)
+
+
+@main.command("list")
+@click.argument("folder", required=False, default="configs", metavar="[DIR]")
+def list_(folder):
+    """List the engines in DIR (default: configs, in the current folder): name, cylinders,
+    cycle, frame, source.
+
+    One table per folder, headed by the folder's path relative to DIR (DIR itself for the
+    files directly in it): the files of DIR first, then each folder in path order, a folder
+    before its subfolders (configs, tanaka-part3, today/boxer, today/inline, ...).
+
+    Invalid files are reported on standard error (exit status 1) after the listing.
+    """
+    root = Path(folder)
+    if not root.is_dir():
+        raise click.ClickException(f"{folder}: no such folder; give a folder of .toml files")
+    groups, errors = {}, []
+    for path in inputs([folder]):
+        try:
+            engine = load(path)
+        except ConfigError as exc:
+            errors.append(str(exc))
+            continue
+        groups.setdefault(Path(path).parent.relative_to(root).parts, []).append(engine)
+    # folders sorted by their path parts: DIR's own files first, a folder before its subfolders
+    if groups:
+        click.echo(list_tables((folder if not parts else "/".join(parts), groups[parts])
+                               for parts in sorted(groups)))
+    for error in errors:
+        click.echo(f"invalid: {error}", err=True)
+    if errors:
+        raise SystemExit(1)
+
+
+@main.command()
+@click.argument("path", metavar="FILE")
+def show(path):
+    """Show one engine, one row per cylinder: bank, throw, phase, z, rod type and TDC angle.
+
+    The TDC angle is the engine angle (crank angle; crankcase angle for a rotary) at which
+    the piston is farthest out, found on the exact linkage.
+    """
+    with reported():
+        engine = load(path)
+    with reported(engine):
+        fire = firing_sequence(engine)
+    click.echo(show_table(engine, fire), nl=False)
