@@ -10,84 +10,96 @@ The package is a library first; the ``balance`` command is a thin face of it::
     bal = balance.counterweights(engine, planes=[1, 4], radius_m=0.06)
     fig = balance.plot.locus([result])     # matplotlib Figure (balance.plot loads matplotlib)
 
-Every error is a :class:`BalanceError`. SI units and radians throughout; see the README's
-"Python API" for every name, unit and exception.
+Every error is a :class:`BalanceError`. SI units and radians inside; a parameter in another
+unit says it in its name (``speed_rpm``, ``angle_deg``). Cylinders, throws, banks, crankshafts
+and planes are numbered from 1, as in the files and the tables. See the README's "Python API"
+for every name, unit and exception.
+
+The names below load on first use where they need what most commands do not (matplotlib for
+:mod:`balance_cli.plot`, the search, sweeps, families and torsional vibration), so that
+``balance compare`` starts fast; ``dir(balance_cli)`` lists them all.
 """
 
-__version__ = "0.1.0"
+import importlib
 
-from .analysis.results import Comparison, EngineResult, analyse, compare  # noqa: E402
-from .config import find_configs, load, load_many, load_template, loads  # noqa: E402
-from .analysis.balancing import Antivibrateur, Balance, Counterweight, Plane, Shaft
+from .about import __version__
+from .analysis.balancing import (Antivibrateur, Balance, Balances, BalancerShaft, Counterweight,
+                                 Plane, RollingMoment, Shaft, ShaftMass)
 from .analysis.counterweight import counterweights
+from .analysis.cylinders import CylinderTorque, CylinderTorques, cylinder_torques
+from .analysis.firing import Firing
+from .analysis.guideforce import GuideForces
+from .analysis.marine import PowerRelatedUnbalance, power_related_unbalance
+from .analysis.pins import PinForce
+from .analysis.pressure import PressureCurve, read_cycle_csv, read_pressure_csv
+from .analysis.results import Comparison, EngineResult, analyse, compare
+from .analysis.series import ReducedMass, Series
+from .analysis.shaking import OrderComponents, Shaking
+from .analysis.steadiness import Steadiness, flywheel_for, steadiness
+from .analysis.torque import CrankshaftTorque, TorqueResult, TorqueSet, torque
+from .config import find_configs, load, load_data, load_many, load_template, loads
 from .errors import (AnalysisError, BalanceError, ConfigError, CounterweightError, FiringError,
-                     ModelError, OrderError, OutputError, PlotError, SamplingWarning, UnitError)
-from .analysis.firing import Firing  # noqa: E402
-from .analysis.pressure import PressureCurve, read_cycle_csv, read_pressure_csv  # noqa: E402
-from .model import Cylinder, Engine, GasCycle, Parts, Throw  # noqa: E402
-from .studies.regress import Moved, Regression, RegressError, regression  # noqa: E402
-from .analysis.shaking import OrderComponents, Shaking  # noqa: E402
-from .analysis.steadiness import Steadiness, flywheel_for, steadiness  # noqa: E402
-from .analysis.pins import PinForce  # noqa: E402
-from .analysis.series import ReducedMass, Series  # noqa: E402
-from .analysis.torque import TorqueResult, TorqueSet, torque  # noqa: E402
+                     ModelError, OrderError, OutputError, PlotError, RegressError,
+                     SamplingWarning, SweepError, TorsionUnavailable, UnitError)
+from .model import (BalancerMass, BalancerShaftSpec, Crankshaft, CounterweightMass, Cylinder,
+                    Engine, GasCycle, Parts, ShaftDisk, Throw, TorsionModel)
+from .studies.regress import Moved, Regression, regression
+
+#: public names loaded on first use: name -> (module, attribute; None for the module itself)
+_LAZY = {
+    "plot": (".plot", None),
+    "search": (".cranksearch", "search"),
+    "SearchResult": (".cranksearch", "SearchResult"),
+    "Arrangement": (".cranksearch", "Arrangement"),
+    "Term": (".cranksearch", "Term"),
+    "sweep": (".studies.sweep", "sweep"),
+    "SweepResult": (".studies.sweep", "SweepResult"),
+    "family": (".studies.family", "family"),
+    "FamilyResult": (".studies.family", "FamilyResult"),
+    "torsional_vibration": (".torsion", "torsional_vibration"),
+    "TorsionResult": (".torsion", "TorsionResult"),
+}
+
+#: the subpackages, reachable as attributes whether or not something has imported them yet
+_PACKAGES = ("about", "analysis", "checks", "cli", "config", "cranksearch", "errors",
+             "harmonics", "kinematics", "model", "output", "report", "studies", "tolerances",
+             "torsion", "units")
 
 __all__ = [
-    "load", "loads", "load_many", "find_configs", "analyse", "compare", "counterweights",
-    "regression", "plot", "Regression", "Moved",
+    # the engine and where it comes from
+    "load", "loads", "load_many", "load_data", "load_template", "find_configs",
+    "Engine", "Cylinder", "Throw", "Crankshaft", "Parts", "GasCycle", "CounterweightMass",
+    "BalancerMass", "BalancerShaftSpec", "TorsionModel", "ShaftDisk",
+    # shaking forces and moments, firing, comparison
+    "analyse", "compare", "EngineResult", "Comparison", "Shaking", "OrderComponents", "Firing",
+    "power_related_unbalance", "PowerRelatedUnbalance",
+    # counterweights and balancer shafts
+    "counterweights", "Balance", "Balances", "Counterweight", "Plane", "Shaft", "ShaftMass",
+    "BalancerShaft", "RollingMoment", "Antivibrateur",
+    # torques, steadiness, gas pressure
     "torque", "TorqueResult", "TorqueSet", "Series", "ReducedMass", "PinForce",
+    "CrankshaftTorque", "GuideForces", "cylinder_torques", "CylinderTorque", "CylinderTorques",
     "steadiness", "flywheel_for", "Steadiness", "read_pressure_csv", "read_cycle_csv",
-    "PressureCurve", "Parts", "GasCycle", "search", "load_template", "SearchResult",
-    "Arrangement", "Term",
-    "Engine", "Cylinder", "Throw", "EngineResult", "Comparison", "Shaking", "OrderComponents",
-    "Firing", "Balance", "Counterweight", "Plane", "Shaft", "Antivibrateur",
+    "PressureCurve",
+    # studies, search, torsion, pictures (loaded on first use)
+    "regression", "Regression", "Moved", *_LAZY,
+    # errors and warnings
     "BalanceError", "ConfigError", "ModelError", "FiringError", "AnalysisError",
     "CounterweightError", "PlotError", "OutputError", "UnitError", "RegressError", "OrderError",
-    "SamplingWarning",
+    "SweepError", "TorsionUnavailable", "SamplingWarning",
+    "__version__",
 ]
 
 
-#: names loaded on first use: commands that neither draw nor search start without them
-_LAZY = {"plot": (".plot", None), "search": (".cranksearch", "search"),
-         "SearchResult": (".cranksearch", "SearchResult"),
-         "Arrangement": (".cranksearch", "Arrangement"), "Term": (".cranksearch", "Term")}
-
-# the sweep loads on first use too; a statement of its own keeps merges of the lists above simple
-_LAZY.update({"sweep": (".studies.sweep", "sweep"), "SweepResult": (".studies.sweep", "SweepResult"),
-              "family": (".studies.family", "family"), "FamilyResult": (".studies.family", "FamilyResult"),
-              "GuideForces": (".analysis.guideforce", "GuideForces")})
-__all__ += ["sweep", "SweepResult", "SweepError", "family", "FamilyResult", "GuideForces",
-            "load_data", "power_related_unbalance", "PowerRelatedUnbalance"]
-from .config import load_data  # noqa: E402
-from .analysis.marine import PowerRelatedUnbalance, power_related_unbalance  # noqa: E402
-from .errors import SweepError  # noqa: E402
-# counterweights and balancer shafts as built (a statement of its own, for the same reason)
-__all__ += ["CounterweightMass", "BalancerMass", "BalancerShaftSpec"]
-from .model import BalancerMass, BalancerShaftSpec, CounterweightMass  # noqa: E402
-
-# torsional vibration (openTorsion, an optional extra) on first use too; not named "torsion",
-# which is its module's name
-_LAZY.update({"torsional_vibration": (".torsion", "torsional_vibration"),
-              "TorsionResult": (".torsion", "TorsionResult"),
-              "TorsionUnavailable": (".errors", "TorsionUnavailable"),
-              "cylinder_torques": (".analysis.cylinders", "cylinder_torques"),
-              "CylinderTorque": (".analysis.cylinders", "CylinderTorque"),
-              "TorsionModel": (".model", "TorsionModel"), "ShaftDisk": (".model", "ShaftDisk")})
-__all__ += ["torsional_vibration", "TorsionResult", "TorsionUnavailable", "cylinder_torques",
-            "CylinderTorque", "TorsionModel", "ShaftDisk"]
-
-
 def __getattr__(name):
-    # balance.plot imports matplotlib, which the commands that do not draw never load
     if name in _LAZY:
-        import importlib
-
         module, attribute = _LAZY[name]
         loaded = importlib.import_module(module, __name__)
         return loaded if attribute is None else getattr(loaded, attribute)
+    if name in _PACKAGES:
+        return importlib.import_module(f".{name}", __name__)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
-# several crankshafts (issue 19): a statement of its own, as above
-from .model import Crankshaft  # noqa: E402
-from .analysis.torque import CrankshaftTorque  # noqa: E402
-__all__ += ["Crankshaft", "CrankshaftTorque"]
+
+def __dir__():
+    return sorted(set(__all__) | set(globals()))

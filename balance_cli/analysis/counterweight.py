@@ -26,7 +26,6 @@ from ..tolerances import SAME_POSITION_M
 from ..units import check_finite_range, phasor_deg
 from .balancing import (Antivibrateur, Balance, BalancerShaft, Counterweight, Plane,
                         RollingMoment, Shaft, ShaftMass, positive_length)
-from .balancing import Balances  # noqa: F401 TEMPORARY (until the cli split merges)
 from .firing import firing_sequence
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, Shaking, shaking_forces
 

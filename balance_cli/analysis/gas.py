@@ -18,7 +18,6 @@ from ..harmonics import periodic_derivative, resampled
 from ..kinematics import FINE_SAMPLES, engine_angles, fine_travel, kinematic_state
 from .firing import firing_angles
 from .pressure import PressureCurve, cycle_pressure
-from .pressure import read_cycle_csv, read_pressure_csv  # noqa: F401 TEMPORARY (cli split)
 from .shaking import MAX_SAMPLES
 
 __all__ = ["GasLoad", "gas_bore", "gas_load", "gas_torque", "check_gas_sampling",

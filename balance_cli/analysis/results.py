@@ -12,7 +12,7 @@ from ..kinematics import check_assembly
 from .firing import Firing, firing_sequence
 from .marine import DEFAULT_PRU_CLASSES, check_classes, power_related_unbalance
 from ..model import Engine
-from ..output import DOCUMENT_VERSION, READABLE_VERSIONS  # noqa: F401 (re-exported until importers move)
+from ..output import DOCUMENT_VERSION
 from .shaking import (DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, OrderComponents, Shaking, part_values,
                       shaking_forces)
 from ..units import rad_s_to_rpm, wrap_degrees

@@ -4,7 +4,8 @@ what can be cancelled, what they leave, and the configuration with them added (-
 
 import click
 
-from ..analysis.counterweight import Balances, check_options, counterweights
+from ..analysis.balancing import Balances
+from ..analysis.counterweight import check_options, counterweights
 from ..config import as_built_toml, load_data
 from ..report.csvfile import balance_csv
 from ..report.display import Scale

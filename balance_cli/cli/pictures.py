@@ -150,7 +150,9 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
                                   max_order=max_order)
     torsion = None
     if any(r.engine.torsion is not None for r in results):
-        from ..torsion import TorsionUnavailable, require_opentorsion, torsion as torsion_of
+        from ..errors import TorsionUnavailable
+        from ..torsion import require_opentorsion
+        from ..torsion import torsional_vibration as torsion_of
 
         try:
             require_opentorsion()

@@ -12,8 +12,8 @@ from ..output import refuse_inputs, to_json
 from ..report.display import Scale
 from ..report.junit import junit_xml
 from ..report.tables import regression_tables
-from ..studies.regress import (RegressError, baseline_configs, check_baseline, check_rtol,
-                               compared_like)
+from ..errors import RegressError
+from ..studies.regress import baseline_configs, check_baseline, check_rtol, compared_like
 from ..studies.regress import regression as regression_of
 from .batch import analyse_all, load_all, settings
 from .compare import compare_document

@@ -51,7 +51,7 @@ def torque(paths, pressure, bore, inertia, target, load, samples, max_order, uni
     With --inertia (or --target), the speed over the cycle with a flywheel and a load, and its
     steadiness (Margoulis).
     """
-    from ..analysis.gas import read_pressure_csv
+    from ..analysis.pressure import read_pressure_csv
     from ..analysis.torque import TorqueSet, torque as torque_of
 
     if bore is not None and pressure is None:
@@ -99,7 +99,7 @@ def torque(paths, pressure, bore, inertia, target, load, samples, max_order, uni
 def steadiness(torque_file, inertia, speed, load, target, fmt, output):
     """Speed fluctuation of an engine set driven by a measured torque curve: the periodic speed,
     the steadiness ω_m/(ω_max − ω_min), and Margoulis's closed forms r_c, r_v, r_h."""
-    from ..analysis.gas import read_cycle_csv
+    from ..analysis.pressure import read_cycle_csv
     from ..analysis.steadiness import flywheel_for, steadiness as steadiness_of
 
     guard([output], [Path(torque_file)])

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from ..analysis.results import DOCUMENT_VERSION
+from ..output import DOCUMENT_VERSION
 from ..output import write_folder
 from ..report.display import Scale
 from . import headless
@@ -45,7 +45,8 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
     order, at its throw: the gas torque the same at every speed, the inertia torque growing
     as the speed squared.
     """
-    from ..torsion import require_opentorsion, torsion as torsion_of
+    from ..torsion import require_opentorsion
+    from ..torsion import torsional_vibration as torsion_of
 
     with reported():
         require_opentorsion()   # before any work, and not tied to one file

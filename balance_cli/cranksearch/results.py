@@ -6,7 +6,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..analysis.results import DOCUMENT_VERSION, EngineResult
+from ..analysis.results import EngineResult
+from ..output import DOCUMENT_VERSION
 from ..model import Engine
 
 __all__ = ["Arrangement", "SearchResult"]

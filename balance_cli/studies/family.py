@@ -14,7 +14,8 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from ..analysis.results import DOCUMENT_VERSION, analyse
+from ..analysis.results import analyse
+from ..output import DOCUMENT_VERSION
 from ..checks import instance, positive, whole
 from ..config import as_template, build
 from ..cranksearch import DEFAULT_LIMIT, search

@@ -20,13 +20,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..analysis.results import DOCUMENT_VERSION, READABLE_VERSIONS, Comparison, analyse, compare
-from ..errors import AnalysisError, BalanceError, RegressError  # noqa: F401 (re-exported until importers move)
+from ..analysis.results import Comparison, analyse, compare
+from ..output import DOCUMENT_VERSION, READABLE_VERSIONS
+from ..errors import AnalysisError, BalanceError, RegressError
 from ..analysis.shaking import check_settings
 from ..tolerances import FIRING_CHANGE_DEG, NOISE_FLOOR, PHASE_CHANGE_DEG, PHASE_FLOOR
 from ..units import angle_change
 
-__all__ = ["RegressError", "Moved", "Regression", "regression", "check_baseline", "check_rtol",
+__all__ = ["Moved", "Regression", "regression", "check_baseline", "check_rtol",
            "baseline_configs", "compared_like", "reanalyse"]
 
 #: what a quantity is: a value compared by size, a phase (period 360°) or an axis (period 180°)

@@ -12,6 +12,3 @@ __all__ = ["require_opentorsion", "first_mode_amplitudes", "Mode", "Critical", "
            "torsional_vibration", "throw_inertias", "phase_vector_sum", "natural_frequencies",
            "default_speeds_rpm", "DEFAULT_MAX_ORDER", "MAX_SPEEDS"]
 
-# TEMPORARY (until the cli split merges): the old names
-from ..errors import TorsionUnavailable  # noqa: E402,F401
-torsion = torsional_vibration

@@ -26,7 +26,8 @@ from typing import Any
 
 import numpy as np
 
-from ...analysis.results import DOCUMENT_VERSION, analyse
+from ...analysis.results import analyse
+from ...output import DOCUMENT_VERSION
 from ...config import build, parse_text, read_text
 from ...analysis.counterweight import check_options, counterweights
 from ...errors import BalanceError, ConfigError, FiringError, SweepError
