@@ -28,7 +28,7 @@ from ..studies.regress import (RegressError, baseline_configs, check_baseline, c
                                compared_like)
 from ..studies.regress import regression as regression_of
 from ..report.csvfile import balance_csv, compare_csv, search_csv, torque_csv
-from ..report.display import Scale
+from ..units import Scale
 from ..report.junit import junit_xml
 from ..report.tables import (balance_tables, compare_tables, list_tables, regression_tables,
                              search_tables, show_table, steadiness_text, torque_tables)

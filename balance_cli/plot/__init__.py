@@ -27,9 +27,8 @@ from matplotlib.artist import Artist
 from ..checks import instance, items
 from ..errors import PlotError
 from ..output import write_bytes
-from ..report.display import Scale
 from ..tolerances import SPECTRUM_FLOOR
-from ..units import UNIT_SYSTEMS
+from ..units import UNIT_SYSTEMS, Scale
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes

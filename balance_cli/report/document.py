@@ -6,8 +6,8 @@ caption)``.
 """
 
 from .. import __version__
-from ..units import rad_s_to_rpm
-from .display import Scale, figure
+from ..units import Scale, rad_s_to_rpm
+from .display import figure
 from .tables import balance_summary, compare_parts, family_parts, torque_summary
 
 __all__ = ["PICTURES", "blocks"]

@@ -9,7 +9,8 @@ import io
 import math
 import re
 
-from .display import Scale, figure, markdown_text, plain_text
+from ..units import Scale
+from .display import figure, markdown_text, plain_text
 from .tables import render
 
 __all__ = ["sweep_tables", "sweep_csv", "sweep_figure", "axis_values"]

@@ -9,9 +9,9 @@ import math
 import numpy as np
 from tabulate import tabulate
 
-from ..units import (kg_to_g, m_to_mm, pa_to_bar, rad_s_to_rpm, round_degrees, significant,
-                     wrap_degrees)
-from .display import Scale, figure, markdown_text, plain_text
+from ..units import (Scale, kg_to_g, m_to_mm, pa_to_bar, rad_s_to_rpm, round_degrees,
+                     significant, wrap_degrees)
+from .display import figure, markdown_text, plain_text
 
 __all__ = ["render", "compare_parts", "compare_tables", "part_rows", "part_headers", "order_parts",
            "balance_tables", "balance_summary", "list_table", "list_tables", "show_table", "regression_tables",

@@ -6,8 +6,8 @@ import io
 
 import numpy as np
 
-from ..units import significant
-from .display import Scale, figure, markdown_text, plain_text
+from ..units import Scale, significant
+from .display import figure, markdown_text, plain_text
 from .tables import render
 
 __all__ = ["torsion_tables", "torsion_csv", "campbell", "mode_shapes", "torque_speed"]
