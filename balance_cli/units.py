@@ -17,6 +17,7 @@ __all__ = [
     "DIMENSIONS", "LIMITS", "STANDARD_GRAVITY", "parse_quantity", "check_finite_range",
     "rad_s_to_rpm", "m_to_mm", "kg_to_g", "n_to_kgf", "wrap_degrees", "round_degrees",
     "phasor_deg", "angle_change", "UNIT_SYSTEMS", "unit_system", "significant", "Scale",
+    "shown_unit", "shown_value",
 ]
 
 #: m/s², the conventional value used to turn kilogram-force into newtons
@@ -239,6 +240,21 @@ class Scale:
 
     def moment(self, value_nm):
         return value_nm / UNIT_SYSTEMS[self.units][2]
+
+
+def shown_unit(quantity, units):
+    """The unit a sweep's quantity is shown in, "" for a pure number."""
+    scale = Scale.of(True, units)
+    return {"N": scale.force_label, "Nm": scale.moment_label}.get(quantity.unit, "")
+
+
+def shown_value(quantity, value_si, units):
+    """A sweep's quantity in the unit it is shown in: forces and moments in ``units``'s
+    system, anything else as it is."""
+    scale = Scale.of(True, units)
+    if quantity.unit == "N":
+        return scale.force(value_si, 1.0)
+    return scale.moment(value_si) if quantity.unit == "Nm" else value_si
 
 
 def significant(value, digits=4):

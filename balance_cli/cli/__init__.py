@@ -874,7 +874,7 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
         text = torsion_tables(results, fmt, scale)
     if plot_dir is not None:
         _use_agg()
-        from ..report import torsion as pictures
+        from .. import plot as pictures
 
         def fill(folder):
             names = []
@@ -1209,7 +1209,7 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
     Each value is set in the file's TOML and the engine rebuilt and checked exactly as a file
     is, so a value that makes no engine is reported with the file, the key and the value.
     """
-    from ..report.sweeps import sweep_csv, sweep_figure, sweep_tables
+    from ..report.sweeps import sweep_csv, sweep_tables
     from ..studies.sweep import span, sweep as sweep_of
 
     spanned = (start, stop, steps)
@@ -1275,7 +1275,7 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
         text = sweep_tables(result, fmt, units)
     if drawing is not None:
         with _reported(flags={"path": "--plot"}), _drawing():
-            drawing.save(sweep_figure(result, units), picture)
+            drawing.save(drawing.sweep_figure(result, units), picture)
     _write(output, text)
     if drawing is not None:
         click.echo(f"wrote {picture}", err=True)
