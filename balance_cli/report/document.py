@@ -8,7 +8,10 @@ caption)``.
 from .. import __version__
 from ..units import Scale, rad_s_to_rpm
 from .display import figure
-from .tables import balance_summary, compare_parts, family_parts, torque_summary
+from .compare import compare_parts
+from .counterweight import balance_summary
+from .family import family_parts
+from .torque import torque_summary
 
 __all__ = ["PICTURES", "blocks"]
 

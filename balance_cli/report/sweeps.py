@@ -10,7 +10,7 @@ import io
 
 from ..units import shown_unit, shown_value
 from .display import figure, markdown_text, plain_text
-from .tables import render
+from .table import render
 
 __all__ = ["sweep_tables", "sweep_csv"]
 

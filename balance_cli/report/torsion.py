@@ -8,7 +8,7 @@ import numpy as np
 
 from ..units import Scale, significant
 from .display import figure, markdown_text, plain_text
-from .tables import render
+from .table import render
 
 __all__ = ["torsion_tables", "torsion_csv"]
 
