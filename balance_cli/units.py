@@ -8,6 +8,7 @@ minute. Angles in degrees are normalised here too, once for the whole package.
 
 import math
 import re
+from dataclasses import dataclass
 
 from .errors import UnitError
 from .tolerances import ANGLE_TOLERANCE_DEG
@@ -15,7 +16,8 @@ from .tolerances import ANGLE_TOLERANCE_DEG
 __all__ = [
     "DIMENSIONS", "LIMITS", "STANDARD_GRAVITY", "parse_quantity", "check_finite_range",
     "rad_s_to_rpm", "m_to_mm", "kg_to_g", "n_to_kgf", "wrap_degrees", "round_degrees",
-    "phasor_deg", "angle_change", "UNIT_SYSTEMS", "unit_system", "significant",
+    "phasor_deg", "angle_change", "UNIT_SYSTEMS", "unit_system", "significant", "Scale",
+    "shown_unit", "shown_value",
 ]
 
 #: m/s², the conventional value used to turn kilogram-force into newtons
@@ -187,6 +189,72 @@ def unit_system(name):
             return matches[0]
     raise UnitError(f"must be one of {', '.join(UNIT_SYSTEMS)} (with moments in "
                     f"{', '.join(m for _, m, _ in UNIT_SYSTEMS.values())}), got {name!r}", "units")
+
+
+@dataclass(frozen=True)
+class Scale:
+    """How forces and moments are shown: per cylinder (× m_rec·r·ω²·n), or in one system of
+    units (:data:`~balance_cli.units.UNIT_SYSTEMS`: N and N·m, kN and kN·m, MN and MN·m,
+    kgf and kgf·m, lbf and lbf·ft).
+
+    Moments are always absolute, in the moment unit of ``units``.
+    """
+
+    absolute: bool = False
+    units: str = "N"
+
+    @classmethod
+    def of(cls, absolute, units):
+        """The scale of the command-line options: any unit but N implies absolute forces; the
+        unit's name in any letter case."""
+        units = unit_system(units)
+        return cls(absolute=absolute or units != "N", units=units)
+
+    @property
+    def force_label(self) -> str:
+        return self.units if self.absolute else "per cyl"
+
+    @property
+    def force_unit_text(self) -> str:
+        """The force unit in words, for titles and axis labels."""
+        return self.units if self.absolute else "× m_rec·r·ω² per cylinder"
+
+    @property
+    def moment_label(self) -> str:
+        return UNIT_SYSTEMS[self.units][1]
+
+    @property
+    def column_force(self) -> str:
+        """The force unit in a CSV column name: per_cyl, N, kN, MN, kgf or lbf."""
+        return self.units if self.absolute else "per_cyl"
+
+    @property
+    def column_moment(self) -> str:
+        """The moment unit in a CSV column name: Nm, kNm, MNm, kgfm or lbfft."""
+        return self.moment_label.replace("·", "")
+
+    def force(self, value_n, per_cylinder_unit_n):
+        if not self.absolute:
+            return value_n / per_cylinder_unit_n
+        return value_n / UNIT_SYSTEMS[self.units][0]
+
+    def moment(self, value_nm):
+        return value_nm / UNIT_SYSTEMS[self.units][2]
+
+
+def shown_unit(quantity, units):
+    """The unit a sweep's quantity is shown in, "" for a pure number."""
+    scale = Scale.of(True, units)
+    return {"N": scale.force_label, "Nm": scale.moment_label}.get(quantity.unit, "")
+
+
+def shown_value(quantity, value_si, units):
+    """A sweep's quantity in the unit it is shown in: forces and moments in ``units``'s
+    system, anything else as it is."""
+    scale = Scale.of(True, units)
+    if quantity.unit == "N":
+        return scale.force(value_si, 1.0)
+    return scale.moment(value_si) if quantity.unit == "Nm" else value_si
 
 
 def significant(value, digits=4):

@@ -18,7 +18,7 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.cli import main
-from balance_cli.report.display import Scale
+from balance_cli.units import Scale
 from balance_cli.units import UNIT_SYSTEMS, parse_quantity, significant
 
 from conftest import ROOT, TWIN, exact_b, make_engine

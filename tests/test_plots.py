@@ -434,7 +434,7 @@ def test_torque_figure_draws_each_engines_torques_mean_and_orders(torques, units
         assert_allclose(corners[:, :, 0].mean(axis=1), [k for k, _ in expected], rtol=0, atol=1e-12)
         assert_allclose(corners[:, :, 1].max(axis=1), [a for _, a in expected], rtol=1e-12, atol=0)
         assert_allclose(corners[:, :, 1].min(axis=1), 0.0, rtol=0, atol=0)
-    labels = next(a for a in fig.artists if isinstance(a, plot._Labels)).texts()
+    labels = next(a for a in fig.artists if isinstance(a, plot.torques._Labels)).texts()
     assert f"torque ({'N·m' if units == 'N' else 'kgf·m'})" in labels
     assert {"0°", "360°", "720°", "180°", "no order up to 8"} <= set(labels)
 
@@ -709,8 +709,9 @@ def test_moment_star_and_locus_figures_draw_the_moment_in_n_m(couples):
     texts = [t.get_text() for t in ax.texts]
     assert f"forward: |Σ| = {math.sqrt(3) / 2 * MRW2 * PITCH:.4g} N·m" in texts
     assert "free moment" in fig._suptitle.get_text()
-    assert plot._magnitude(4980395.12, "N·m") == "4 980 395 N·m"
-    assert plot._magnitude(427.3664, "N·m") == "427.4 N·m" and plot._magnitude(0.0, "N·m") == "0 N·m"
+    assert plot.stars._magnitude(4980395.12, "N·m") == "4 980 395 N·m"
+    assert (plot.stars._magnitude(427.3664, "N·m") == "427.4 N·m"
+            and plot.stars._magnitude(0.0, "N·m") == "0 N·m")
     fig = plot.locus([result], of="moment")
     assert "free moment" in fig.axes[0].get_title() and "N·m" in fig.axes[0].get_xlabel()
     x, y = plot.locus_points(result, of="moment")
@@ -803,7 +804,7 @@ def test_torque_order_axis_labels_whole_orders_and_ticks_half_orders(torques):
     """Orders to 8: every whole order labelled 1..8; a four-stroke's half orders are ticks
     without labels (short marks in the frames' path)."""
     fig = plot.torque(torques[:1])
-    labels = next(a for a in fig.artists if isinstance(a, plot._Labels))
+    labels = next(a for a in fig.artists if isinstance(a, plot.torques._Labels))
     order_labels = [item[2] for item in labels.items if item[2].isdigit() and item[3] == "center"]
     assert order_labels == [str(k) for k in range(1, 9)]
     assert not any(".5" in item[2] for item in labels.items)

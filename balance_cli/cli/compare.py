@@ -6,8 +6,8 @@ import click
 
 from ..analysis.results import compare as comparison_of
 from ..report.csvfile import compare_csv
-from ..report.display import Scale
-from ..report.tables import compare_tables
+from ..units import Scale
+from ..report.compare import compare_tables
 from ..units import rad_s_to_rpm
 from .batch import analyse_all, inputs, load_all, settings
 from .dispatch import emit, guard

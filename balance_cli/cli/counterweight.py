@@ -8,8 +8,8 @@ from ..analysis.balancing import Balances
 from ..analysis.counterweight import check_options, counterweights
 from ..config import as_built_toml, load_data
 from ..report.csvfile import balance_csv
-from ..report.display import Scale
-from ..report.tables import balance_tables
+from ..units import Scale
+from ..report.counterweight import balance_tables
 from . import options
 from .batch import inputs, load_all, passed_over, run_each, settings
 from .dispatch import guard, render, write

@@ -7,7 +7,7 @@ import click
 from ..analysis.firing import firing_sequence
 from ..config import load
 from ..errors import ConfigError
-from ..report.tables import list_tables, show_table
+from ..report.inspect import list_tables, show_table
 from .batch import inputs
 from .group import main, reported
 from .options import INPUTS

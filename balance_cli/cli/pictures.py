@@ -9,7 +9,7 @@ import click
 from ..analysis.counterweight import counterweights
 from ..analysis.results import compare as comparison_of
 from ..output import check_folder
-from ..report.display import Scale
+from ..units import Scale
 from . import headless
 from .batch import analyse_all, inputs, load_all, run_each, settings
 from .dispatch import guard

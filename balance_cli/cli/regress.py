@@ -9,9 +9,9 @@ import click
 
 from ..config import find_configs
 from ..output import refuse_inputs, to_json
-from ..report.display import Scale
+from ..units import Scale
 from ..report.junit import junit_xml
-from ..report.tables import regression_tables
+from ..report.regress import regression_tables
 from ..errors import RegressError
 from ..studies.regress import baseline_configs, check_baseline, check_rtol, compared_like
 from ..studies.regress import regression as regression_of

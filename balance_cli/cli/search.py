@@ -14,8 +14,8 @@ from ..analysis.results import compare as comparison_of
 from ..errors import BalanceError, OutputError
 from ..output import check_folder, refuse_inputs, write_folder, write_text
 from ..report.csvfile import search_csv
-from ..report.display import Scale
-from ..report.tables import search_tables
+from ..units import Scale
+from ..report.search import search_tables
 from .batch import settings
 from .dispatch import emit, guard, render, same_path, write
 from .group import main, message, reported
@@ -211,7 +211,7 @@ def family_(path, counts, objective, firing_orders, pitch, power, workers, sampl
     """
     from ..config import load_data
     from ..studies.family import family
-    from ..report.tables import family_tables
+    from ..report.family import family_tables
 
     counts = counts_option(counts)
     given = firing_orders_option(firing_orders)

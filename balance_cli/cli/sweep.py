@@ -60,7 +60,7 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
     Each value is set in the file's TOML and the engine rebuilt and checked exactly as a file
     is, so a value that makes no engine is reported with the file, the key and the value.
     """
-    from ..report.sweeps import sweep_csv, sweep_figure, sweep_tables
+    from ..report.sweeps import sweep_csv, sweep_tables
     from ..studies.sweep import span, sweep as sweep_of
 
     spanned = (start, stop, steps)
@@ -122,7 +122,7 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
                   table=lambda: sweep_tables(result, fmt, units))
     if drawing is not None:
         with reported(flags={"path": "--plot"}), headless.drawing():
-            drawing.save(sweep_figure(result, units), picture)
+            drawing.save(drawing.sweep_figure(result, units), picture)
     write(output, text)
     if drawing is not None:
         click.echo(f"wrote {picture}", err=True)

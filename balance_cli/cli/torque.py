@@ -8,8 +8,8 @@ import click
 import numpy as np
 
 from ..report.csvfile import torque_csv
-from ..report.display import Scale
-from ..report.tables import steadiness_text, torque_tables
+from ..units import Scale
+from ..report.torque import steadiness_text, torque_tables
 from . import batch
 from .batch import load_all, run_each, settings
 from .dispatch import emit, guard

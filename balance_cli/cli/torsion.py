@@ -8,7 +8,7 @@ import click
 
 from ..output import DOCUMENT_VERSION
 from ..output import write_folder
-from ..report.display import Scale
+from ..units import Scale
 from . import headless
 from .batch import inputs, load_all, passed_over, run_each, settings
 from .dispatch import guard, render, write
@@ -87,7 +87,7 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
                   table=lambda: torsion_tables(results, fmt, scale))
     if plot_dir is not None:
         headless.use_agg()
-        from ..report import torsion as pictures
+        from .. import plot as pictures
 
         def fill(folder):
             names = []

@@ -3,7 +3,8 @@
 import csv
 import io
 
-from .tables import WEIGHT_COLUMNS, order_values
+from .counterweight import WEIGHT_COLUMNS
+from .table import order_values
 
 __all__ = ["compare_csv", "balance_csv", "torque_csv", "search_csv", "family_csv"]
 

@@ -6,9 +6,12 @@ caption)``.
 """
 
 from .. import __version__
-from ..units import rad_s_to_rpm
-from .display import Scale, figure
-from .tables import balance_summary, compare_parts, family_parts, torque_summary
+from ..units import Scale, rad_s_to_rpm
+from .display import figure
+from .compare import compare_parts
+from .counterweight import balance_summary
+from .family import family_parts
+from .torque import torque_summary
 
 __all__ = ["PICTURES", "blocks"]
 

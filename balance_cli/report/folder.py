@@ -15,7 +15,7 @@ def write_report(target, comparison, balances, star_order, with_html, torques, s
                  family=None, torsion=None):
     """Write the report of ``comparison`` (and its ``balances`` and ``torques``, one of each per
     engine) into the folder ``target``, its moments and torques in ``scale``'s units (a
-    :class:`~balance_cli.report.display.Scale`, default N·m); nothing is left behind if any part
+    :class:`~balance_cli.units.Scale`, default N·m); nothing is left behind if any part
     fails; ``family`` a :class:`~balance_cli.studies.family.FamilyResult` for a section of its own;
     ``torsion`` the :class:`~balance_cli.torsion.TorsionResult` of the engines with a
     [torsion] table (or a one-line note, a string, when openTorsion is missing).

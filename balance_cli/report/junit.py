@@ -3,7 +3,7 @@
 
 import xml.etree.ElementTree as ET
 
-from .tables import _value_text
+from .regress import value_text
 
 __all__ = ["junit_xml"]
 
@@ -15,8 +15,8 @@ def _failure_text(rows):
         detail = [] if row.change is None else [f"{row.change:+.3g}"]
         detail += [] if row.tolerance is None else [f"tolerance {row.tolerance:.3g}"]
         suffix = f" ({', '.join(detail)})" if detail else ""
-        lines.append(f"{where}{row.quantity}: {_value_text(row.baseline)} -> "
-                     f"{_value_text(row.now)}{suffix}")
+        lines.append(f"{where}{row.quantity}: {value_text(row.baseline)} -> "
+                     f"{value_text(row.now)}{suffix}")
     return "\n".join(lines)
 
 

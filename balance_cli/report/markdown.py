@@ -1,6 +1,6 @@
 """report.md: the report's blocks as Markdown, pictures by relative links."""
 
-from .tables import render
+from .table import render
 
 __all__ = ["markdown"]
 

@@ -1,0 +1,75 @@
+"""A sweep's picture: each quantity against the varied parameter, one axes per kind of
+quantity, in one system of units (:data:`~balance_cli.units.UNIT_SYSTEMS`)."""
+
+import math
+import re
+
+from ..units import shown_unit, shown_value
+
+__all__ = ["sweep_figure", "axis_values"]
+
+#: kinds of quantity drawn on one axes each, in this order, and their axis titles
+_GROUPS = (("force", "Force"), ("moment", "Free moment"), ("torque", "Torque"),
+           ("steadiness", "Steadiness"), ("pru", "PRU (N·m/kW)"))
+_WRITTEN = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S.*?)\s*$", re.ASCII)
+
+
+def axis_values(result):
+    """The parameter axis of a picture: (values, label). In the unit the values are written in
+    when they share one ("rod_length (mm)"), degrees for angles, else SI."""
+    parameter = result.parameter
+    if parameter.kind == "angle":
+        return [float(v) for v in result.values], f"{parameter.key} (°)"
+    if not parameter.takes_units:
+        return [float(v) for v in result.values], parameter.key
+    matches = [_WRITTEN.match(v) for v in result.values]
+    written_units = {m.group(2) for m in matches if m}
+    if all(matches) and len(written_units) == 1:
+        return [float(m.group(1)) for m in matches], f"{parameter.key} ({written_units.pop()})"
+    return list(result.values_si), f"{parameter.key} ({parameter.unit_si})"
+
+
+def _from_zero(values):
+    """Limits that include zero, so that a curve's size reads against nothing: a flat line
+    of 1.61 must not look like a plunge."""
+    low, high = min([0.0, *values]), max([0.0, *values])
+    if high == low:
+        return 0.0, 1.0
+    pad = 0.05 * (high - low)
+    return (low - pad if low < 0 else 0.0), (high + pad if high > 0 else 0.0)
+
+
+def sweep_figure(result, units="N", fig=None):
+    """Each quantity against the parameter: one axes per kind (forces, free moments, torques,
+    steadiness) sharing the parameter axis, one line per quantity. A matplotlib Figure (drawn
+    into ``fig`` when given, else a new pyplot figure)."""
+    groups = [(kind, title, [q for q in result.quantities if q.kind == kind])
+              for kind, title in _GROUPS]
+    groups = [g for g in groups if g[2]]
+    if fig is None:
+        import matplotlib.pyplot as plt   # only when the caller gives no figure of their own
+
+        fig = plt.figure(figsize=(8.0, 1.0 + 2.8 * len(groups)), dpi=100)
+    x, xlabel = axis_values(result)
+    # values listed out of order are drawn along the axis, not zigzagging back and forth
+    order = sorted(range(len(x)), key=x.__getitem__)
+    x = [x[i] for i in order]
+    points = [result.points[i] for i in order]
+    axes = fig.subplots(len(groups), 1, sharex=True, squeeze=False)[:, 0]
+    marker = "o" if len(x) <= 30 else None
+    for ax, (kind, title, quantities) in zip(axes, groups):
+        drawn = []
+        for q in quantities:
+            y = [shown_value(q, p[q.column], units) for p in points]
+            ax.plot(x, y, marker=marker, markersize=4, label=q.name)
+            drawn += [v for v in y if math.isfinite(v)]
+        unit = shown_unit(quantities[0], units)
+        ax.set_ylabel(f"{title} ({unit})" if unit else title)
+        ax.grid(True, alpha=0.3)
+        ax.set_ylim(*_from_zero(drawn))
+        ax.legend(fontsize=8, frameon=False, loc="best")
+    axes[-1].set_xlabel(xlabel)
+    at = "" if result.speed_rpm is None else f" at {result.speed_rpm:g} rpm"
+    fig.suptitle(f"{result.name}{at}: against {result.parameter.key}", fontsize=10)
+    fig.tight_layout()
+    return fig

@@ -1,0 +1,64 @@
+"""``balance family``'s table: one row per number of cylinders, its firing order, free
+moments, power related unbalance and guide-force moments."""
+
+from ..units import m_to_mm
+from .display import figure
+from .table import pru_text, render, safe_for
+
+__all__ = ["family_parts", "family_tables"]
+
+
+def family_parts(result, scale):
+    """``balance family`` as (title, headers, rows, note), rendered from
+    ``FamilyResult.to_dict``: one row per number of cylinders."""
+    record = result.to_dict()
+    ml = scale.moment_label
+    power = ("" if record["power_per_cylinder_kW"] is None else
+             f", {figure(record['power_per_cylinder_kW'])} kW a cylinder")
+    title = (f"{record['name']}: the family, objective {record['objective']}, pitch "
+             f"{m_to_mm(record['pitch_m']):g} mm{power}; guide-force moments from "
+             f"{record['guide_forces_from']}")
+    headers = ["Cyl", "Firing order", "Found", f"M1V* ({ml})", f"M1H* ({ml})", f"M2V ({ml})",
+               f"M2H ({ml})", "PRU M1V*", "PRU M1H*", "PRU M2V", "PRU M2H", "H-type (order)",
+               "X-type (order)", "2nd-order compensator"]
+    rows = []
+    for row in record["rows"]:
+        pru = row["pru"]
+        cells = [str(row["cylinders"]), "-".join(map(str, row["firing_order"])), row["method"]]
+        # the first order with the rotating masses balanced, as the project guides give it
+        first = "_balanced" if "M1V_balanced_Nm" in row else ""
+        cells += [figure(scale.moment(row[f"M1{d}{first}_Nm"])) for d in "VH"]
+        cells += [figure(scale.moment(row[f"M2{d}_Nm"])) for d in "VH"]
+        entries = {} if pru is None else {e["order"]: e for e in pru["orders"]}
+        if pru is not None and pru["first_order_balanced"] is not None:
+            entries[1] = pru["first_order_balanced"]
+        for k in (1, 2):
+            for side in ("vertical", "horizontal"):
+                cells.append(pru_text(entries[k], side) if k in entries else "—")
+        for key in ("h_type", "x_type"):
+            moment = row[key]
+            cells.append("—" if moment is None else
+                         f"{figure(scale.moment(moment['amplitude_Nm']))} ({moment['order']:g})")
+        compensator = row["second_order_compensator"]
+        cells.append("—" if compensator is None else "yes" if compensator else "no")
+        rows.append(cells)
+    notes = ["Found: exhaustive (proved best for the objective), heuristic (the best found, not "
+             "proved) or given. M1*: the first-order couple with counterweights for the rotating "
+             "masses (balance factor 0), as the project guides give it; M2 as the crank stands; "
+             "PRU in N·m/kW with the need for a compensator; H-type and X-type: the largest "
+             f"guide-force moment ({record['guide_forces_from']}: a [gas] table adds the gas "
+             "forces) of the orders analysed (at least up to the number of cylinders) and its "
+             "order; a second-order compensator is indicated where M2's PRU "
+             "is likely or most likely to need one."]
+    missing = sorted({row["pru_note"] for row in record["rows"] if row["pru"] is None})
+    if missing:
+        notes.append("PRU —: " + "; ".join(missing) + " (--power-per-cylinder gives it).")
+    return title, headers, rows, " ".join(notes)
+
+
+def family_tables(result, scale, fmt):
+    """``balance family`` as text or Markdown."""
+    heading = "#### " if fmt == "markdown" else ""
+    title, headers, rows, note = family_parts(result, scale)
+    return "\n".join([f"{heading}{safe_for(fmt)(title)}", "", render(headers, rows, fmt), "", note,
+                      ""])
