@@ -62,7 +62,7 @@ def make_engine(banks_deg, throws, *, r=0.08, l=0.28, m=1.0, rpm=1000.0, cycle=4
                 extra = dict(master=master_bank * len(throws) + t + 1, link_length_m=length,
                              knuckle_radius_m=radius, knuckle_angle_rad=banks[b] - banks[master_bank],
                              knuckle_kg=knuckle)
-            cylinders.append(Cylinder(number, b, t, throw.z_m, m, **extra))
+            cylinders.append(Cylinder(number, b + 1, t + 1, throw.z_m, m, **extra))
     return Engine(name="test engine", cycle=cycle, speed_rad_s=rpm * math.pi / 30.0, crank_radius_m=r,
                   rod_length_m=l, bank_angles_rad=banks, throws=throw_objs, cylinders=tuple(cylinders),
                   rotating_kg=rotating, pin_offset_m=pin_offset, frame=frame,

@@ -185,7 +185,7 @@ def test_a_counterweight_loads_the_main_bearings_not_the_pins():
     mr, phi = 0.01, math.radians(150.0)
     text = V8.replace('rotating = "300 g"', 'rotating = "300 g"\ncrank = "200 g"')
     bare = balance.loads(text)
-    built = bare.replace(counterweights=(CounterweightMass(0, mr, phi, radius_m=0.04),))
+    built = bare.replace(counterweights=(CounterweightMass(1, mr, phi, radius_m=0.04),))
     plain, weighted = balance.torque(bare), balance.torque(built)
     added = weighted.main_bearings.order(1)[0] - plain.main_bearings.order(1)[0]
     assert_allclose(added, mr * W**2 * np.exp(1j * phi), rtol=1e-9)
@@ -201,13 +201,13 @@ def test_mass_rows_follow_the_pins_with_their_owner_codes():
     the direction of its pin turned by its angle (throw 2, phase 90°, 30° on: 120° at θ = 0)."""
     engine = balance.loads(V8 + V8_WEIGHTS).replace(
         crank_kg=0.1,
-        counterweights=(CounterweightMass(1, 0.02, math.radians(30.0), radius_m=0.05),),
+        counterweights=(CounterweightMass(2, 0.02, math.radians(30.0), radius_m=0.05),),
         balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(0.01, 0.0, eccentricity_m=0.02),)),))
     masses = linkage_state(engine, engine_angles(64)).masses
     owners = list(masses.cylinder)
     assert owners[-2:] == [COUNTERWEIGHT, BALANCER]
     assert owners.index(COUNTERWEIGHT) > max(i for i, o in enumerate(owners) if o == CRANK)
-    assert list(masses.throw[-2:]) == [1, -1]
+    assert list(masses.throw_index[-2:]) == [1, -1]
     assert_allclose(masses.positions[-2, 0], 0.05 * np.exp(1j * math.radians(120.0)), rtol=1e-12)
     assert_allclose(masses.masses_kg[-2:], [0.02 / 0.05, 0.01 / 0.02], rtol=1e-12)
     # a backward shaft turns against the crank: at θ = 90° its mass is at −180°
@@ -392,18 +392,18 @@ def test_bad_as_built_tables_get_one_clear_message(tmp_path, text, key, words):
 def test_library_model_errors_name_the_field():
     """Built in code, the model checks as the reader does and names its own fields."""
     engine = balance.loads(V8)
-    with pytest.raises(balance.ModelError, match=r"\[0\] is on throw index 8") as caught:
-        engine.replace(counterweights=(CounterweightMass(8, 0.01, 0.0),))
+    with pytest.raises(balance.ModelError, match=r"counterweight 1 is on throw 9, but the engine has throws 1 to 4") as caught:
+        engine.replace(counterweights=(CounterweightMass(9, 0.01, 0.0),))
     assert caught.value.parameter == "counterweights"
     with pytest.raises(balance.ModelError) as caught:
         BalancerShaftSpec(0, (BalancerMass(0.01, 0.0),))
     assert caught.value.parameter == "ratio"
     with pytest.raises(balance.ModelError) as caught:
-        CounterweightMass(0, -0.01, 0.0)
+        CounterweightMass(1, -0.01, 0.0)
     assert caught.value.parameter == "mass_radius_kgm"
     rotary = balance.load(CONFIGS / "clerget-rotary.toml")
     with pytest.raises(balance.ModelError, match="rotary") as caught:
-        rotary.replace(counterweights=(CounterweightMass(0, 0.01, 0.0),))
+        rotary.replace(counterweights=(CounterweightMass(1, 0.01, 0.0),))
     assert caught.value.parameter == "counterweights"
 
 
@@ -450,7 +450,7 @@ def test_write_round_trip_of_the_ideal_v8_counterweights(tmp_path):
     assert abs(result.order(1).force_forward) < CANCEL * unit
     assert abs(result.order(1).moment_forward) < CANCEL * unit * D
     weights = loaded.counterweights
-    assert [w.throw for w in weights] == [0, 3]
+    assert [w.throw for w in weights] == [1, 4]
     assert_allclose([w.mass_radius_kgm for w in weights], [V8_MR, V8_MR], rtol=1e-9)
     assert_allclose([w.radius_m for w in weights], [0.05, 0.05])
     # measured from their own pins: 198.43° from throw 1's, −161.57° from throw 4's
@@ -593,11 +593,11 @@ def test_reduced_mass_counts_known_radii_only():
     bare = balance.loads(I4)
     mean = balance.torque(bare, bearings=False).reduced_mass.mean_kgm2
     known = bare.replace(
-        counterweights=(CounterweightMass(0, 0.02, math.pi, radius_m=0.05),),
+        counterweights=(CounterweightMass(1, 0.02, math.pi, radius_m=0.05),),
         balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(0.01, 0.0, eccentricity_m=0.02),)),))
     added = balance.torque(known, bearings=False).reduced_mass.mean_kgm2 - mean
     assert_allclose(added, 0.02 * 0.05 + 0.01 * 0.02 * 4, rtol=1e-9)
-    unknown = bare.replace(counterweights=(CounterweightMass(0, 0.02, math.pi),),
+    unknown = bare.replace(counterweights=(CounterweightMass(1, 0.02, math.pi),),
                            balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(0.01, 0.0),)),))
     added = balance.torque(unknown, bearings=False).reduced_mass.mean_kgm2 - mean
     assert 0 <= added <= 1.001e-6 * (0.02 + 0.01 * 4)
@@ -626,7 +626,7 @@ def test_a_counterweight_turns_with_its_own_crankshaft(direction):
 
     me, alpha, beta = 0.05, math.radians(30.0), math.pi
     bare = opposed_single(0.0, direction)
-    built = bare.replace(counterweights=(CounterweightMass(1, me, alpha, radius_m=0.06),))
+    built = bare.replace(counterweights=(CounterweightMass(2, me, alpha, radius_m=0.06),))
     expected = me * OMEGA**2 * np.exp(1j * (beta + alpha) * direction)
     before, after = balance.analyse(bare).order(1), balance.analyse(built).order(1)
     added = (after.force_forward - before.force_forward if direction == 1

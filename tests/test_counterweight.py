@@ -70,7 +70,7 @@ def test_bramo_counterweight_is_fraeys_de_veubeke_s1():
     assert_allclose(weight.mass_kg, 31.6764, atol=0.0012)
     # the same from the formula with the configuration's own masses; m by (13) from them
     links = [c for c in engine.cylinders if c.is_link]
-    m = (-sum(c.knuckle_kg * c.knuckle_radius_m * math.cos(engine.bank_angles_rad[c.bank])
+    m = (-sum(c.knuckle_kg * c.knuckle_radius_m * math.cos(engine.bank_angles_rad[c.bank_index])
               for c in links) / engine.rod_length_m)
     formula = (engine.rotating_kg + sum(c.knuckle_kg for c in links)
                + 0.5 * sum(c.reciprocating_kg for c in engine.cylinders) + 0.5 * m)
@@ -271,7 +271,7 @@ def bramo_with_angular_eccentricity(epsilon, rho=6.0):
     cylinders = []
     for c in engine.cylinders:
         if c.is_link:
-            phi = engine.bank_angles_rad[c.bank]
+            phi = engine.bank_angles_rad[c.bank_index]
             psi = phi
             for _ in range(60):  # fixed point of ψ = Φ + asin(ε·λ·sin ψ)
                 psi = phi + math.asin(epsilon * lam * math.sin(psi))

@@ -229,8 +229,9 @@ def test_the_deltic_lead_closes_round_the_triangle_only_with_one_shaft_reversed(
 
     tdc = tdc_angles(engine)
     for c in engine.cylinders:
-        alpha = math.degrees(engine.bank_angles_rad[c.bank])
-        exhaust, inlet = dead_centre(c.throw, alpha), dead_centre(c.opposed_throw, alpha + 180)
+        alpha = math.degrees(engine.bank_angles_rad[c.bank_index])
+        exhaust, inlet = (dead_centre(c.throw_index, alpha),
+                          dead_centre(c.opposed_throw_index, alpha + 180))
         assert_allclose((inlet - exhaust) % 360, 20.0, atol=1e-9)
         assert_allclose((tdc[c.number] - exhaust) % 360, 10.0, atol=1e-5)
     assert_allclose(firing_sequence(engine).intervals_deg, [20.0] * 18, atol=1e-5)
@@ -245,13 +246,13 @@ def deltic_by_hand(engine, samples=720):
     h = theta[1]
     positions, masses, zs = [], [], []
     for c in engine.cylinders:
-        for throw_index, turn in ((c.throw, 0.0), (c.opposed_throw, math.pi)):
+        for throw_index, turn in ((c.throw_index, 0.0), (c.opposed_throw_index, math.pi)):
             throw = engine.throws[throw_index]
-            shaft = engine.crankshafts[throw.crankshaft]
+            shaft = engine.crankshafts[throw.crankshaft_index]
             centre = complex(shaft.x_m, shaft.y_m)
             pin = engine.crank_radius_m * np.exp(1j * shaft.direction * (theta + shaft.phase_rad
                                                                          + throw.phase_rad))
-            axis = np.exp(1j * (engine.bank_angles_rad[c.bank] + turn))
+            axis = np.exp(1j * (engine.bank_angles_rad[c.bank_index] + turn))
             local = pin / axis
             s = local.real + np.sqrt(engine.rod_length_m**2 - local.imag**2)
             positions.append(centre + s * axis)
@@ -428,7 +429,7 @@ def test_each_crankshafts_torque_is_r_times_its_pins_tangential_forces(config):
     result = balance.torque(engine)
     unit = engine.per_cylinder_unit_n * engine.crank_radius_m
     for shaft in result.crankshafts:
-        pins = [p for p, t in zip(result.pins, engine.throws) if t.crankshaft == shaft.number - 1]
+        pins = [p for p, t in zip(result.pins, engine.throws) if t.crankshaft == shaft.number]
         from_pins = sum(engine.crank_radius_m * p.tangential.curve for p in pins)
         # the virtual shifts' finite differences are good to about 1e-11 of the forces
         assert np.abs(from_pins - shaft.torque.curve).max() < 1e-9 * unit
@@ -512,7 +513,7 @@ def test_a_third_piston_in_an_opposed_bore_is_refused():
 
 
 def test_the_api_takes_the_opposed_piston_mass_as_the_near_ones_by_default():
-    cylinder = balance.Cylinder(1, 0, 0, 0.0, 2.0, opposed_throw=1)
+    cylinder = balance.Cylinder(1, 1, 1, 0.0, 2.0, opposed_throw=2)
     assert cylinder.opposed_reciprocating_kg == 2.0
     with pytest.raises(balance.ModelError, match="direction"):
         balance.Crankshaft(1.0, 0.0, -1.0)
@@ -604,14 +605,14 @@ def test_the_jumo_205s_bores_by_hand():
     m·ω²·k²·|a_k|·2·|sin(11°·k/2)| along the bore (a_k the travel's harmonic, by quadrature)."""
     engine = balance.load(JUMO)
     one = engine.cylinders[0]
-    lower, upper = engine.throws[one.throw], engine.throws[one.opposed_throw]
+    lower, upper = engine.throws[one.throw_index], engine.throws[one.opposed_throw_index]
     lead = math.degrees(math.remainder(math.pi - (upper.phase_rad - lower.phase_rad), 2 * math.pi))
     assert_allclose(lead, 11.0, atol=1e-12)
     m, r, l, omega = one.reciprocating_kg, engine.crank_radius_m, engine.rod_length_m, engine.speed_rad_s
     for phase, eps in ((lower.phase_rad + math.pi, 0.0), (upper.phase_rad, math.radians(lead))):
         bore = engine.replace(
-            throws=(balance.Throw(lower.phase_rad, 0.0), balance.Throw(phase, 0.0, 1)),
-            cylinders=(balance.Cylinder(1, 0, 0, 0.0, m, opposed_throw=1),),
+            throws=(balance.Throw(lower.phase_rad, 0.0), balance.Throw(phase, 0.0, 2)),
+            cylinders=(balance.Cylinder(1, 1, 1, 0.0, m, opposed_throw=2),),
             rotating_kg=0.0, firing_order=None, power_w=None, gas=None)
         result = balance.analyse(bore)
         for k in range(1, 9):

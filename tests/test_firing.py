@@ -115,7 +115,8 @@ def test_eighteen_cylinder_two_row_radial_fires_every_40_degrees():
     rear = [(20 + 40 * i, 1) for i in range(9)]
     banks = tuple(math.radians(a) for a, _ in front + rear)
     throws = (Throw(0.0, 0.0), Throw(math.pi, 0.15))
-    cylinders = tuple(Cylinder(i + 1, i, t, throws[t].z_m, 1.0) for i, (_, t) in enumerate(front + rear))
+    cylinders = tuple(Cylinder(i + 1, i + 1, t + 1, throws[t].z_m, 1.0)
+                      for i, (_, t) in enumerate(front + rear))
     engine = Engine(name="two-row radial", cycle=4, speed_rad_s=200.0, crank_radius_m=0.08,
                     rod_length_m=0.3, bank_angles_rad=banks, throws=throws, cylinders=cylinders)
     fire = firing(engine)

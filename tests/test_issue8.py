@@ -247,10 +247,10 @@ def test_item9_tdc_of_cylinder_one_is_zero_not_360():
 def test_item10_two_cylinders_in_one_bore_are_refused_in_code():
     engine = make_engine([0], [(0, 0.0), (180, 0.1)])
     with pytest.raises(ModelError, match="cylinder 3 sits in the bore of cylinder 1") as caught:
-        dataclasses.replace(engine, cylinders=engine.cylinders + (Cylinder(3, 0, 0, 0.0, 1.0),))
+        dataclasses.replace(engine, cylinders=engine.cylinders + (Cylinder(3, 1, 1, 0.0, 1.0),))
     assert caught.value.cylinder == 3
     # side by side on one pin (its own z) is not one bore
-    dataclasses.replace(engine, cylinders=engine.cylinders + (Cylinder(3, 0, 0, 0.02, 1.0),))
+    dataclasses.replace(engine, cylinders=engine.cylinders + (Cylinder(3, 1, 1, 0.02, 1.0),))
 
 
 # ---- item 14: user text in tables -----------------------------------------------------------

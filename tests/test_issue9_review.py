@@ -137,7 +137,7 @@ def test_tdc_search_memory_is_linear_in_cylinders():
     assert len(tdc) == 400
     cylinder = engine.cylinder(27)   # bank 2 (3.6°), throw 7 (108°): TDC at 3.6 − 108 mod 360
     assert_allclose(tdc[27], (3.6 - 108.0) % 360, atol=1e-5)
-    assert cylinder.bank == 1
+    assert cylinder.bank == 2
 
 
 def test_a_report_says_when_samples_are_too_few(tmp_path, monkeypatch):

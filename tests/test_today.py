@@ -111,8 +111,8 @@ def series(engine, k):
     zbar = np.mean([c.z_m for c in engine.cylinders])
     fp = fm = mp = mm = 0j
     for c in engine.cylinders:
-        gamma = engine.bank_angles_rad[c.bank]
-        beta = engine.throws[c.throw].phase_rad
+        gamma = engine.bank_angles_rad[c.bank_index]
+        beta = engine.throws[c.throw_index].phase_rad
         scale = c.reciprocating_kg * engine.crank_radius_m * engine.speed_rad_s**2 * a_k / 2
         plus = scale * cmath.exp(1j * (k * beta - (k - 1) * gamma))
         minus = scale * cmath.exp(1j * (-k * beta + (k + 1) * gamma))

@@ -486,7 +486,7 @@ def test_search_tv1_is_the_largest_minor_order(tmp_path):
     for a in result.arrangements:
         beta = torsion(a.engine, [1000.0], 8).modes[0].throw_amplitudes
         fire = firing_angles(a.engine)
-        amplitudes = [beta[c.throw] for c in a.engine.cylinders]
+        amplitudes = [beta[c.throw_index] for c in a.engine.cylinders]
         angles = [fire[c.number] for c in a.engine.cylinders]
         by_hand = max(abs(phase_vector_sum(amplitudes, angles, k)) for k in (1, 2, 4, 5, 7, 8))
         by_hand /= sum(abs(b) for b in amplitudes)

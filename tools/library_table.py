@@ -73,7 +73,7 @@ def _crank(engine):
     parts = []
     for index, shaft in enumerate(engine.crankshafts):
         phases = "-".join(f"{math.degrees(t.phase_rad) % 360:.4g}" for t in engine.throws
-                          if t.crankshaft == index)
+                          if t.crankshaft_index == index)
         if len(engine.crankshafts) > 1:
             phases = (f"shaft {index + 1}" + (" (against)" if shaft.direction == -1 else "")
                       + (f", gear {math.degrees(shaft.phase_rad):g}°" if shaft.phase_rad else "")

@@ -317,7 +317,7 @@ class Balance:
 
 def built_weight_record(engine, weight) -> dict:
     """A counterweight as built, as ``counterweight --format json`` lists it under ``as_built``."""
-    return {"throw": weight.throw + 1, "mass_radius_kgm": weight.mass_radius_kgm,
+    return {"throw": weight.throw, "mass_radius_kgm": weight.mass_radius_kgm,
             "mass_kg": weight.mass_kg, "radius_m": weight.radius_m,
             "angle_deg": math.degrees(weight.angle_rad), "z_m": engine.counterweight_z_m(weight)}
 

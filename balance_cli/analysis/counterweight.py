@@ -129,7 +129,7 @@ def _rotating_target(engine, factor, pin_kg=0.0):
     plus ``factor`` times the reciprocating ones, opposite each throw at crank radius."""
     force = moment = 0j
     for index, throw in enumerate(engine.throws):
-        on_throw = [c for c in engine.cylinders if c.throw == index]
+        on_throw = [c for c in engine.cylinders if c.throw_index == index]
         mass = (engine.rotating_kg + engine.crank_kg + pin_kg + sum(c.knuckle_kg for c in on_throw)
                 + factor * sum(c.reciprocating_kg for c in on_throw))
         phasor = -mass * engine.crank_radius_m * engine.speed_rad_s**2 * cmath.exp(1j * throw.phase_rad)
@@ -270,7 +270,7 @@ def _test_masses(engine, shaking):
     out = []
     for index, throw in enumerate(engine.throws):
         # the crankshaft's own unbalance and its counterweights stay on the machine
-        mine = (masses.throw == index) & (masses.cylinder >= BIG_ENDS)
+        mine = (masses.throw_index == index) & (masses.cylinder >= BIG_ENDS)
         forward = coefficients[mine, 1].sum()
         # the equivalent mass sits on the pin; its share along the pin's direction
         out.append(float((forward * cmath.exp(-1j * throw.phase_rad)).real / unit))

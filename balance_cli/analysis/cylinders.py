@@ -121,6 +121,6 @@ def cylinder_torques(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDE
         if gas is not None:
             torque = cycle_series(engine, -gas.net_pressure[n] * gas.area_m2
                                   * np.tile(state.travel_rates[n], turns), max_order)
-        out.append(CylinderTorque(n, cylinder.throw + 1, cycle_series(engine, inertia, max_order),
+        out.append(CylinderTorque(n, cylinder.throw, cycle_series(engine, inertia, max_order),
                                   torque))
     return CylinderTorques(engine, samples, max_order, tuple(out))

@@ -144,7 +144,7 @@ def _lateral(engine, state, net_pressure, area, turns):
     order = sorted(engine.cylinders, key=lambda c: not c.is_link)
     for cyl in order:
         n = cyl.number
-        axis = np.exp(1j * engine.bank_angles_rad[cyl.bank])
+        axis = np.exp(1j * engine.bank_angles_rad[cyl.bank_index])
         piston = masses.positions[row[n]]
         u = rods.directions[rod_row[n]]
         length = cyl.link_length_m if cyl.is_link else engine.rod_length_m

@@ -16,10 +16,10 @@ __all__ = ["reduced_mass_and_momentum", "parts_of_crankshaft"]
 def parts_of_crankshaft(engine, state, crankshaft):
     """The parts of ``state`` that crankshaft ``crankshaft`` (0-based index) drives: its
     throws' masses and rods (a balancer-shaft mass, on throw −1, rides on no crankshaft)."""
-    shaft_of = np.array([t.crankshaft for t in engine.throws])
-    throws = state.masses.throw
+    shaft_of = np.array([t.crankshaft_index for t in engine.throws])
+    throws = state.masses.throw_index
     return state.parts((throws >= 0) & (shaft_of[throws] == crankshaft),
-                       shaft_of[state.rods.throw] == crankshaft)
+                       shaft_of[state.rods.throw_index] == crankshaft)
 
 
 def reduced_mass_and_momentum(engine, state, crankshaft=None):

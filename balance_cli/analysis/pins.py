@@ -112,10 +112,10 @@ def pin_forces(engine, state, turns, net_pressure, area):
     grid = np.broadcast_to(angles, (len(shifts), n))
     forces = []
     for index in range(len(engine.throws)):
-        shifted = linkage_state(engine, grid, {index: shifts}, throw=index)
+        shifted = linkage_state(engine, grid, {index: shifts}, throw_index=index)
         # only what rides on this pin moves with it: the same rows of the whole engine's state
         on_pin = np.isin(masses.cylinder, shifted.masses.cylinder) & (
-            (masses.cylinder > 0) | (masses.throw == index))
+            (masses.cylinder > 0) | (masses.throw_index == index))
         rods_on_pin = np.isin(rods.cylinder, shifted.rods.cylinder)
         size = (2, len(_STEPS))
         dx = _derivative(np.moveaxis(shifted.masses.positions.reshape(-1, *size, n), 2, 0)) / step
@@ -137,7 +137,7 @@ def pin_forces(engine, state, turns, net_pressure, area):
     # each crankshaft's own masses and its counterweights load its own main bearings; a
     # balancer shaft runs in bearings of its own: its rows (throw −1, which picks the last
     # throw's crankshaft here) fall out by their owner code
-    shaft_of = np.array([t.crankshaft for t in engine.throws])[masses.throw]
+    shaft_of = np.array([t.crankshaft_index for t in engine.throws])[masses.throw_index]
     crank_inertia = []
     for s_index in range(len(engine.crankshafts)):
         own = np.where(np.isin(masses.cylinder, CRANKSHAFT_OWNERS) & (shaft_of == s_index),

@@ -83,7 +83,7 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
         throws.append(Throw(0.0 if template else math.radians(throw.degrees("phase")),
                             throw.quantity("z", "length", required=False, default=0.0, sign="any"),
                             throw.integer("crankshaft", required=False, default=1, low=1,
-                                          high=max(len(crankshafts), 1)) - 1))
+                                          high=max(len(crankshafts), 1))))
     check_crankshafts_used(path, crankshafts, throws)
     for i, offset in enumerate(bank_offsets, 1):
         # the model would name the cylinder; the file's key is the bank's
@@ -97,7 +97,7 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
     if top.has("links"):
         reader = Reader(path, data["links"], "links.", LINK_KEYS)
         links = {
-            "master_bank": reader.integer("master_bank", low=1, high=len(banks)) - 1,
+            "master_bank": reader.integer("master_bank", low=1, high=len(banks)),
             "length": reader.quantity("length", "length"),
             "knuckle_radius": reader.quantity("knuckle_radius", "length"),
         }
@@ -108,7 +108,8 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
                                             reciprocating, knuckle, links, bank_offsets)
     else:
         cylinders, keys = _grid_cylinders(banks, throws, reciprocating, knuckle, links), {}
-        cylinders = [dataclasses.replace(c, pin_offset_m=bank_offsets[c.bank]) for c in cylinders]
+        cylinders = [dataclasses.replace(c, pin_offset_m=bank_offsets[c.bank_index])
+                     for c in cylinders]
 
     if parts is not None:
         cylinders, rotating = lumped(path, parts, cylinders, rod_length, len(throws),
@@ -160,10 +161,11 @@ def _translated(path, exc, cylinder_keys):
 
 
 def _link_fields(cylinder_bank, master_bank, banks, links, knuckle_mass):
+    """A link rod's fields from [links], between banks numbered from 1."""
     return dict(
         link_length_m=links["length"],
         knuckle_radius_m=links["knuckle_radius"],
-        knuckle_angle_rad=banks[cylinder_bank] - banks[master_bank],
+        knuckle_angle_rad=banks[cylinder_bank - 1] - banks[master_bank - 1],
         knuckle_kg=knuckle_mass,
     )
 
@@ -171,13 +173,13 @@ def _link_fields(cylinder_bank, master_bank, banks, links, knuckle_mass):
 def _grid_cylinders(banks, throws, reciprocating, knuckle, links):
     """One cylinder per (bank, throw), numbered bank by bank."""
     cylinders = []
-    for b in range(len(banks)):
-        for t, throw in enumerate(throws):
-            number = b * len(throws) + t + 1
+    for b in range(1, len(banks) + 1):
+        for t, throw in enumerate(throws, 1):
+            number = (b - 1) * len(throws) + t
             extra = {}
             if links and b != links["master_bank"]:
                 extra = _link_fields(b, links["master_bank"], banks, links, knuckle)
-                extra["master"] = links["master_bank"] * len(throws) + t + 1
+                extra["master"] = (links["master_bank"] - 1) * len(throws) + t
             cylinders.append(Cylinder(number, b, t, throw.z_m, reciprocating, **extra))
     return cylinders
 
@@ -193,11 +195,11 @@ def _listed_cylinders(path, tables, banks, throws, reciprocating, knuckle, links
         if number in keys:
             raise r.error("number", f"cylinder {number} is listed twice; give each a unique number")
         keys[number] = f"cylinders[{i}]"
-        throw = r.integer("throw", low=1, high=len(throws)) - 1
+        throw = r.integer("throw", low=1, high=len(throws))
         rows.append(dict(
-            reader=r, number=number, bank=r.integer("bank", low=1, high=len(banks)) - 1,
+            reader=r, number=number, bank=r.integer("bank", low=1, high=len(banks)),
             throw=throw,
-            z=r.quantity("z", "length", required=False, default=throws[throw].z_m, sign="any"),
+            z=r.quantity("z", "length", required=False, default=throws[throw - 1].z_m, sign="any"),
             reciprocating=r.quantity("reciprocating", "mass", required=False, default=reciprocating),
             master=r.integer("master", required=False),
             link_length=r.quantity("link_length", "length", required=False),
@@ -217,7 +219,7 @@ def _listed_cylinders(path, tables, banks, throws, reciprocating, knuckle, links
             if row["master"] is None and row["bank"] != links["master_bank"]:
                 if row["throw"] not in masters_by_throw:
                     raise row["reader"].error(
-                        "throw", f"no cylinder of links.master_bank sits on throw {row['throw'] + 1} "
+                        "throw", f"no cylinder of links.master_bank sits on throw {row['throw']} "
                         "to carry this link rod; add one or give this cylinder its own master")
                 row["master"] = masters_by_throw[row["throw"]]
     cylinders = []
@@ -239,7 +241,7 @@ def _listed_cylinders(path, tables, banks, throws, reciprocating, knuckle, links
             fields = dict(
                 master=row["master"], link_length_m=length, knuckle_radius_m=radius,
                 knuckle_angle_rad=(math.radians(angle) if angle is not None
-                                   else banks[row["bank"]] - banks[master["bank"]]),
+                                   else banks[row["bank"] - 1] - banks[master["bank"] - 1]),
                 knuckle_kg=knuckle,
             )
         else:
@@ -251,13 +253,14 @@ def _listed_cylinders(path, tables, banks, throws, reciprocating, knuckle, links
             if row["master"] is not None:
                 raise r.error("opposed_throw", "an opposed-piston cylinder has two plain rods; it "
                                                "cannot carry a link rod too (remove master or this)")
-            fields.update(opposed_throw=row["opposed_throw"] - 1,
+            fields.update(opposed_throw=row["opposed_throw"],
                           opposed_reciprocating_kg=(row["opposed_reciprocating"]
                                                     or row["reciprocating"]))
         elif row["opposed_reciprocating"] is not None:
             raise r.error("opposed_reciprocating", "belongs to an opposed-piston cylinder; give "
                                                    "its opposed_throw too, or remove the key")
-        offset = row["pin_offset"] if row["pin_offset"] is not None else bank_offsets[row["bank"]]
+        offset = (row["pin_offset"] if row["pin_offset"] is not None
+                  else bank_offsets[row["bank"] - 1])
         cylinders.append(Cylinder(row["number"], row["bank"], row["throw"], row["z"],
                                   row["reciprocating"], pin_offset_m=offset, **fields))
     return cylinders, keys

@@ -82,7 +82,7 @@ def read_counterweights(top, path, throws, frame):
     weights = []
     for i, table in enumerate(top.tables("counterweights", required=False), 1):
         r = Reader(path, table, f"counterweights[{i}].", COUNTERWEIGHT_KEYS)
-        throw = r.integer("throw", low=1, high=len(throws)) - 1
+        throw = r.integer("throw", low=1, high=len(throws))
         mass_radius, radius = _unbalance(r, "radius")
         weights.append(_built(r, CounterweightMass, throw=throw, mass_radius_kgm=mass_radius,
                               angle_rad=math.radians(r.degrees("angle")),
@@ -119,8 +119,8 @@ def read_shafts(top, path, frame):
 
 def check_crankshafts_used(path, crankshafts, throws):
     """Every crankshaft named carries a throw, and no two share an axis: said with the file's
-    1-based keys (the model counts from 0)."""
-    used = {t.crankshaft for t in throws}
+    keys."""
+    used = {t.crankshaft_index for t in throws}
     for k, shaft in enumerate(crankshafts):
         if k not in used:
             raise ConfigError(path, f"crankshafts[{k + 1}]", f"carries no throw; give it throws "
@@ -184,7 +184,7 @@ def lumped(path, parts, cylinders, rod_length, n_throws, missing_link_keys=()):
                 opposed_reciprocating_kg=piston if c.is_opposed else None,
                 rod_inertia_kgm2=parts.rod_correction_kgm2(rod_length)))
     rods = [sum((not c.is_link and c.throw == t) + (c.opposed_throw == t) for c in cylinders)
-            for t in range(n_throws)]
+            for t in range(1, n_throws + 1)]
     if len(set(rods)) > 1:
         raise ConfigError(path, "parts", f"the throws carry different numbers of plain or master "
                                          f"rods ({rods}); give [masses] for such an engine")

@@ -94,7 +94,7 @@ def _coefficients_of(result, units, pitch, terms, couple_units=None, tv_orders=(
 
         beta = first_mode_amplitudes(engine, result.samples)
         fire = firing_angles(engine)
-        amplitudes = [beta[c.throw] for c in engine.cylinders]
+        amplitudes = [beta[c.throw_index] for c in engine.cylinders]
         angles = [fire[c.number] for c in engine.cylinders]
         unit = sum(abs(b) for b in amplitudes)
         for t in terms:

@@ -19,7 +19,7 @@ def _cylinder_lattice(template, problem, crank):
     P = problem.lattice
     out = {}
     for j in range(problem.n_throws):
-        mine = sorted(c.number for c in template.cylinders if c.throw == j)
+        mine = sorted(c.number for c in template.cylinders if c.throw_index == j)
         for c, e in zip(mine, problem.offsets[j]):
             out[c] = (e - crank[j]) % P
     return out
@@ -60,7 +60,7 @@ def reversed_order(order, template, problem, shift):
     (a cylinder goes to the one of its throw at the mirrored lattice offset)."""
     rename = {}
     for j in range(problem.n_throws):
-        mine = sorted(c.number for c in template.cylinders if c.throw == j)
+        mine = sorted(c.number for c in template.cylinders if c.throw_index == j)
         e = problem.offsets[j]
         used = set()
         for c, ec in zip(mine, e):

@@ -47,12 +47,12 @@ def lattice(template, allow_uneven, step_deg):
     P = round(360.0 / s)
     capacity = n_cyl // P
     tdc = tdc_angles(template)
-    first = min(c.number for c in template.cylinders if c.throw == 0)
+    first = min(c.number for c in template.cylinders if c.throw_index == 0)
     origin = tdc[first]
     base = np.zeros(len(template.throws))
     offsets = []
     for j in range(len(template.throws)):
-        mine = sorted((c.number for c in template.cylinders if c.throw == j))
+        mine = sorted((c.number for c in template.cylinders if c.throw_index == j))
         if not mine:
             offsets.append([])
             continue

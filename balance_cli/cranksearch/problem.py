@@ -81,7 +81,7 @@ def throw_phasors(template, samples, max_order):
     n = len(template.throws)
     out = np.zeros((4, n, max_order), complex)
     for j in range(n):
-        mine = masses.throw == j
+        mine = masses.throw_index == j
         forces = per_mass[mine]
         out[0, j] = forces[:, orders].sum(axis=0)
         out[1, j] = forces[:, -orders].sum(axis=0)
@@ -102,8 +102,8 @@ def guide_phasors(template, samples, max_order):
     for cylinder, own in zip(template.cylinders, guide.cylinders):
         for k in range(1, max_order + 1):
             cos, sin = own.couple.order(k)
-            out[0, cylinder.throw, k - 1] += complex(cos, -sin)
-            out[1, cylinder.throw, k - 1] += complex(cos, -sin) * (cylinder.z_m - guide.mean_z_m)
+            out[0, cylinder.throw_index, k - 1] += complex(cos, -sin)
+            out[1, cylinder.throw_index, k - 1] += complex(cos, -sin) * (cylinder.z_m - guide.mean_z_m)
     return out
 
 
@@ -120,9 +120,9 @@ def torsion_phasors(template, samples, max_order):
     orders = np.arange(1, max_order + 1)
     out = np.zeros((1, len(template.throws), max_order), complex)
     for cylinder in template.cylinders:
-        gamma = template.bank_angles_rad[cylinder.bank]
-        out[0, cylinder.throw] += beta[cylinder.throw] * np.exp(-1j * orders * gamma)
-    unit = sum(abs(beta[c.throw]) for c in template.cylinders)
+        gamma = template.bank_angles_rad[cylinder.bank_index]
+        out[0, cylinder.throw_index] += beta[cylinder.throw_index] * np.exp(-1j * orders * gamma)
+    unit = sum(abs(beta[c.throw_index]) for c in template.cylinders)
     return out, np.full(max_order, unit)
 
 

@@ -136,8 +136,8 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     if n < 2:
         raise AnalysisError("has one throw: with throw 1 at 0° there is nothing to arrange; give "
                             "the template two or more [[throws]]", "template")
-    if any(not any(c.throw == j for c in template.cylinders) for j in range(n)):
-        empty = next(j for j in range(n) if not any(c.throw == j for c in template.cylinders))
+    if any(not any(c.throw_index == j for c in template.cylinders) for j in range(n)):
+        empty = next(j for j in range(n) if not any(c.throw_index == j for c in template.cylinders))
         raise AnalysisError(f"has no cylinder on throw {empty + 1}; remove the throw or give "
                             "it a cylinder", "template")
     flat = replace(template, throws=tuple(Throw(0.0, t.z_m) for t in template.throws),

@@ -59,16 +59,16 @@ class MassSet:
         number of the cylinder the mass belongs to; 0 for the big ends at a crank pin
         (``rotating_kg``), −1 for the crankshaft's own (``crank_kg``), −2 for a counterweight
         as built (:data:`COUNTERWEIGHT`), −3 for a balancer-shaft mass (:data:`BALANCER`)
-    throw : ndarray of int, shape (n_masses,)
-        0-based index of the throw the mass rides on (a counterweight: the throw it is
-        measured from; −1 for a balancer-shaft mass)
+    throw_index : ndarray of int, shape (n_masses,)
+        where the throw the mass rides on stands in ``Engine.throws`` (0-based, for indexing;
+        a counterweight: the throw it is measured from; −1 for a balancer-shaft mass)
     """
 
     positions: np.ndarray
     masses_kg: np.ndarray
     z_m: np.ndarray
     cylinder: np.ndarray
-    throw: np.ndarray
+    throw_index: np.ndarray
 
 
 @dataclass(frozen=True)
@@ -84,14 +84,15 @@ class RodSet:
         each rod's correcting moment of inertia (``Cylinder.rod_inertia_kgm2``), kg·m²
     cylinder : ndarray of int, shape (n_rods,)
         the cylinder whose rod it is (an opposed-piston cylinder has two)
-    throw : ndarray of int, shape (n_rods,)
-        0-based index of the throw the rod's big end rides on (its master's, for a link rod)
+    throw_index : ndarray of int, shape (n_rods,)
+        where the throw the rod's big end rides on (its master's, for a link rod) stands in
+        ``Engine.throws`` (0-based, for indexing)
     """
 
     directions: np.ndarray
     corrections_kgm2: np.ndarray
     cylinder: np.ndarray
-    throw: np.ndarray
+    throw_index: np.ndarray
 
 
 def engine_angles(samples):
@@ -150,7 +151,7 @@ def pin_angle(engine, index, crank_angles):
     """The direction of throw ``index``'s crank pin from its crankshaft's axis, rad from the
     reference axis, at crank angles ``crank_angles`` of the first crankshaft."""
     throw = engine.throws[index]
-    shaft = engine.crankshafts[throw.crankshaft]
+    shaft = engine.crankshafts[throw.crankshaft_index]
     return shaft.direction * (crank_angles + shaft.phase_rad + throw.phase_rad)
 
 
@@ -158,8 +159,8 @@ def counterweight_angle(engine, weight, crank_angles):
     """The direction of counterweight ``weight`` from its crankshaft's axis, rad from the
     reference axis: its throw's pin direction turned by its own angle, in the sense its
     crankshaft turns."""
-    shaft = engine.crankshaft_of(weight.throw)
-    return pin_angle(engine, weight.throw, crank_angles) + shaft.direction * weight.angle_rad
+    shaft = engine.crankshaft_of(weight.throw_index)
+    return pin_angle(engine, weight.throw_index, crank_angles) + shaft.direction * weight.angle_rad
 
 
 def _counterweight_rows(engine, crank_angles):
@@ -169,9 +170,9 @@ def _counterweight_rows(engine, crank_angles):
     for weight in engine.counterweights:
         radius = UNKNOWN_RADIUS_M if weight.radius_m is None else weight.radius_m
         position = radius * np.exp(1j * counterweight_angle(engine, weight, crank_angles))
-        centre = engine.crankshaft_of(weight.throw).centre
+        centre = engine.crankshaft_of(weight.throw_index).centre
         rows.append((position + centre if centre else position, weight.mass_radius_kgm / radius,
-                     engine.counterweight_z_m(weight), COUNTERWEIGHT, weight.throw))
+                     engine.counterweight_z_m(weight), COUNTERWEIGHT, weight.throw_index))
     return rows
 
 
@@ -210,7 +211,7 @@ def close_linkage(engine, crank_angles, numbers=None, pin_shift=None):
     masters = {c.master for c in wanted if c.is_link}
     # only the pins the wanted cylinders ride on (None for the others): the TDC search asks
     # for one cylinder at a time
-    throws = {c.throw for c in wanted} | {c.opposed_throw for c in wanted if c.is_opposed} \
+    throws = {c.throw_index for c in wanted} | {c.opposed_throw_index for c in wanted if c.is_opposed} \
         | set(pin_shift or {})
     pins = [None] * len(engine.throws)
     for i in range(len(engine.throws)):
@@ -225,19 +226,19 @@ def close_linkage(engine, crank_angles, numbers=None, pin_shift=None):
     for cyl in engine.cylinders:
         if cyl.is_link or not (cyl in wanted or cyl.number in masters):
             continue
-        axis = engine.bank_angles_rad[cyl.bank]
-        shaft = engine.crankshaft_of(cyl.throw)
+        axis = engine.bank_angles_rad[cyl.bank_index]
+        shaft = engine.crankshaft_of(cyl.throw_index)
         # the offset is towards the crankshaft's own direction of rotation
         offset = shaft.direction * engine.pin_offset_of(cyl)
         piston[cyl.number], travel[cyl.number] = _slider(
-            pins[cyl.throw], axis, engine.rod_length_m, offset, cyl, crank_angles, shaft.centre)
+            pins[cyl.throw_index], axis, engine.rod_length_m, offset, cyl, crank_angles, shaft.centre)
         if cyl.is_opposed:
             # the same bore line seen from the other end: the axis turned half a turn; the
             # offset from that end is the far crankshaft's (tiny) distance off the axis less
             # this end's offset
-            far = engine.crankshaft_of(cyl.opposed_throw).centre
+            far = engine.crankshaft_of(cyl.opposed_throw_index).centre
             span = (far - shaft.centre) * np.exp(-1j * axis)
-            position, own = _slider(pins[cyl.opposed_throw], axis + np.pi, engine.rod_length_m,
+            position, own = _slider(pins[cyl.opposed_throw_index], axis + np.pi, engine.rod_length_m,
                                     span.imag - offset, cyl, crank_angles, far)
             opposed[cyl.number] = (position, own)
             travel[cyl.number] = travel[cyl.number] + own
@@ -245,14 +246,14 @@ def close_linkage(engine, crank_angles, numbers=None, pin_shift=None):
         if not cyl.is_link:
             continue
         master = engine.cylinder(cyl.master)
-        crank_pin = pins[master.throw]
+        crank_pin = pins[master.throw_index]
         # the knuckle pin is fixed in the master rod: turn the rod's unit vector by the knuckle angle
         rod_direction = (piston[master.number] - crank_pin) / engine.rod_length_m
         knuckle[cyl.number] = crank_pin + cyl.knuckle_radius_m * rod_direction * np.exp(
             1j * cyl.knuckle_angle_rad
         )
-        axis = engine.bank_angles_rad[cyl.bank]
-        shaft = engine.crankshaft_of(cyl.throw)
+        axis = engine.bank_angles_rad[cyl.bank_index]
+        shaft = engine.crankshaft_of(cyl.throw_index)
         piston[cyl.number], travel[cyl.number] = _slider(
             knuckle[cyl.number], axis, cyl.link_length_m,
             shaft.direction * engine.pin_offset_of(cyl), cyl, crank_angles, shaft.centre)
@@ -335,53 +336,53 @@ class LinkageState(NamedTuple):
     opposed_travel: dict
 
 
-def linkage_state(engine, angles, pin_shift=None, throw=None) -> LinkageState:
+def linkage_state(engine, angles, pin_shift=None, throw_index=None) -> LinkageState:
     """Masses, rods and travel at engine angles ``angles`` (any shape, rad; arrays gain that
     shape as trailing axes), in the fixed frame, with crank pins moved by ``pin_shift``
     (fixed-frame offsets by throw index, each broadcasting against ``angles``), from one
     closing of the linkage: the crank-pin forces shift every pin several times, and closing
     it once per shift for all three is what keeps ``balance torque`` fast.
 
-    With ``throw`` (an index), only what rides on that throw: its cylinders' masses and rods
+    With ``throw_index`` (a throw's place in ``Engine.throws``), only what rides on that throw: its cylinders' masses and rods
     and the masses at its pin, in the order they have in the whole engine's state (no
     counterweight or balancer-shaft mass: they ride on no pin).
     """
     check_assembly(engine)
     angles = np.asarray(angles, dtype=float)
-    chosen = engine.cylinders if throw is None else [c for c in engine.cylinders
-                                                     if throw in (c.throw, c.opposed_throw)]
+    chosen = engine.cylinders if throw_index is None else [
+        c for c in engine.cylinders if throw_index in (c.throw_index, c.opposed_throw_index)]
     piston, travel, knuckle, pins, opposed = close_linkage(
-        engine, crank_angles_of(engine, angles), None if throw is None else [c.number for c in chosen],
+        engine, crank_angles_of(engine, angles), None if throw_index is None else [c.number for c in chosen],
         _case_shift(engine, angles, pin_shift))
     rows = []  # (position, mass, z, owner, throw)
     for cyl in chosen:
-        rows.append((piston[cyl.number], cyl.reciprocating_kg, cyl.z_m, cyl.number, cyl.throw))
+        rows.append((piston[cyl.number], cyl.reciprocating_kg, cyl.z_m, cyl.number, cyl.throw_index))
         if cyl.is_link and cyl.knuckle_kg:
-            rows.append((knuckle[cyl.number], cyl.knuckle_kg, cyl.z_m, cyl.number, cyl.throw))
+            rows.append((knuckle[cyl.number], cyl.knuckle_kg, cyl.z_m, cyl.number, cyl.throw_index))
         if cyl.is_opposed:
             rows.append((opposed[cyl.number][0], cyl.opposed_reciprocating_kg, cyl.z_m, cyl.number,
-                         cyl.opposed_throw))
+                         cyl.opposed_throw_index))
     for index, (crank, pin) in enumerate(zip(engine.throws, pins)):
-        if throw is not None and index != throw:
+        if throw_index is not None and index != throw_index:
             continue
         for owner, mass in ((BIG_ENDS, engine.rotating_kg), (CRANK, engine.crank_kg)):
             if mass:
                 rows.append((pin, mass, crank.z_m, owner, index))
-    if throw is None:
+    if throw_index is None:
         # after the pins: they turn with the crankshaft but ride on no pin (a shifted pin
         # leaves them where they are); neither exists on a rotary, so the frames agree
         rows += _counterweight_rows(engine, crank_angles_of(engine, angles))
         rows += _balancer_rows(engine, angles)
     rods, rod_rows = [], []  # unit vectors; (correction, cylinder, throw)
     for cyl in chosen:
-        big_end = knuckle[cyl.number] if cyl.is_link else pins[cyl.throw]
+        big_end = knuckle[cyl.number] if cyl.is_link else pins[cyl.throw_index]
         rod = piston[cyl.number] - big_end
         rods.append(rod / np.abs(rod))
-        rod_rows.append((cyl.rod_inertia_kgm2, cyl.number, cyl.throw))
+        rod_rows.append((cyl.rod_inertia_kgm2, cyl.number, cyl.throw_index))
         if cyl.is_opposed:
-            rod = opposed[cyl.number][0] - pins[cyl.opposed_throw]
+            rod = opposed[cyl.number][0] - pins[cyl.opposed_throw_index]
             rods.append(rod / np.abs(rod))
-            rod_rows.append((cyl.rod_inertia_kgm2, cyl.number, cyl.opposed_throw))
+            rod_rows.append((cyl.rod_inertia_kgm2, cyl.number, cyl.opposed_throw_index))
     positions = np.array([np.broadcast_to(row[0], angles.shape) for row in rows])
     directions = np.array(rods)
     if engine.is_rotary:

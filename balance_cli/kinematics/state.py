@@ -83,10 +83,10 @@ class KinematicState:
             self,
             masses=dataclasses.replace(masses, **{
                 name: getattr(masses, name)[masses_kept]
-                for name in ("positions", "masses_kg", "z_m", "cylinder", "throw")}),
+                for name in ("positions", "masses_kg", "z_m", "cylinder", "throw_index")}),
             rods=dataclasses.replace(rods, **{
                 name: getattr(rods, name)[rods_kept]
-                for name in ("directions", "corrections_kgm2", "cylinder", "throw")}))
+                for name in ("directions", "corrections_kgm2", "cylinder", "throw_index")}))
 
 
 def kinematic_state(engine, samples: int) -> KinematicState:
@@ -139,9 +139,9 @@ def _by_crankshaft(engine, closed):
         travel = closed.travel[c.number]
         if c.is_opposed:
             own = closed.opposed_travel[c.number]
-            out.setdefault(engine.throws[c.opposed_throw].crankshaft, {})[c.number] = own
+            out.setdefault(engine.throws[c.opposed_throw_index].crankshaft_index, {})[c.number] = own
             travel = travel - own
-        mine = out.setdefault(engine.throws[c.throw].crankshaft, {})
+        mine = out.setdefault(engine.throws[c.throw_index].crankshaft_index, {})
         mine[c.number] = mine.get(c.number, 0.0) + travel
     return out
 

@@ -61,10 +61,10 @@ def _plain_tdc_crank_angles(engine):
     for c in engine.cylinders:
         if c.is_link or c.is_opposed:
             continue
-        throw = engine.throws[c.throw]
-        shaft = engine.crankshafts[throw.crankshaft]
+        throw = engine.throws[c.throw_index]
+        shaft = engine.crankshafts[throw.crankshaft_index]
         d = shaft.direction
-        pin = engine.bank_angles_rad[c.bank] + math.asin(d * engine.pin_offset_of(c) / reach)
+        pin = engine.bank_angles_rad[c.bank_index] + math.asin(d * engine.pin_offset_of(c) / reach)
         # the pin points at d·(θ + φ_s + β)
         out[c.number] = d * pin - shaft.phase_rad - throw.phase_rad
     return out

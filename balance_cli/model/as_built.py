@@ -20,7 +20,7 @@ class CounterweightMass:
     Parameters
     ----------
     throw : int
-        0-based index into ``Engine.throws`` of the throw whose pin it is measured from
+        the number of the throw (from 1) whose pin it is measured from
     mass_radius_kgm : float
         its unbalance m·ρ, kg·m (all that the forces and torques depend on)
     angle_rad : float
@@ -42,8 +42,8 @@ class CounterweightMass:
 
     def __post_init__(self):
         if isinstance(self.throw, bool) or not isinstance(self.throw, numbers.Integral) \
-                or self.throw < 0:
-            raise ModelError(f"must be a 0-based throw index, got {self.throw!r}", "throw")
+                or self.throw < 1:
+            raise ModelError(f"must be a throw number from 1, got {self.throw!r}", "throw")
         object.__setattr__(self, "throw", int(self.throw))
         check_quantity(self.mass_radius_kgm, "unbalance", "mass_radius_kgm")
         check_angle(self.angle_rad, "angle_rad")
@@ -51,6 +51,11 @@ class CounterweightMass:
             check_quantity(self.z_m, "length", "z_m", sign="any")
         if self.radius_m is not None:
             check_quantity(self.radius_m, "length", "radius_m")
+
+    @property
+    def throw_index(self) -> int:
+        """Where its throw stands in ``Engine.throws`` (0-based, for indexing)."""
+        return self.throw - 1
 
     @property
     def mass_kg(self) -> float | None:

@@ -62,22 +62,28 @@ class Throw:
     z_m : float
         axial position, m
     crankshaft : int
-        0-based index into ``Engine.crankshafts`` (0, the first, for an engine with one)
+        the number of the crankshaft that carries it, from 1 (the first, for an engine with
+        one), as in ``[[throws]]``'s ``crankshaft``
     """
 
     phase_rad: float
     z_m: float = 0.0
-    crankshaft: int = 0
+    crankshaft: int = 1
 
     def __post_init__(self):
         # checked here too, not only in the Engine: a Throw of NaN once built without a word
         check_angle(self.phase_rad, "phase_rad")
         check_quantity(self.z_m, "length", "z_m", sign="any")
         if isinstance(self.crankshaft, bool) or not isinstance(self.crankshaft, numbers.Integral) \
-                or self.crankshaft < 0:
-            raise ModelError(f"must be a 0-based crankshaft index, got {self.crankshaft!r}",
+                or self.crankshaft < 1:
+            raise ModelError(f"must be a crankshaft number from 1, got {self.crankshaft!r}",
                              "crankshaft")
         object.__setattr__(self, "crankshaft", int(self.crankshaft))
+
+    @property
+    def crankshaft_index(self) -> int:
+        """Where its crankshaft stands in ``Engine.crankshafts`` (0-based, for indexing)."""
+        return self.crankshaft - 1
 
 
 #: the one crankshaft of an engine that names none: the reference itself

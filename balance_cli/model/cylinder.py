@@ -26,9 +26,9 @@ class Cylinder:
     number : int
         cylinder number, as used in firing orders
     bank : int
-        0-based index into ``Engine.bank_angles_rad``
+        the number of its bank, from 1, in the order of ``Engine.bank_angles_rad``
     throw : int
-        0-based index into ``Engine.throws``
+        the number of its throw, from 1, in the order of ``Engine.throws``
     z_m : float
         axial position, m
     reciprocating_kg : float
@@ -49,8 +49,8 @@ class Cylinder:
         this cylinder's piston-pin offset (desaxé), m, positive towards the direction of
         rotation of its crankshaft; None takes the engine's ``pin_offset_m``
     opposed_throw : int or None
-        an opposed-piston cylinder: the 0-based throw, on another crankshaft, whose rod drives
-        the second piston of this bore from the other end (plain rod of ``rod_length_m``)
+        an opposed-piston cylinder: the number of the throw, on another crankshaft, whose rod
+        drives the second piston of this bore from the other end (plain rod of ``rod_length_m``)
     opposed_reciprocating_kg : float or None
         mass moving with the second piston's pin, kg (opposed-piston cylinders only; None, the
         default, takes ``reciprocating_kg``)
@@ -77,6 +77,12 @@ class Cylinder:
         if not isinstance(n, numbers.Integral) or isinstance(n, bool) or n < 1:
             raise ModelError(f"must be a whole number from 1, got {n!r}", "number")
         object.__setattr__(self, "number", int(n))   # numpy's whole numbers as Python's
+        for name in ("bank", "throw"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 1:
+                raise ModelError(f"cylinder {n}: {name} is a number from 1, got {value!r}",
+                                 cylinder=n)
+            object.__setattr__(self, name, int(value))
         for name in ("z_m", "reciprocating_kg", "link_length_m", "knuckle_radius_m",
                      "knuckle_angle_rad", "knuckle_kg", "rod_inertia_kgm2",
                      "opposed_reciprocating_kg"):
@@ -91,11 +97,11 @@ class Cylinder:
         if self.pin_offset_m is not None:
             check_quantity(self.pin_offset_m, "length", "pin_offset_m", sign="any", cylinder=n)
         if self.opposed_throw is not None:
-            index = self.opposed_throw
-            if isinstance(index, bool) or not isinstance(index, numbers.Integral) or index < 0:
-                raise ModelError(f"cylinder {n}: opposed_throw is a 0-based throw index, got "
-                                 f"{index!r}", cylinder=n)
-            object.__setattr__(self, "opposed_throw", int(index))
+            far = self.opposed_throw
+            if isinstance(far, bool) or not isinstance(far, numbers.Integral) or far < 1:
+                raise ModelError(f"cylinder {n}: opposed_throw is a throw number from 1, got "
+                                 f"{far!r}", cylinder=n)
+            object.__setattr__(self, "opposed_throw", int(far))
             if self.master is not None:
                 raise ModelError(f"cylinder {n}: an opposed-piston cylinder has plain rods; it "
                                  "cannot be a link-rod cylinder too", cylinder=n)
@@ -117,3 +123,20 @@ class Cylinder:
     def is_opposed(self) -> bool:
         """Two pistons in one bore, driven from its two ends by two crankshafts."""
         return self.opposed_throw is not None
+
+    # where its bank and throws stand in the engine's tuples: 0-based, for indexing them
+
+    @property
+    def bank_index(self) -> int:
+        """Where its bank stands in ``Engine.bank_angles_rad`` (0-based, for indexing)."""
+        return self.bank - 1
+
+    @property
+    def throw_index(self) -> int:
+        """Where its throw stands in ``Engine.throws`` (0-based, for indexing)."""
+        return self.throw - 1
+
+    @property
+    def opposed_throw_index(self) -> int | None:
+        """Where its opposed throw stands in ``Engine.throws`` (0-based), None if it has none."""
+        return None if self.opposed_throw is None else self.opposed_throw - 1

@@ -173,7 +173,7 @@ class Engine:
         """Where ``counterweight`` sits, m: its own ``z_m``, else its throw's."""
         if counterweight.z_m is not None:
             return counterweight.z_m
-        return self.throws[counterweight.throw].z_m
+        return self.throws[counterweight.throw_index].z_m
 
     def balancer_z_m(self, mass) -> float:
         """Where balancer ``mass`` sits, m: its own ``z_m``, else z̄ (the cylinders' mean)."""
@@ -185,8 +185,9 @@ class Engine:
         return offset_position(shaft.lateral_m, shaft.vertical_m, self.vertical_axis_rad)
 
     def crankshaft_of(self, throw_index) -> "Crankshaft":
-        """The crankshaft that carries throw ``throw_index`` (0-based)."""
-        return self.crankshafts[self.throws[throw_index].crankshaft]
+        """The crankshaft that carries the throw at ``throw_index`` in :attr:`throws` (0-based,
+        as the arrays of the kinematics index throws)."""
+        return self.crankshafts[self.throws[throw_index].crankshaft_index]
 
     @property
     def has_several_crankshafts(self) -> bool:

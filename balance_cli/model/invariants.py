@@ -74,13 +74,13 @@ def check_engine(engine: "Engine") -> None:
     for i, throw in enumerate(engine.throws, 1):
         check_angle(throw.phase_rad, "throws")
         check_quantity(throw.z_m, "length", "throws", sign="any")
-        if not throw.crankshaft < len(engine.crankshafts):
-            raise ModelError(f"[{i - 1}] names crankshaft index {throw.crankshaft}, but the engine "
-                             f"has crankshafts 0 to {len(engine.crankshafts) - 1}; add the "
+        if not throw.crankshaft <= len(engine.crankshafts):
+            raise ModelError(f"throw {i} names crankshaft {throw.crankshaft}, but the engine "
+                             f"has crankshafts 1 to {len(engine.crankshafts)}; add the "
                              "crankshaft or name another", "throws")
-    idle = sorted(set(range(len(engine.crankshafts))) - {t.crankshaft for t in engine.throws})
+    idle = sorted(set(range(1, len(engine.crankshafts) + 1)) - {t.crankshaft for t in engine.throws})
     if idle:
-        raise ModelError(f"[{idle[0]}] carries no throw; give it throws or remove it",
+        raise ModelError(f"crankshaft {idle[0]} carries no throw; give it throws or remove it",
                          "crankshafts")
     if not engine.cylinders or not all(isinstance(c, Cylinder) for c in engine.cylinders):
         raise ModelError("needs one or more Cylinder objects", "cylinders")
@@ -95,8 +95,8 @@ def check_engine(engine: "Engine") -> None:
         bore = (c.bank, c.throw, round(c.z_m / SAME_POSITION_M))
         if bore in bores:
             raise ModelError(
-                f"cylinder {c.number} sits in the bore of cylinder {bores[bore]} (bank {c.bank + 1}, "
-                f"throw {c.throw + 1}, same z); give it another bank, throw or axial position",
+                f"cylinder {c.number} sits in the bore of cylinder {bores[bore]} (bank {c.bank}, "
+                f"throw {c.throw}, same z); give it another bank, throw or axial position",
                 cylinder=c.number)
         bores[bore] = c.number
     for c in engine.cylinders:
@@ -104,8 +104,8 @@ def check_engine(engine: "Engine") -> None:
         # on the opposed throw, would be a third piston in it
         if not c.is_opposed:
             continue
-        back = engine.bank_angles_rad[c.bank] + math.pi
-        for j, angle in enumerate(engine.bank_angles_rad):
+        back = engine.bank_angles_rad[c.bank_index] + math.pi
+        for j, angle in enumerate(engine.bank_angles_rad, 1):
             if abs(math.remainder(angle - back, 2 * math.pi)) < SAME_DIRECTION_RAD:
                 other = bores.get((j, c.opposed_throw, round(c.z_m / SAME_POSITION_M)))
                 if other is not None:
@@ -144,9 +144,9 @@ def _check_balancers(engine):
             raise ModelError(f"cannot be given for a rotary engine: {what}; remove them, or "
                              'use frame = "fixed"', name)
     for i, weight in enumerate(engine.counterweights, 1):
-        if not weight.throw < len(engine.throws):
-            raise ModelError(f"[{i - 1}] is on throw index {weight.throw}, but the engine has "
-                             f"throws 0 to {len(engine.throws) - 1}; give one of them",
+        if not weight.throw <= len(engine.throws):
+            raise ModelError(f"counterweight {i} is on throw {weight.throw}, but the engine has "
+                             f"throws 1 to {len(engine.throws)}; give one of them",
                              "counterweights")
 
 
@@ -164,36 +164,38 @@ def _check_crankshafts(engine):
     for i, shaft in enumerate(shafts):
         for j in range(i):
             if abs(shaft.centre - shafts[j].centre) < SAME_POSITION_M:
-                raise ModelError(f"[{j}] and [{i}] share an axis; give each crankshaft its own "
-                                 "position", "crankshafts")
+                raise ModelError(f"crankshafts {j + 1} and {i + 1} share an axis; give each "
+                                 "crankshaft its own position", "crankshafts")
 
 
 def _check_opposed(engine, c):
     """The second piston of an opposed-piston cylinder: on a throw of another crankshaft that
     lies on the cylinder's axis, far enough out that the two pistons never meet."""
     n = c.number
-    if not 0 <= c.opposed_throw < len(engine.throws):
-        raise ModelError(f"cylinder {n}: opposed_throw index {c.opposed_throw} is not one of the "
-                         f"engine's throws (0 to {len(engine.throws) - 1})", cylinder=n)
-    own, other = engine.throws[c.throw].crankshaft, engine.throws[c.opposed_throw].crankshaft
+    if not 1 <= c.opposed_throw <= len(engine.throws):
+        raise ModelError(f"cylinder {n}: opposed_throw {c.opposed_throw} is not one of the "
+                         f"engine's throws (1 to {len(engine.throws)})", cylinder=n)
+    own = engine.throws[c.throw_index].crankshaft_index
+    other = engine.throws[c.opposed_throw_index].crankshaft_index
     if own == other:
         raise ModelError(f"cylinder {n}: its opposed throw is on the same crankshaft as its own "
                          "throw; an opposed piston is driven by another crankshaft, at the other "
                          "end of the bore", cylinder=n)
     # the far piston runs in this bore, at its axial position: its throw must be there too
     # (as far off it as the near throw is, for rods set side by side)
-    far_z, near_z = engine.throws[c.opposed_throw].z_m, engine.throws[c.throw].z_m
+    far_z, near_z = engine.throws[c.opposed_throw_index].z_m, engine.throws[c.throw_index].z_m
     if abs(far_z - c.z_m) > abs(near_z - c.z_m) + SAME_POSITION_M:
         raise ModelError(f"cylinder {n}: its opposed throw is at z = {far_z:g} m but the bore at "
                          f"z = {c.z_m:g} m; the far piston runs in the same bore, so give its throw "
                          "the bore's axial position", cylinder=n)
     span = (engine.crankshafts[other].centre - engine.crankshafts[own].centre) \
-        * complex(math.cos(engine.bank_angles_rad[c.bank]), -math.sin(engine.bank_angles_rad[c.bank]))
+        * complex(math.cos(engine.bank_angles_rad[c.bank_index]),
+                  -math.sin(engine.bank_angles_rad[c.bank_index]))
     # decimal inputs put a crankshaft on a slanted axis only to within rounding: a micrometre
     # a metre is accepted (the linkage then uses the exact line through the first crankshaft)
     if abs(span.imag) > max(SAME_POSITION_M, OPPOSED_AXIS_TOLERANCE * abs(span)):
         raise ModelError(f"cylinder {n}: crankshaft {other + 1} lies {abs(span.imag):g} m off the "
-                         f"axis of the cylinder's bank {c.bank + 1}; an opposed piston's crankshaft "
+                         f"axis of the cylinder's bank {c.bank}; an opposed piston's crankshaft "
                          "must sit on the bore's axis, at the other end", cylinder=n)
     reach = 2 * (engine.rod_length_m + engine.crank_radius_m)
     if span.real <= reach:
@@ -207,16 +209,17 @@ def _check_cylinder(engine, c):
     n = c.number
     if isinstance(n, bool) or not isinstance(n, int) or n < 1:
         raise ModelError(f"cylinder numbers are whole numbers from 1, got {n!r}", "cylinders")
-    for index in (c.bank, c.throw):
-        if isinstance(index, bool) or not isinstance(index, int):
-            raise ModelError(f"cylinder {n}: bank and throw are 0-based whole-number indices, got "
-                             f"{index!r}", cylinder=n)
-    if not 0 <= c.bank < len(engine.bank_angles_rad):
-        raise ModelError(f"cylinder {n}: bank index {c.bank} is not one of the engine's "
-                         f"{len(engine.bank_angles_rad)} banks", cylinder=n)
-    if not 0 <= c.throw < len(engine.throws):
-        raise ModelError(f"cylinder {n}: throw index {c.throw} is not one of the engine's "
-                         f"{len(engine.throws)} throws", cylinder=n)
+    for number in (c.bank, c.throw):
+        if isinstance(number, bool) or not isinstance(number, int):
+            raise ModelError(f"cylinder {n}: bank and throw are whole numbers from 1, got "
+                             f"{number!r}", cylinder=n)
+    if not 1 <= c.bank <= len(engine.bank_angles_rad):
+        raise ModelError(f"cylinder {n}: bank {c.bank} is not one of the engine's "
+                         f"{len(engine.bank_angles_rad)} banks (1 to "
+                         f"{len(engine.bank_angles_rad)})", cylinder=n)
+    if not 1 <= c.throw <= len(engine.throws):
+        raise ModelError(f"cylinder {n}: throw {c.throw} is not one of the engine's "
+                         f"{len(engine.throws)} throws (1 to {len(engine.throws)})", cylinder=n)
     check_quantity(c.z_m, "length", "z_m", sign="any", cylinder=n)
     check_quantity(c.reciprocating_kg, "mass", "reciprocating_kg", cylinder=n)
     check_quantity(c.rod_inertia_kgm2, "moment of inertia", "rod_inertia_kgm2", sign="any",
@@ -231,7 +234,10 @@ def _check_cylinder(engine, c):
         _check_opposed(engine, c)
     if not c.is_link:
         return
-    master = engine._by_number.get(c.master)
+    try:
+        master = engine.cylinder(c.master)
+    except KeyError:
+        master = None
     if master is None or master is c:
         raise ModelError(f"cylinder {n}: its master {c.master} is not another cylinder; give the "
                          "number of the master-rod cylinder", cylinder=n)
@@ -243,7 +249,7 @@ def _check_cylinder(engine, c):
                          "rods are plain; a link rod needs a master rod of its own", cylinder=n)
     if master.throw != c.throw:
         raise ModelError(f"cylinder {n}: its master, cylinder {c.master}, is on throw "
-                         f"{master.throw + 1} but this one on throw {c.throw + 1}; a link rod rides "
+                         f"{master.throw} but this one on throw {c.throw}; a link rod rides "
                          "on the master rod of its own throw", cylinder=n)
     check_quantity(c.link_length_m, "length", "link_length_m", cylinder=n)
     check_quantity(c.knuckle_radius_m, "length", "knuckle_radius_m", cylinder=n)

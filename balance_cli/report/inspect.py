@@ -79,7 +79,7 @@ def _as_built_show_lines(engine):
     """``balance show``'s lines for the counterweights and balancer shafts as built."""
     lines = []
     for weight in engine.counterweights:
-        lines.append(f"  counterweight: throw {weight.throw + 1}, m·ρ {figure(weight.mass_radius_kgm)} "
+        lines.append(f"  counterweight: throw {weight.throw}, m·ρ {figure(weight.mass_radius_kgm)} "
                      f"kg·m at {math.degrees(weight.angle_rad):g}° from its pin, z "
                      f"{_mm(engine.counterweight_z_m(weight))}")
     for shaft in engine.balancer_shafts:
@@ -125,12 +125,12 @@ def show_table(engine, firing):
             rod = (f"link on {c.master} ({_mm(c.link_length_m)}, knuckle {_mm(c.knuckle_radius_m)} "
                    f"at {math.degrees(c.knuckle_angle_rad):g}°)")
         elif c.is_opposed:
-            rod = f"opposed: throw {c.opposed_throw + 1}, {kg_to_g(c.opposed_reciprocating_kg):g} g"
-        bank = math.degrees(engine.bank_angles_rad[c.bank])
-        throw = str(c.throw + 1) + (f" (shaft {engine.throws[c.throw].crankshaft + 1})"
+            rod = f"opposed: throw {c.opposed_throw}, {kg_to_g(c.opposed_reciprocating_kg):g} g"
+        bank = math.degrees(engine.bank_angles_rad[c.bank_index])
+        throw = str(c.throw) + (f" (shaft {engine.throws[c.throw_index].crankshaft})"
                                     if several else "")
-        row = [str(c.number), f"{c.bank + 1} ({bank:g}°)", throw,
-               f"{math.degrees(engine.throws[c.throw].phase_rad):g}", f"{m_to_mm(c.z_m):g}",
+        row = [str(c.number), f"{c.bank} ({bank:g}°)", throw,
+               f"{math.degrees(engine.throws[c.throw_index].phase_rad):g}", f"{m_to_mm(c.z_m):g}",
                f"{kg_to_g(c.reciprocating_kg):g}", rod]
         if offsets:
             row.append(f"{m_to_mm(engine.pin_offset_of(c)):g}")

@@ -70,8 +70,8 @@ def throw_inertias(engine, samples=DEFAULT_SAMPLES) -> np.ndarray:
     out = []
     for index in range(len(engine.throws)):
         # the rows riding on this throw: μ is a sum over the parts
-        mu, _ = reduced_mass_and_momentum(engine, state.parts(masses.throw == index,
-                                                              rods.throw == index))
+        mu, _ = reduced_mass_and_momentum(engine, state.parts(masses.throw_index == index,
+                                                              rods.throw_index == index))
         # the shaft's own inertia is the user's, in the webs
         out.append(float(np.mean(mu.real)) - engine.shaft_inertia_kgm2 + model.web_inertia_kgm2)
     return np.array(out)

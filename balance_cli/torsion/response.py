@@ -234,7 +234,7 @@ def torsional_vibration(engine, speeds_rpm=None, max_order=DEFAULT_MAX_ORDER,
 
     fire = firing_angles(engine)
     numbers = [c.number for c in engine.cylinders]
-    throw_of = [c.throw for c in engine.cylinders]
+    throw_of = [c.throw_index for c in engine.cylinders]
     orders, gas, inertia = excitation(engine, samples, max_order, pressure, bore_m)
     n_cyl = len(numbers)
     major = {float(k): abs(abs(phase_vector_sum(np.ones(n_cyl), [fire[m] for m in numbers], k))

@@ -429,8 +429,8 @@ def _link_first_harmonic(record):
     # (Table I starts at φ = 0)
     probe = dataclasses.replace(
         engine, bank_angles_rad=(0.0, phi + math.pi / 2), throws=engine.throws[:1], firing_order=None,
-        cylinders=(dataclasses.replace(master, bank=0),
-                   dataclasses.replace(link, number=2, bank=1, master=1, knuckle_angle_rad=phi,
+        cylinders=(dataclasses.replace(master, bank=1),
+                   dataclasses.replace(link, number=2, bank=2, master=1, knuckle_angle_rad=phi,
                                        **({"knuckle_radius_m": record["knuckle_radius_mm"] / 1000}
                                           if "knuckle_radius_mm" in record else {}))),
     )
@@ -473,7 +473,7 @@ def _series_check(name, record):
     q = record.get("q", 0.25)
     engine = Engine(name="slider-crank", cycle=4, speed_rad_s=1.0, crank_radius_m=q,
                     rod_length_m=1.0, bank_angles_rad=(0.0,), throws=(Throw(0.0),),
-                    cylinders=(Cylinder(1, 0, 0, 0.0, 1.0),))
+                    cylinders=(Cylinder(1, 1, 1, 0.0, 1.0),))
     samples = 256
     theta = 2 * np.pi * np.arange(samples) / samples
     travel = linkage(engine, theta).travel[1]                    # = q·cos θ + √(1 − q² sin²θ)
