@@ -80,7 +80,7 @@ def test_to_dict_with_a_reference_is_the_entry_of_a_comparison():
      dict(planes=[1, 6], radius_m=0.06, shaft_orders=(6,), test_masses=True)),
     ([CONFIGS / "bramo-323.toml", "--antivibrateur"], dict(antivibrateur_radius_m=0.040)),
     ([CONFIGS / "inline-4-car.toml", "--balance-factor", "0.5", "--planes", "0 mm,264 mm"],
-     dict(balance_factor=0.5, planes=[0.0, 0.264])),
+     dict(balance_factor=0.5, planes=[balance.Plane(0.0), balance.Plane(0.264)])),
 ])
 def test_balance_to_dict_is_the_counterweight_entry(args, kwargs):
     (entry,) = cli_json("counterweight", *args, "--format", "json")["engines"]

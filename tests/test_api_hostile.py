@@ -69,7 +69,8 @@ def cases(w):
         ("counterweights.engine", lambda v: balance.counterweights(v), "engine",
          COLLECTIONS + [tq]),
         ("counterweights.planes", lambda v: balance.counterweights(e, planes=v), "planes",
-         [NAN, INF, 3, "x", [], [NAN], [INF], [0], [99], [1, 2, 3], [object()]]),
+         [NAN, INF, 3, "x", [], [NAN], [INF], [0.0], [balance.Plane(NAN)],
+          [balance.Plane(INF)], [0], [99], [1, 2, 3], [object()]]),
         ("counterweights.radius_m", lambda v: balance.counterweights(e, radius_m=v),
          "radius_m", NUMBERS),
         ("counterweights.balance_factor",
@@ -189,8 +190,8 @@ def cases(w):
          NUMBERS),
         ("EngineResult.main_order", lambda v: r.main_order(v), "part",
          [None, "torque", 3, NAN, [], True]),
-        ("counterweights.shaft_offsets",
-         lambda v: balance.counterweights(e, shaft_orders=[2], shaft_offsets=v), "shaft_offsets",
+        ("counterweights.shaft_offsets_m",
+         lambda v: balance.counterweights(e, shaft_orders=[2], shaft_offsets_m=v), "shaft_offsets_m",
          ["x", NAN, 3, [], (NAN, 0.0), (INF, 0.0), (0.1,), (0.1, 0.2, 0.3), ("x", 0.0),
           {7: (0.1, 0.0)}]),
         ("sweep.config", lambda v: balance.sweep(v, "speed", ["1000 rpm"]), "config",
@@ -300,7 +301,7 @@ def test_the_good_values_the_cases_replace_work(world):
     assert r.order(np.int64(2)) is r.order(2)
     assert e.replace(vertical_rad=np.float64(0.5)).vertical_axis_rad == 0.5
     assert r.main_order("moment") is None and r.main_order("force")["order"] == 2
-    assert balance.counterweights(e, shaft_orders=[2], shaft_offsets=(0.1, 0.0)).balancer_shafts
+    assert balance.counterweights(e, shaft_orders=[2], shaft_offsets_m=(0.1, 0.0)).balancer_shafts
     pru, _ = balance.power_related_unbalance(r, power_w=np.float64(5e4))
     assert pru.power.watts == 5e4
     table = balance.family(balance.load_data(CONFIGS / "marine-6-2stroke.toml"), "x.toml",

@@ -316,7 +316,7 @@ def test_180_twin_couple_one_counter_rotating_shaft_with_two_masses():
     θ = 0. With m = 1 kg, r = 0.08 m, d = 0.1 m, s = 0.3 m: m·e = 0.08·0.1/0.6 kg·m."""
     m, r, d, s = 1.0, 0.08, 0.1, 0.3
     engine = make_engine([0], [(0, -d / 2), (180, d / 2)], r=r, m=m)
-    result = balance(engine, planes=[-s / 2, s / 2], shaft_orders=(1,))
+    result = balance(engine, planes=[Plane(-s / 2), Plane(s / 2)], shaft_orders=(1,))
     assert_allclose([w.mass_kg for w in result.counterweights], [m * d / (2 * s)] * 2, rtol=1e-9)
     assert_allclose([w.angle_deg % 360 for w in result.counterweights], [180.0, 0.0], atol=1e-9)
     (shaft,) = result.balancer_shafts
@@ -371,7 +371,7 @@ def _inline4_pair(offsets):
     # the pair opposes 4·B2·m·r·ω²·cos 2θ (along the reference axis, the vertical): each shaft's
     # force is P·e^{±2iθ} with P = −2·B2·m·r·ω²
     p = -2 * lam * engine.mean_reciprocating_kg * engine.crank_radius_m * engine.speed_rad_s**2
-    return engine, balance(engine, shaft_orders=(2,), shaft_offsets=offsets), p
+    return engine, balance(engine, shaft_orders=(2,), shaft_offsets_m=offsets), p
 
 
 def test_lanchester_pair_at_different_heights_makes_a_rolling_couple():
@@ -434,7 +434,7 @@ def test_offset_follows_the_engine_vertical(vertical_deg, cos_sin):
     engine = dataclasses.replace(load(CONFIGS / "inline-4-car.toml"),
                                  vertical_rad=math.radians(vertical_deg))
     a = 0.1
-    result = balance(engine, shaft_orders=(2,), shaft_offsets={2: (a, 0.0)})
+    result = balance(engine, shaft_orders=(2,), shaft_offsets_m={2: (a, 0.0)})
     plus, minus = result.balancer_shafts
     p = plus.force_n * math.cos(math.radians(plus.masses[0].phase_deg))   # signed: −|P|
     assert_allclose([plus.rolling_moment.cos_nm, plus.rolling_moment.sin_nm],
@@ -453,13 +453,13 @@ def test_offset_follows_the_engine_vertical(vertical_deg, cos_sin):
 ])
 def test_bad_shaft_offsets(offsets, words):
     with pytest.raises(CounterweightError, match=words) as info:
-        balance(load(CONFIGS / "inline-4-car.toml"), shaft_orders=(2,), shaft_offsets=offsets)
-    assert info.value.parameter == "shaft_offsets"
+        balance(load(CONFIGS / "inline-4-car.toml"), shaft_orders=(2,), shaft_offsets_m=offsets)
+    assert info.value.parameter == "shaft_offsets_m"
 
 
 def test_shaft_offsets_need_shafts():
     with pytest.raises(CounterweightError, match="no shaft order was asked for"):
-        balance(load(CONFIGS / "inline-4-car.toml"), shaft_offsets=(0.1, 0.0))
+        balance(load(CONFIGS / "inline-4-car.toml"), shaft_offsets_m=(0.1, 0.0))
 
 
 def test_cli_nothing_left_in_words():
@@ -558,3 +558,13 @@ def test_cli_270_twin_reports_one_shaft_with_two_masses(tmp_path):
     assert_allclose([m["z_m"] for m in shaft["masses"]], [0.0, 0.08], atol=1e-12)
     assert engine["after_shafts"]["orders"][0]["force"]["max_N"] == 0.0
     assert engine["after_shafts"]["orders"][0]["moment"]["max_Nm"] == 0.0
+
+
+def test_an_axial_position_is_a_plane_not_a_bare_number():
+    """1 and 1.0 would mean throw 1 and z = 1 m: a float is refused with the spelling to use,
+    and Plane(z_m) at a throw's position is that throw's plane."""
+    engine = make_engine([0], [(0, 0.0), (180, 0.1)])
+    with pytest.raises(CounterweightError, match=r"Plane\(z_m\) for an axial position"):
+        balance(engine, planes=[0.1])
+    result = balance(engine, planes=[Plane(0.0), Plane(0.1)])
+    assert [w.plane for w in result.counterweights] == [Plane(0.0, 1), Plane(0.1, 2)]

@@ -83,14 +83,14 @@ def plane_at(engine, z_m) -> Plane:
 
 
 def _plane(engine, spec):
+    """A plane from a throw number, or a :class:`Plane` (one at an axial position is on the
+    throw that sits there, if any)."""
     if isinstance(spec, Plane):
-        return spec
+        return spec if spec.throw is not None else plane_at(engine, spec.z_m)
     if isinstance(spec, numbers.Integral) and not isinstance(spec, bool):
         return plane_at_throw(engine, spec)
-    if isinstance(spec, numbers.Real) and not isinstance(spec, bool):
-        return plane_at(engine, spec)
-    raise CounterweightError(f"takes throw numbers (int), axial positions in metres (float) or "
-                             f"Plane objects, got {spec!r}", "planes")
+    raise CounterweightError(f"takes throw numbers (int, from 1) or Plane objects (Plane(z_m) for "
+                             f"an axial position in metres), got {spec!r}", "planes")
 
 
 def default_planes(engine):
@@ -201,15 +201,15 @@ def _offset_for(speed_ratio, offsets):
     return offsets.get(speed_ratio, offsets.get(None, (0.0, 0.0)))
 
 
-def _checked_offsets(shaft_offsets, orders):
+def _checked_offsets(shaft_offsets_m, orders):
     """{speed ratio or None (every other shaft): (lateral, vertical) m} from a pair or a
     mapping; ratios must belong to the orders asked for."""
-    if shaft_offsets is None:
+    if shaft_offsets_m is None:
         return {}
     if not orders:
         raise CounterweightError("places balancer shafts, but no shaft order was asked for",
-                                 "shaft_offsets")
-    items = shaft_offsets.items() if isinstance(shaft_offsets, Mapping) else [(None, shaft_offsets)]
+                                 "shaft_offsets_m")
+    items = shaft_offsets_m.items() if isinstance(shaft_offsets_m, Mapping) else [(None, shaft_offsets_m)]
     checked = {}
     for ratio, pair in items:
         if ratio is not None:
@@ -218,20 +218,20 @@ def _checked_offsets(shaft_offsets, orders):
                 raise CounterweightError(
                     f"names speed ratio {ratio!r}, but shafts are made for orders "
                     f"{', '.join(map(str, orders))} only (ratios ±k, + with the crank)",
-                    "shaft_offsets")
+                    "shaft_offsets_m")
             ratio = int(ratio)
         if isinstance(pair, (str, bytes)) or not isinstance(pair, Sequence) or len(pair) != 2:
             raise CounterweightError(f"takes (lateral, vertical) pairs in metres, got {pair!r}",
-                                     "shaft_offsets")
+                                     "shaft_offsets_m")
         values = []
         for value in pair:
             if isinstance(value, bool) or not isinstance(value, numbers.Real):
-                raise CounterweightError(f"takes lengths in metres, got {value!r}", "shaft_offsets")
+                raise CounterweightError(f"takes lengths in metres, got {value!r}", "shaft_offsets_m")
             try:
                 check_finite_range(float(value), "length", smallest=False)
             except UnitError as exc:
                 raise CounterweightError(f"has an offset that is invalid: {exc}",
-                                         "shaft_offsets") from None
+                                         "shaft_offsets_m") from None
             values.append(float(value) + 0.0)   # not -0
         checked[ratio] = tuple(values)
     return checked
@@ -293,7 +293,7 @@ def counterweights(engine,
                    shaft_orders: "Sequence[int]" = (), antivibrateur_radius_m: float | None = None,
                    test_masses: bool = False, samples: int = DEFAULT_SAMPLES,
                    max_order: int = DEFAULT_MAX_ORDER,
-                   shaft_offsets: "tuple[float, float] | Mapping | None" = None) -> Balance:
+                   shaft_offsets_m: "tuple[float, float] | Mapping | None" = None) -> Balance:
     """Counterweights (and optionally antivibrateur, shafts, test masses) for ``engine``.
 
     Parameters
@@ -322,7 +322,7 @@ def counterweights(engine,
         also give the balancing-machine mass for each crank pin (not for a rotary)
     samples, max_order : int
         as for :func:`~balance_cli.analyse`
-    shaft_offsets : (lateral, vertical) or mapping, optional
+    shaft_offsets_m : (lateral, vertical) or mapping, optional
         where the shafts' axes sit, m from the crank axis (vertical along the engine's
         vertical, lateral 90° on from it with rotation): one pair for every shaft, or a mapping
         from speed ratio (+k, −k) to a pair, the key None for every shaft not named; default
@@ -360,12 +360,12 @@ def counterweights(engine,
                                  "forces and moments are in balance compare)", "engine")
     max_order = shaking.max_order
     check_options(radius_m, balance_factor, shaft_orders, antivibrateur_radius_m, max_order,
-                  shaft_offsets)
+                  shaft_offsets_m)
     planes = _checked_planes(engine, planes)
     radius = engine.crank_radius_m if radius_m is None else float(radius_m)
     balance_factor = None if balance_factor is None else float(balance_factor) + 0.0  # not -0
     orders = _checked_orders(shaft_orders, max_order)
-    offsets = _checked_offsets(shaft_offsets, orders)
+    offsets = _checked_offsets(shaft_offsets_m, orders)
     if antivibrateur_radius_m is not None and (engine.is_rotary or len(engine.throws) != 1):
         raise CounterweightError(
             "needs a single-throw engine with a turning crank: the rotor turns on the crank pin "
@@ -434,7 +434,7 @@ def _analysed(value):
 
 
 def check_options(radius_m=None, balance_factor=None, shaft_orders=(),
-                  antivibrateur_radius_m=None, max_order=DEFAULT_MAX_ORDER, shaft_offsets=None):
+                  antivibrateur_radius_m=None, max_order=DEFAULT_MAX_ORDER, shaft_offsets_m=None):
     """Raise CounterweightError for options that no engine could use (the ones that depend on
     the engine are checked by :func:`counterweights`); a front end calls it before analysing."""
     if radius_m is not None:
@@ -447,7 +447,7 @@ def check_options(radius_m=None, balance_factor=None, shaft_orders=(),
                 or not low <= balance_factor <= high:
             raise CounterweightError(f"must be a fraction of the reciprocating masses from "
                                      f"{low:g} to {high:g}, got {balance_factor!r}", "balance_factor")
-    _checked_offsets(shaft_offsets, _checked_orders(shaft_orders, max_order))
+    _checked_offsets(shaft_offsets_m, _checked_orders(shaft_orders, max_order))
     if antivibrateur_radius_m is not None and max_order < 2:
         raise CounterweightError("needs max_order of at least 2: the rotor cancels the second "
                                  "order", "antivibrateur_radius_m")

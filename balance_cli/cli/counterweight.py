@@ -87,7 +87,7 @@ def counterweight(paths, planes, radius, balance_factor, shafts, shaft_offsets, 
     radius_m = length_option(radius, "--radius")
     rotor = length_option(antivibrateur_radius, "--antivibrateur-radius") if antivibrateur else None
     offsets = shaft_offsets_option(shaft_offsets)
-    flags = {"shaft_offsets": "--shaft-offset"}
+    flags = {"shaft_offsets_m": "--shaft-offset"}
     with reported(flags=flags):
         check_options(radius_m, balance_factor, orders, rotor, max_order, offsets)
     engines = load_all(files, speed)

@@ -9,6 +9,7 @@ import math
 import click
 import numpy as np
 
+from ..analysis.balancing import Plane
 from ..analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES
 from ..errors import BalanceError
 from ..units import UNIT_SYSTEMS, parse_quantity, unit_system
@@ -79,7 +80,7 @@ def planes(text):
             planes.append(int(token))
             continue
         try:
-            planes.append(parse_quantity(token, "length"))
+            planes.append(Plane(parse_quantity(token, "length")))
         except BalanceError as exc:
             if str(exc).startswith("cannot read"):
                 raise click.ClickException(
