@@ -31,7 +31,7 @@ from .analysis.firing import Firing
 from .analysis.guideforce import GuideForces
 from .analysis.marine import PowerRelatedUnbalance, power_related_unbalance
 from .analysis.pins import PinForce
-from .analysis.pressure import PressureCurve, read_cycle_csv, read_pressure_csv
+from .analysis.pressure import CycleCurve, PressureCurve, read_cycle_csv, read_pressure_csv
 from .analysis.results import Comparison, EngineResult, analyse, compare
 from .analysis.series import ReducedMass, Series
 from .analysis.shaking import OrderComponents, Shaking
@@ -80,7 +80,7 @@ __all__ = [
     "torque", "TorqueResult", "TorqueSet", "Series", "ReducedMass", "PinForce",
     "CrankshaftTorque", "GuideForces", "cylinder_torques", "CylinderTorque", "CylinderTorques",
     "steadiness", "flywheel_for", "Steadiness", "read_pressure_csv", "read_cycle_csv",
-    "PressureCurve",
+    "PressureCurve", "CycleCurve",
     # studies, search, torsion, pictures (loaded on first use)
     "regression", "Regression", "Moved", *_LAZY,
     # errors and warnings

@@ -302,7 +302,7 @@ def test_the_good_values_the_cases_replace_work(world):
     assert e.replace(vertical_rad=np.float64(0.5)).vertical_axis_rad == 0.5
     assert r.main_order("moment") is None and r.main_order("force")["order"] == 2
     assert balance.counterweights(e, shaft_orders=[2], shaft_offsets_m=(0.1, 0.0)).balancer_shafts
-    pru, _ = balance.power_related_unbalance(r, power_w=np.float64(5e4))
+    pru = balance.power_related_unbalance(r, power_w=np.float64(5e4))
     assert pru.power.watts == 5e4
     table = balance.family(balance.load_data(CONFIGS / "marine-6-2stroke.toml"), "x.toml",
                            [np.int64(6)], pitch_m=np.float64(1.02), workers=1)

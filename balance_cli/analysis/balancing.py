@@ -18,10 +18,15 @@ __all__ = ["Plane", "Counterweight", "Shaft", "ShaftMass", "BalancerShaft", "Rol
 
 @dataclass(frozen=True)
 class Plane:
-    """A correction plane: axial position, m, and the throw it sits on (1-based) if any."""
+    """A correction plane: axial position, m, and the number of the throw it sits on, if any
+    (``Plane(z_m)`` names an axial position; :func:`~balance_cli.counterweights` puts it on the
+    throw that sits there)."""
 
     z_m: float
     throw: int | None = None
+
+    def to_dict(self) -> dict:
+        return {"z_m": self.z_m, "throw": self.throw}
 
 
 @dataclass(frozen=True)

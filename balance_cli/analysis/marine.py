@@ -111,11 +111,13 @@ def engine_power(engine, power_w=None):
 
 @dataclass(frozen=True)
 class PowerRelatedUnbalance:
-    """The PRU of an analysed engine.
+    """The PRU of an analysed engine, or why it has none.
 
     Attributes
     ----------
-    power : Power
+    power : Power or None
+        None when the engine has no power at the speed analysed (then ``note`` says why, and
+        ``orders`` is empty)
     orders : tuple of dict
         per order k: ``order``, ``vertical_Nm`` and ``horizontal_Nm`` (M_kV, M_kH: the
         amplitudes of the pitching and yawing moments), ``vertical_Nm_per_kW`` and
@@ -125,14 +127,26 @@ class PowerRelatedUnbalance:
         crank's own and the big ends'), as a crank is built: ``balance_factor`` 0 of
         :func:`~balance_cli.counterweights`; None on a rotary, whose crank does not turn
     classes : tuple of (bound, word)
+    note : str or None
+        why there is no PRU (no power), else None
     """
 
-    power: Power
-    orders: tuple
-    first_order_balanced: dict | None
-    classes: tuple
+    power: Power | None
+    orders: tuple = ()
+    first_order_balanced: dict | None = None
+    classes: tuple = DEFAULT_PRU_CLASSES
+    note: str | None = None
+
+    @property
+    def available(self) -> bool:
+        """Whether the engine has a power, and so a PRU."""
+        return self.power is not None
 
     def to_dict(self) -> dict:
+        """``pru`` of ``compare --format json`` (see the README); without a power, only
+        ``note``."""
+        if self.power is None:
+            return {"note": self.note}
         return {"power_kW": self.power.kilowatts, "power_source": self.power.source,
                 "classes": [{"below_Nm_per_kW": None if math.isinf(b) else b, "class": w}
                             for b, w in self.classes],
@@ -151,7 +165,8 @@ def _entry(order, record, kilowatts, classes):
 def power_related_unbalance(result, power_w=None, orders=DEFAULT_PRU_ORDERS,
                             classes=DEFAULT_PRU_CLASSES):
     """The :class:`PowerRelatedUnbalance` of an analysed engine
-    (:class:`~balance_cli.EngineResult`), or (None, why not) when it has no power.
+    (:class:`~balance_cli.EngineResult`); without a power, one that says why
+    (``available`` False, ``note``).
 
     Parameters
     ----------
@@ -169,7 +184,7 @@ def power_related_unbalance(result, power_w=None, orders=DEFAULT_PRU_ORDERS,
         _check_class_table(classes)
     power, why = engine_power(result.engine, power_w)
     if power is None:
-        return None, why
+        return PowerRelatedUnbalance(None, classes=classes, note=why)
     if isinstance(orders, (str, bytes)) or not all(
             isinstance(k, int) and not isinstance(k, bool) and 1 <= k <= result.max_order
             for k in orders) or not orders:
@@ -182,4 +197,4 @@ def power_related_unbalance(result, power_w=None, orders=DEFAULT_PRU_ORDERS,
     if not result.engine.is_rotary and not result.engine.has_several_crankshafts:
         built = counterweights(result, balance_factor=0.0)
         balanced = _entry(1, built.residual.records(result.engine)[0], power.kilowatts, classes)
-    return PowerRelatedUnbalance(power, entries, balanced, classes), None
+    return PowerRelatedUnbalance(power, entries, balanced, classes)

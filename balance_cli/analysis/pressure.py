@@ -27,7 +27,8 @@ from ..errors import AnalysisError, ConfigError, UnitError
 from ..kinematics.state import FINE_SAMPLES
 from ..units import DIMENSIONS, check_finite_range, parse_quantity
 
-__all__ = ["PressureCurve", "read_pressure_csv", "read_cycle_csv", "cycle_pressure", "CYCLE_GRID_DEG"]
+__all__ = ["PressureCurve", "CycleCurve", "read_pressure_csv", "read_cycle_csv", "cycle_pressure",
+           "CYCLE_GRID_DEG"]
 
 #: resolution of the parametric cycle's integration, points per crank degree (the kinematics'
 #: fine grid): interpolated onto the analysis grid, its cylinders agree to about 1e-6 of the
@@ -60,6 +61,11 @@ class PressureCurve:
     cycle_deg: float
     source: str = ""
 
+    def to_dict(self) -> dict:
+        return {"source": self.source, "cycle_deg": self.cycle_deg,
+                "angles_deg": [float(x) for x in self.angles_deg],
+                "pressures_Pa": [float(x) for x in self.pressures_pa]}
+
     def at(self, angles_deg):
         """Pressure at crank angles from the firing TDC (any, wrapped into the cycle), Pa;
         linear between the given points, periodic."""
@@ -67,6 +73,37 @@ class PressureCurve:
         x = np.concatenate([self.angles_deg, [self.angles_deg[0] + period]])
         y = np.concatenate([self.pressures_pa, [self.pressures_pa[0]]])
         return np.interp((np.asarray(angles_deg) - x[0]) % period + x[0], x, y)
+
+
+@dataclass(frozen=True)
+class CycleCurve:
+    """A quantity over one working cycle as a CSV file gives it.
+
+    Attributes
+    ----------
+    angles_deg : ndarray
+        crank angles, increasing, within one cycle
+    values : ndarray
+        the quantity at those angles, SI (Pa for a pressure, N·m for a torque)
+    cycle_deg : float
+        360 or 720
+    quantity : str
+        "pressure" or "torque"
+    source : str
+        the file
+    """
+
+    angles_deg: np.ndarray
+    values: np.ndarray
+    cycle_deg: float
+    quantity: str
+    source: str = ""
+
+    def to_dict(self) -> dict:
+        unit = "Pa" if self.quantity == "pressure" else "Nm"
+        return {"quantity": self.quantity, "source": self.source, "cycle_deg": self.cycle_deg,
+                "angles_deg": [float(a) for a in self.angles_deg],
+                f"values_{unit}": [float(v) for v in self.values]}
 
 
 def read_pressure_csv(path, cycle_deg=None):
@@ -81,15 +118,15 @@ def read_pressure_csv(path, cycle_deg=None):
     ConfigError
         naming the file, the line and the fix
     """
-    angles, values, cycle = read_cycle_csv(path, "pressure", cycle_deg)
-    return PressureCurve(angles, values, cycle, str(path))
+    curve = read_cycle_csv(path, "pressure", cycle_deg)
+    return PressureCurve(curve.angles_deg, curve.values, curve.cycle_deg, str(path))
 
 
 def read_cycle_csv(path, quantity, cycle_deg=None):
     """Angles (degrees) and values (SI) of a quantity over one cycle from a CSV file with the
     header ``angle_deg,<quantity>_<unit>``. ``quantity`` is "pressure" (absolute, not
     negative) or "torque"; ``cycle_deg`` 360 or 720, or None to take the cycle the angles
-    span (up to 360°, else 720°). Returns (angles, values, cycle_deg).
+    span (up to 360°, else 720°). Returns a :class:`CycleCurve`.
 
     Raises
     ------
@@ -168,7 +205,7 @@ def read_cycle_csv(path, quantity, cycle_deg=None):
     elif span > cycle_deg or cycle_deg - span > 2 * steps.max():
         raise ConfigError(path, f"line {rows[-1][0]}", f"the angles cover {span:g}°, not one "
                                                        f"{cycle_deg:g}° cycle; give one cycle")
-    return angles, np.array(values), float(cycle_deg)
+    return CycleCurve(angles, np.array(values), float(cycle_deg), quantity, str(path))
 
 
 def _column_unit(path, line, header, quantity, example):

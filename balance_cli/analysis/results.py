@@ -154,8 +154,8 @@ class EngineResult:
     def power_related_unbalance(self, power_w: float | None = None, orders=(1, 2),
                                 classes=None):
         """The power related unbalance of this engine (:mod:`balance_cli.analysis.marine`): a
-        :class:`~balance_cli.analysis.marine.PowerRelatedUnbalance`, or (None, why not) without a
-        power."""
+        :class:`~balance_cli.analysis.marine.PowerRelatedUnbalance` (``available`` False, with
+        its ``note``, without a power)."""
         return power_related_unbalance(self, power_w, orders, classes or DEFAULT_PRU_CLASSES)
 
     def to_dict(self, reference: "EngineResult | None" = None, pru_classes=None,
@@ -167,7 +167,7 @@ class EngineResult:
         unbalance's classes (default the project guides') and ``pru_orders`` the orders it
         judges.
         """
-        pru, pru_note = self.power_related_unbalance(orders=pru_orders, classes=pru_classes)
+        pru = self.power_related_unbalance(orders=pru_orders, classes=pru_classes)
         engine = self.engine
         return {
             "name": engine.name,
@@ -191,9 +191,9 @@ class EngineResult:
             "counterweighted_moment_Nm": self.counterweighted_moment_nm,
             "main_force_order": _main_record(self.main_order("force"), "N"),
             "main_moment_order": _main_record(self.main_order("moment"), "Nm"),
-            "power_kW": None if pru is None else pru.power.kilowatts,
-            "pru": None if pru is None else pru.to_dict(),
-            "pru_note": pru_note,
+            "power_kW": pru.power.kilowatts if pru.available else None,
+            "pru": pru.to_dict() if pru.available else None,
+            "pru_note": pru.note,
             "sampling_ok": self.shaking.sampling_ok,
             # the cached records are flat dicts in a dict: a copy two levels deep is a copy
             "orders": [{k: dict(v) if isinstance(v, dict) else v for k, v in record.items()}

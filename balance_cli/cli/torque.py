@@ -106,7 +106,8 @@ def steadiness(torque_file, inertia, speed, load, target, fmt, output):
     inertia_kgm2 = quantity_option(inertia, "--inertia", "moment of inertia")
     speed_rad_s = quantity_option(speed, "--speed", "angular speed")
     with reported(flags={"torque_nm": f"--torque {torque_file}"}):
-        angles, values, cycle = read_cycle_csv(torque_file, "torque")
+        curve = read_cycle_csv(torque_file, "torque")
+        angles, values, cycle = curve.angles_deg, curve.values, curve.cycle_deg
         # an even grid for the integration, the curve linear between the file's points
         grid = np.arange(4096) * cycle / 4096
         torque_nm = np.interp(grid, angles, values, period=cycle)

@@ -52,6 +52,10 @@ class Term:
     def __str__(self) -> str:
         return self.name if self.weight == 1.0 else f"{self.name}:{self.weight:g}"
 
+    def to_dict(self) -> dict:
+        return {"term": self.name, "kind": self.kind, "order": self.order, "part": self.part,
+                "weight": self.weight}
+
 
 def default_objective(max_order: int = DEFAULT_MAX_ORDER) -> tuple[Term, ...]:
     """Every F_k and M_k for k = 1..max_order, weight 1."""

@@ -320,9 +320,9 @@ def _pru(record, part, k):
     that are common to the family, leaving the firing orders and cylinder numbers."""
     def value(config):
         engine = _variant({**record, "config": config})
-        pru, why = power_related_unbalance(_result(engine, record), orders=(k,))
-        if pru is None:
-            raise ValueError(f"{record['id']}: no PRU for {config}: {why}")
+        pru = power_related_unbalance(_result(engine, record), orders=(k,))
+        if not pru.available:
+            raise ValueError(f"{record['id']}: no PRU for {config}: {pru.note}")
         entry = pru.orders[0]
         v, h = entry["vertical_Nm_per_kW"], entry["horizontal_Nm_per_kW"]
         return {"V": v, "H": h, "max": max(v, h)}[part]

@@ -339,9 +339,9 @@ def _measure(result, wanted, param, value, samples, max_order, torque_of, inerti
     record = {}
     for q in wanted:
         if q.kind == "pru":
-            pru, why = result.power_related_unbalance(orders=(q.order,))
-            if pru is None:
-                raise SweepError(f"{q.name} at this point: {why}", "quantities")
+            pru = result.power_related_unbalance(orders=(q.order,))
+            if not pru.available:
+                raise SweepError(f"{q.name} at this point: {pru.note}", "quantities")
             record[q.column] = pru.orders[0][f"{q.part}_Nm_per_kW"]
         elif q.order is not None:
             record[q.column] = orders[q.order - 1][q.kind][f"{q.part}_{q.unit}"]
