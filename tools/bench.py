@@ -22,11 +22,17 @@ ratio of the medians is what counts, so the machine's speed cancels out.
 - ``balance.torsion`` of a six-throw model (tests/reference/opentorsion_ice/mendes2008.toml
   with a [gas] cycle): modes and the forced response at 100 speeds, orders ½ to 12, in one
   process (target: well under a second; at most 0.5 s)
+- how often ``torque`` and ``torsional_vibration`` close the linkage (tools/closures.py)
+
+``make bench BASE=/path/to/another/checkout`` (one with its own ``.venv``, as ``make setup``
+builds it) also times that checkout's compare and torque of this library beside this one's,
+alternately, and prints the ratio this/that: a change's effect measured in one run.
 """
 
 import compileall
 import itertools
 import json
+import os
 import statistics
 import subprocess
 import sys
@@ -56,6 +62,25 @@ def timed(command):
     start = time.perf_counter()
     subprocess.run(command, cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
     return time.perf_counter() - start
+
+
+def against(base, runs=15):
+    """This checkout's compare and torque of the library beside another checkout's (``base``,
+    with its own .venv), alternately: the ratio of the medians, this/that."""
+    other = str(Path(base).resolve() / ".venv" / "bin" / "balance")
+    for verb in ("compare", "torque"):
+        ours_cmd = [BALANCE, verb, "configs", "--format", "json"]
+        theirs_cmd = [other, verb, "configs", "--format", "json"]
+        timed(ours_cmd)
+        timed(theirs_cmd)
+        ours, theirs = [], []
+        for _ in range(runs):
+            ours.append(timed(ours_cmd))
+            theirs.append(timed(theirs_cmd))
+        a, b = statistics.median(ours), statistics.median(theirs)
+        print(f"{a * 1000:8.1f} ms  median of {runs}  balance {verb} configs (this checkout)")
+        print(f"{b * 1000:8.1f} ms  median of {runs}  balance {verb} configs ({base})")
+        print(f"ratio this/that {a / b:.3f}\n")
 
 
 def naive_rate(n=10, objective_orders=(1, 2, 3, 4)):
@@ -178,9 +203,12 @@ def main():
             print(f"ratio {ratio:.2f} for {engines} engines: {each:.3f} of the baseline an engine "
                   f"({(a - b) / engines * 1000:.1f} ms; target at most {target:.3f}): {verdict}\n")
             failed |= each > target
+    if os.environ.get("BASE"):
+        against(os.environ["BASE"])
     failed |= search_bench()
     failed |= family_bench()
     failed |= torsion_bench()
+    subprocess.run([sys.executable, str(ROOT / "tools" / "closures.py")], cwd=ROOT, check=True)
     return 1 if failed else 0
 
 
