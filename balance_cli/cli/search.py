@@ -10,6 +10,7 @@ from pathlib import Path
 
 import click
 
+from ..about import install_hint
 from ..analysis.results import compare as comparison_of
 from ..errors import BalanceError, OutputError
 from ..output import check_folder, refuse_inputs, write_folder, write_text
@@ -85,7 +86,7 @@ def _search_progress():
               help="Processes to use [default: every core].")
 @click.option("--scheduler", default=None, metavar="ADDRESS",
               help="Run on a Dask distributed cluster (tcp://host:8786) instead; needs "
-                   "pip install 'balance[cluster]'.")
+                   f"{install_hint('cluster')}.")
 @click.option("--heuristic", is_flag=True,
               help="A local search from random cranks for templates too large to enumerate: "
                    "the best found, NOT proved optimal.")
