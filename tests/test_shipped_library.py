@@ -9,6 +9,7 @@ import json
 import re
 import subprocess
 import sys
+import tomllib
 from pathlib import Path
 
 import pytest
@@ -93,6 +94,18 @@ def test_a_bad_name_is_one_line_naming_it_and_what_exists(name, where, held):
 def test_a_name_cannot_leave_the_library():
     with pytest.raises(balance.ConfigError, match=r"'\.\.' leads out of the shipped engine library"):
         find_configs(["library:../templates"])
+
+
+def test_every_file_of_the_library_and_templates_is_package_data():
+    """pyproject.toml's package-data globs take every file of configs/ and templates/: a new
+    kind of file the configurations need (a CSV, say) must be added to them."""
+    setuptools = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"]["setuptools"]
+    for package, folder in (("balance_cli.library", CONFIGS), ("balance_cli.templates", TEMPLATES)):
+        assert setuptools["package-dir"][package] == folder.name
+        taken = {p for pattern in setuptools["package-data"][package] for p in folder.glob(pattern)}
+        files = {p for p in folder.rglob("*") if p.is_file() and "__pycache__" not in p.parts}
+        assert files - taken == set()
+    assert (CONFIGS / "README.md") in {p for p in CONFIGS.glob("**/*.md")}
 
 
 # --- the command line -------------------------------------------------------------------
