@@ -55,13 +55,15 @@ regress-update: $(STAMP)
 # A regular install (not editable) of this checkout into a fresh environment in a temporary
 # folder, used from another one: the command, the engine library and the templates installed
 # as package data, the distribution's metadata. Prints each command's first lines; fails on
-# any error. pip builds in the checkout's build/ (setuptools' scratch, as make clean knows):
-# emptied first so that nothing left there from an older tree is installed.
+# any error (a command's, or output without what it must show). pip builds in the checkout's
+# build/ (setuptools' scratch, which make clean removes): emptied first, so that nothing left
+# there from an older tree is installed.
 install-check:
-	@set -e; tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; \
+	@set -e; tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; passed=0; \
 	  run() { expected=$$1; shift; echo "\$$ $$*"; "$$tmp/venv/bin/$$@" > "$$tmp/out.txt"; \
 	          head -n 3 "$$tmp/out.txt" | cut -c 1-100; grep -q -e "$$expected" "$$tmp/out.txt" \
-	          || { echo "install-check: $$1 printed no $$expected"; exit 1; }; }; \
+	          || { echo "install-check: $$1 printed no $$expected"; exit 1; }; \
+	          passed=$$((passed + 1)); }; \
 	  $(PYTHON) -m venv "$$tmp/venv"; rm -rf build; \
 	  echo "pip install $(CURDIR) into $$tmp/venv"; \
 	  "$$tmp/venv/bin/python" -m pip install --quiet --disable-pip-version-check "$(CURDIR)"; \
@@ -73,7 +75,7 @@ install-check:
 	  run '^Name: engine-balance$$' pip show engine-balance; \
 	  run '/site-packages/balance_cli/library$$' \
 	    python -c 'import balance_cli.config.library as l; print(l.library_folder())'; \
-	  echo "install-check: ok"
+	  echo "install-check: $$passed passed, 0 failed"
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache

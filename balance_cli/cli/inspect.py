@@ -62,7 +62,7 @@ def list_(folder):
         raise click.ClickException(f"{folder}: no such folder; give a folder of .toml files")
     # in the shipped library, folders and files by their names: what the other commands take
     named = folder.startswith((LIBRARY, TEMPLATE))
-    inside = folder if folder.endswith((":", "/")) else folder + "/"
+    inside = (folder if folder.endswith((":", "/")) else folder + "/") if named else ""
     groups, errors = {}, []
     for path in inputs([root]):
         try:
@@ -76,8 +76,8 @@ def list_(folder):
         groups.setdefault(where.parent.parts, []).append(engine)
     # folders sorted by their path parts: DIR's own files first, a folder before its subfolders
     if groups:
-        click.echo(list_tables((folder if not parts else inside * named + "/".join(parts),
-                                groups[parts]) for parts in sorted(groups)))
+        click.echo(list_tables((inside + "/".join(parts) if parts else folder, groups[parts])
+                               for parts in sorted(groups)))
     for error in errors:
         click.echo(f"invalid: {error}", err=True)
     if errors:
