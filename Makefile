@@ -7,18 +7,25 @@ BIN    := $(VENV)/bin
 RUN    := $(VENV)/.installed-run
 STAMP  := $(VENV)/.installed-test
 
-.PHONY: setup demo test bench validate regress-update clean
+.PHONY: setup demo test bench validate regress-update install-check clean
 
 $(VENV)/bin/python:
 	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 11))' || \
 	  { echo "balance needs Python 3.11 or newer (PYTHON=$(PYTHON))"; exit 1; }
 	$(PYTHON) -m venv $(VENV)
 
-$(RUN): pyproject.toml | $(VENV)/bin/python
+# the distribution was called balance before 0.2.0 (now engine-balance): an environment built
+# then still holds it
+OLD_NAME := if $(BIN)/python -m pip show --quiet balance >/dev/null 2>&1; then \
+	      $(BIN)/python -m pip uninstall --quiet --yes balance; fi
+
+$(RUN): pyproject.toml setup.py | $(VENV)/bin/python
+	@$(OLD_NAME)
 	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e .
 	@touch $(RUN)
 
-$(STAMP): pyproject.toml | $(VENV)/bin/python
+$(STAMP): pyproject.toml setup.py | $(VENV)/bin/python
+	@$(OLD_NAME)
 	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[test]'
 	@touch $(RUN) $(STAMP)
 
@@ -44,6 +51,31 @@ validate: $(STAMP)
 regress-update: $(STAMP)
 	$(BIN)/balance regress tests/golden/compare.json configs --update
 	@git diff --stat -- tests/golden || true
+
+# A regular install (not editable) of this checkout into a fresh environment in a temporary
+# folder, used from another one: the command, the engine library and the templates installed
+# as package data, the distribution's metadata. Prints each command's first lines; fails on
+# any error (a command's, or output without what it must show). pip builds in the checkout's
+# build/ (setuptools' scratch, which make clean removes): emptied first, so that nothing left
+# there from an older tree is installed.
+install-check:
+	@set -e; tmp=$$(mktemp -d); trap 'rm -rf "$$tmp"' EXIT; passed=0; \
+	  run() { expected=$$1; shift; echo "\$$ $$*"; "$$tmp/venv/bin/$$@" > "$$tmp/out.txt"; \
+	          head -n 3 "$$tmp/out.txt" | cut -c 1-100; grep -q -e "$$expected" "$$tmp/out.txt" \
+	          || { echo "install-check: $$1 printed no $$expected"; exit 1; }; \
+	          passed=$$((passed + 1)); }; \
+	  $(PYTHON) -m venv "$$tmp/venv"; rm -rf build; \
+	  echo "pip install $(CURDIR) into $$tmp/venv"; \
+	  "$$tmp/venv/bin/python" -m pip install --quiet --disable-pip-version-check "$(CURDIR)"; \
+	  rm -rf build; mkdir "$$tmp/elsewhere"; cd "$$tmp/elsewhere"; \
+	  run '^library:today/v (11 engines)' balance list; \
+	  run '^9-cylinder rotary ' balance compare library:tanaka-part3; \
+	  run '"results"' balance search template:inline-3-2stroke.toml --top 1 --format json; \
+	  run 'GM LS3' balance show library:today/v/v8-90-cross-plane; \
+	  run '^Name: engine-balance$$' pip show engine-balance; \
+	  run '/site-packages/balance_cli/library$$' \
+	    python -c 'import balance_cli.config.library as l; print(l.library_folder())'; \
+	  echo "install-check: $$passed passed, 0 failed"
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache

@@ -221,6 +221,13 @@ def test_processes_and_a_dask_cluster_find_what_one_process_finds():
         assert other.arrangements_distinct == one.arrangements_distinct == math.factorial(7) // 2
 
 
+def test_without_dask_a_scheduler_names_the_extra_to_install(monkeypatch):
+    monkeypatch.setitem(sys.modules, "distributed", None)   # import distributed fails
+    with pytest.raises(AnalysisError, match=r"pip install 'engine-balance\[cluster\]'") as caught:
+        search(inline_template(4, 2), "M1", scheduler="tcp://127.0.0.1:1")
+    assert caught.value.parameter == "scheduler"
+
+
 def test_heuristic_is_labelled_and_finds_the_best_of_a_small_engine():
     eight = inline_template(8, 2)
     exact = search(eight, "M1,M2", top=1, workers=1)

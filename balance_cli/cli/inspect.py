@@ -6,6 +6,7 @@ import click
 
 from ..analysis.firing import firing_sequence
 from ..config import load
+from ..config.library import LIBRARY, TEMPLATE, resolve
 from ..errors import ConfigError
 from ..report.inspect import list_tables, show_table
 from .batch import inputs
@@ -42,31 +43,40 @@ def validate(paths):
 
 
 @main.command("list")
-@click.argument("folder", required=False, default="configs", metavar="[DIR]")
+@click.argument("folder", required=False, default=LIBRARY, metavar="[DIR]")
 def list_(folder):
-    """List the engines in DIR (default: configs, in the current folder): name, cylinders,
-    cycle, frame, source.
+    """List the engines in DIR (default: the engine library shipped with balance, library:):
+    name, cylinders, cycle, frame, source.
 
     One table per folder, headed by the folder's path relative to DIR (DIR itself for the
     files directly in it): the files of DIR first, then each folder in path order, a folder
-    before its subfolders (configs, tanaka-part3, today/boxer, today/inline, ...).
+    before its subfolders (configs, tanaka-part3, today/boxer, today/inline, ...). In the
+    shipped library (DIR a library: name) the headings and files are given by their library:
+    names, what compare, show and the other commands take (library:tanaka-part3, ...).
 
     Invalid files are reported on standard error (exit status 1) after the listing.
     """
-    root = Path(folder)
+    with reported():
+        root = Path(resolve(folder))
     if not root.is_dir():
         raise click.ClickException(f"{folder}: no such folder; give a folder of .toml files")
+    # in the shipped library, folders and files by their names: what the other commands take
+    named = folder.startswith((LIBRARY, TEMPLATE))
+    inside = (folder if folder.endswith((":", "/")) else folder + "/") if named else ""
     groups, errors = {}, []
-    for path in inputs([folder]):
+    for path in inputs([root]):
         try:
             engine = load(path)
+            where = Path(path).relative_to(root)
+            if named:
+                engine = engine.replace(config_path=inside + where.as_posix())
         except ConfigError as exc:
             errors.append(str(exc))
             continue
-        groups.setdefault(Path(path).parent.relative_to(root).parts, []).append(engine)
+        groups.setdefault(where.parent.parts, []).append(engine)
     # folders sorted by their path parts: DIR's own files first, a folder before its subfolders
     if groups:
-        click.echo(list_tables((folder if not parts else "/".join(parts), groups[parts])
+        click.echo(list_tables((inside + "/".join(parts) if parts else folder, groups[parts])
                                for parts in sorted(groups)))
     for error in errors:
         click.echo(f"invalid: {error}", err=True)

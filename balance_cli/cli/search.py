@@ -10,6 +10,7 @@ from pathlib import Path
 
 import click
 
+from ..about import install_hint
 from ..analysis.results import compare as comparison_of
 from ..errors import BalanceError, OutputError
 from ..output import check_folder, refuse_inputs, write_folder, write_text
@@ -85,7 +86,7 @@ def _search_progress():
               help="Processes to use [default: every core].")
 @click.option("--scheduler", default=None, metavar="ADDRESS",
               help="Run on a Dask distributed cluster (tcp://host:8786) instead; needs "
-                   "pip install 'balance[cluster]'.")
+                   f"{install_hint('cluster')}.")
 @click.option("--heuristic", is_flag=True,
               help="A local search from random cranks for templates too large to enumerate: "
                    "the best found, NOT proved optimal.")
@@ -115,17 +116,18 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
     nothing scores better than what is listed.
     """
     from ..config import arrangement_toml, load_template
+    from ..config.library import resolve
     from ..cranksearch import DEFAULT_LIMIT
     from ..cranksearch import search as search_of
 
     with reported():
-        refuse_inputs([output], [Path(template_path)])
+        refuse_inputs([output], [Path(resolve(template_path))])
         template, data = load_template(template_path)
         if write_dir is not None:
             check_folder(write_dir, "--write")
             # the files --write may write must replace neither the template nor --output
             planned = [Path(write_dir) / f"arrangement-{k:02d}.toml" for k in range(1, max(top, 1) + 1)]
-            refuse_inputs(planned, [Path(template_path)])
+            refuse_inputs(planned, [Path(resolve(template_path))])
             if output not in (None, "-") and any(same_path(output, p) for p in planned):
                 raise OutputError(f"{output!r} is one of the files --write writes; write the "
                                   "table somewhere else")
@@ -210,12 +212,14 @@ def family_(path, counts, objective, firing_orders, pitch, power, workers, sampl
     cylinder's data repeated at the pitch (its throws' phases and firing order are not used).
     """
     from ..config import load_data
+    from ..config.library import resolve
     from ..studies.family import family
     from ..report.family import family_tables
 
     counts = counts_option(counts)
     given = firing_orders_option(firing_orders)
-    guard([output], [Path(path)])
+    with reported():
+        guard([output], [Path(resolve(path))])
     settings(samples, max_order)
     pitch_m = quantity_option(pitch, "--pitch", "length")
     power_w = quantity_option(power, "--power-per-cylinder", "power")

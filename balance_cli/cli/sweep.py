@@ -60,6 +60,7 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
     Each value is set in the file's TOML and the engine rebuilt and checked exactly as a file
     is, so a value that makes no engine is reported with the file, the key and the value.
     """
+    from ..config.library import resolve
     from ..report.sweeps import sweep_csv, sweep_tables
     from ..studies.sweep import span, sweep as sweep_of
 
@@ -76,7 +77,8 @@ def sweep(path, parameter, start, stop, steps, listed, quantities, inertia, load
     if speed is not None and parameter.strip() == "speed":
         raise click.UsageError("--speed fixes the speed that --vary speed varies; give one of them")
     outputs = [output] + ([picture] if picture else [])
-    guard(outputs, [Path(path)])
+    with reported():
+        guard(outputs, [Path(resolve(path))])
     if picture is not None and output not in (None, "-") and same_path(output, picture):
         raise click.ClickException(f"--plot and --output both name {picture!r}; give two files")
     settings(samples, max_order)

@@ -6,6 +6,7 @@ from pathlib import Path
 
 import click
 
+from ..about import install_hint
 from ..output import DOCUMENT_VERSION
 from ..output import write_folder
 from ..units import Scale
@@ -18,7 +19,15 @@ from .options import INPUTS, OUTPUT, SAMPLES, UNITS, speeds_option
 __all__ = ["torsion"]
 
 
-@main.command()
+@main.command(help=f"""Torsional vibration of the crankshaft (needs openTorsion:
+    {install_hint('torsion')}): natural frequencies and mode shapes of the [torsion] model, the
+    phase-vector sums of the firing order, the criticals within --speeds, and the vibratory
+    torque (and shear stress, with a shaft diameter) in every section against speed.
+
+    The excitation is each cylinder's exact gas ([gas] table) and inertia torque, order by
+    order, at its throw: the gas torque the same at every speed, the inertia torque growing
+    as the speed squared.
+    """)
 @INPUTS
 @click.option("--speeds", default=None, metavar="FROM:TO:STEP",
               help="Engine speeds of the forced response, rpm: a range with its step (both ends "
@@ -36,15 +45,6 @@ __all__ = ["torsion"]
                    "torque against speed per section) into DIR; NAME is the file's stem.")
 @UNITS
 def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
-    """Torsional vibration of the crankshaft (needs openTorsion: pip install
-    'balance[torsion]'): natural frequencies and mode shapes of the [torsion] model, the
-    phase-vector sums of the firing order, the criticals within --speeds, and the vibratory
-    torque (and shear stress, with a shaft diameter) in every section against speed.
-
-    The excitation is each cylinder's exact gas ([gas] table) and inertia torque, order by
-    order, at its throw: the gas torque the same at every speed, the inertia torque growing
-    as the speed squared.
-    """
     from ..torsion import require_opentorsion
     from ..torsion import torsional_vibration as torsion_of
 

@@ -1,5 +1,6 @@
 """Configuration files and text to engines: one file, a text, a search template, the parsed data
-of a file, and every configuration under a list of files and folders."""
+of a file, and every configuration under a list of files and folders. Wherever a path is taken,
+``library:NAME`` and ``template:NAME`` name a shipped one (:mod:`.library`)."""
 
 import os
 from collections.abc import Iterable
@@ -9,6 +10,7 @@ from .. import checks
 from ..errors import ConfigError
 from ..model import Engine
 from .builder import build
+from .library import resolve
 from .reader import parse_text, read_text
 
 __all__ = ["load", "loads", "load_data", "as_template", "load_template", "find_configs",
@@ -23,6 +25,7 @@ def load(path: "str | os.PathLike[str]") -> Engine:
     ConfigError
         naming the file, the key and the fix
     """
+    path = resolve(path)
     return loads(read_text(Path(checks.path(path))), name=str(path))
 
 
@@ -35,6 +38,7 @@ def load_data(path: "str | os.PathLike[str]") -> dict:
     ConfigError
         naming the file, the key and the fix
     """
+    path = resolve(path)
     data = _read_data(path)
     build(as_template(data), str(path), template=True)
     return data
@@ -60,6 +64,7 @@ def load_template(path: "str | os.PathLike[str]") -> tuple[Engine, dict]:
     ConfigError
         naming the file, the key and the fix
     """
+    path = resolve(path)
     data = _read_data(path)
     return build(data, str(path), template=True), data
 
@@ -87,7 +92,7 @@ def find_configs(paths: "Iterable[str | os.PathLike[str]]") -> list[Path]:
     if isinstance(paths, (str, os.PathLike)):
         paths = [paths]   # one path, not the characters of one
     try:
-        paths = [checks.path(p, "paths") for p in paths]
+        paths = [resolve(checks.path(p, "paths")) for p in paths]
     except TypeError:
         error = ConfigError("<paths>", "", f"paths must be a list of file or folder paths, got "
                                            f"{type(paths).__name__}")

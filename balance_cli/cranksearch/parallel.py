@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 import os
 
+from ..about import install_hint
 from ..errors import AnalysisError
 from .kernel import evaluate
 
@@ -92,7 +93,7 @@ def run_cluster(problem, units, top, threshold, scheduler, progress):
     try:
         from distributed import Client, as_completed
     except ImportError:
-        raise AnalysisError("needs the optional cluster support: pip install 'balance[cluster]' "
+        raise AnalysisError(f"needs the optional cluster support: {install_hint('cluster')} "
                             "(dask distributed)", "scheduler") from None
     given = not isinstance(scheduler, str)  # a caller's Client: theirs to close
     client = scheduler if given else None

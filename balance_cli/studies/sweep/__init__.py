@@ -29,6 +29,7 @@ import numpy as np
 from ...analysis.results import analyse
 from ...output import DOCUMENT_VERSION
 from ...config import build, parse_text, read_text
+from ...config.library import resolve
 from ...analysis.counterweight import check_options, counterweights
 from ...errors import BalanceError, ConfigError, FiringError, SweepError
 from ...analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings
@@ -172,7 +173,7 @@ def _load(config, name):
     if isinstance(config, dict):
         return copy.deepcopy(config), name or "<config>"
     if isinstance(config, (str, os.PathLike)):
-        path = os.fspath(config)
+        path = os.fspath(resolve(config))
         return parse_text(read_text(Path(path)), path), name or path
     raise SweepError(f"must be a configuration file's path or its parsed TOML (a dict), got "
                      f"{type(config).__name__}", "config")
