@@ -37,7 +37,8 @@ from .analysis.series import ReducedMass, Series
 from .analysis.shaking import OrderComponents, Shaking
 from .analysis.steadiness import Steadiness, flywheel_for, steadiness
 from .analysis.torque import CrankshaftTorque, TorqueResult, TorqueSet, torque
-from .config import find_configs, load, load_data, load_many, load_template, loads
+from .config import (Configuration, find_configs, load, load_many, load_template, loads,
+                     read_configuration)
 from .errors import (AnalysisError, BalanceError, ConfigError, CounterweightError, FiringError,
                      ModelError, OrderError, OutputError, PlotError, RegressError,
                      SamplingWarning, SweepError, TorsionUnavailable, UnitError)
@@ -67,7 +68,8 @@ _PACKAGES = ("about", "analysis", "checks", "cli", "config", "cranksearch", "err
 
 __all__ = [
     # the engine and where it comes from
-    "load", "loads", "load_many", "load_data", "load_template", "find_configs",
+    "load", "loads", "load_many", "load_template", "find_configs", "Configuration",
+    "read_configuration",
     "Engine", "Cylinder", "Throw", "Crankshaft", "Parts", "GasCycle", "CounterweightMass",
     "BalancerMass", "BalancerShaftSpec", "TorsionModel", "ShaftDisk",
     # shaking forces and moments, firing, comparison

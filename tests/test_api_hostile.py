@@ -39,7 +39,7 @@ def world(tmp_path_factory):
         f"{float(a)!r},{float(p)!r}\n" for a, p in zip(angles, bars)), encoding="utf-8")
     engine = balance.load(CONFIGS / "inline-4-car.toml")
     radial = balance.load(CONFIGS / "abc-dragonfly.toml")
-    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    template = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
     result = balance.analyse(engine)
     torques = balance.torque(radial)
     return dict(engine=engine, radial=radial, template=template, result=result,
@@ -194,8 +194,8 @@ def cases(w):
          lambda v: balance.counterweights(e, shaft_orders=[2], shaft_offsets_m=v), "shaft_offsets_m",
          ["x", NAN, 3, [], (NAN, 0.0), (INF, 0.0), (0.1,), (0.1, 0.2, 0.3), ("x", 0.0),
           {7: (0.1, 0.0)}]),
-        ("sweep.config", lambda v: balance.sweep(v, "speed", ["1000 rpm"]), "config",
-         [None, 3, NAN, [], True]),
+        ("sweep.configuration", lambda v: balance.sweep(v, "speed", ["1000 rpm"]),
+         "configuration", [None, 3, NAN, [], True, {"name": "a parsed file, not wrapped"}]),
         ("sweep.parameter", lambda v: balance.sweep(CONFIGS / "inline-4-car.toml", v,
                                                     ["1000 rpm"]), "parameter",
          [None, 3, NAN, [], "", "no_such_key", "masses", "throws[99].phase"]),
@@ -215,14 +215,18 @@ def cases(w):
         ("power_related_unbalance.classes",
          lambda v: balance.power_related_unbalance(r, classes=v), "classes",
          ["x", 3, NAN, [], ((1, "a"),), ((60, 1), (120, 2), (220, 3), (INF, 4))]),
-        ("family.data", lambda v: balance.family(v, "x.toml", [6]), "data", COLLECTIONS),
+        # a str is a file's path: read_configuration's messages name the file
+        ("family.configuration", lambda v: balance.family(v, [6]), "configuration",
+         [c for c in COLLECTIONS if not isinstance(c, str)] + [{"name": "a parsed file"}]),
         ("family.cylinders",
-         lambda v: balance.family(balance.load_data(CONFIGS / "marine-6-2stroke.toml"),
-                                  "x.toml", v, workers=1), "cylinders",
+         lambda v: balance.family(balance.read_configuration(CONFIGS / "marine-6-2stroke.toml"),
+                                  v, workers=1), "cylinders",
          COLLECTIONS + ["5-12", [1], [25], [6.0]]),
         ("family.pitch_m",
-         lambda v: balance.family(balance.load_data(CONFIGS / "marine-6-2stroke.toml"),
-                                  "x.toml", [6], pitch_m=v, workers=1), "pitch_m", NUMBERS),
+         lambda v: balance.family(balance.read_configuration(CONFIGS / "marine-6-2stroke.toml"),
+                                  [6], pitch_m=v, workers=1), "pitch_m", NUMBERS),
+        ("Configuration", lambda v: balance.Configuration(v, "x.toml"), "must be the parsed TOML",
+         [None, 3, [], "name = 'x'"]),
         ("sweep.quantities.steadiness",
          lambda v: balance.sweep(CONFIGS / "inline-4-car.toml", "speed", ["1000 rpm"],
                                  quantities=v), "inertia_kgm2", [["steadiness"]]),
@@ -304,7 +308,7 @@ def test_the_good_values_the_cases_replace_work(world):
     assert balance.counterweights(e, shaft_orders=[2], shaft_offsets_m=(0.1, 0.0)).balancer_shafts
     pru = balance.power_related_unbalance(r, power_w=np.float64(5e4))
     assert pru.power.watts == 5e4
-    table = balance.family(balance.load_data(CONFIGS / "marine-6-2stroke.toml"), "x.toml",
+    table = balance.family(balance.read_configuration(CONFIGS / "marine-6-2stroke.toml"),
                            [np.int64(6)], pitch_m=np.float64(1.02), workers=1)
     assert table.rows[0].cylinders == 6
     swept = balance.sweep(str(CONFIGS / "inline-4-car.toml"), "speed", ("1000 rpm", "2000 rpm"),

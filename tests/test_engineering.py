@@ -304,7 +304,7 @@ def test_search_takes_units_and_speed(tmp_path):
     slow = json.loads(run("search", template, "--top", "1", "--format", "json").output)
     fast = run("search", template, "--top", "1", "--format", "json", "--speed", "2x")
     assert fast.exit_code == 1 and "--speed" in fast.output
-    base = balance.load_template(template)[0].speed_rad_s * 30 / math.pi
+    base = balance.load_template(template).speed_rad_s * 30 / math.pi
     fast = json.loads(run("search", template, "--top", "1", "--format", "json",
                           "--speed", f"{2 * base} rpm", "--write", tmp_path).output)
     a, b = slow["results"][0], fast["results"][0]

@@ -19,7 +19,7 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.cli import main
-from balance_cli.config import load_data
+from balance_cli.config import read_configuration
 from balance_cli.studies.family import family
 
 from conftest import CONFIGS, exact_b
@@ -53,7 +53,7 @@ def brute_force(n):
 
 @pytest.fixture(scope="module")
 def table():
-    return family(load_data(MARINE), str(MARINE), range(5, 8), workers=1)
+    return family(read_configuration(MARINE), range(5, 8), workers=1)
 
 
 def test_each_row_is_the_least_couple_a_crank_can_have(table):
@@ -94,7 +94,7 @@ def test_a_given_firing_order_is_taken(tmp_path):
 
 
 def test_too_many_to_enumerate_is_searched_by_the_labelled_heuristic():
-    rows = family(load_data(MARINE), str(MARINE), [7], workers=1, limit=10).rows
+    rows = family(read_configuration(MARINE), [7], workers=1, limit=10).rows
     assert rows[0].method == "heuristic"
 
 
@@ -120,7 +120,7 @@ def test_table_csv_and_errors(tmp_path):
 def test_the_h_type_moment_of_n_cylinders_is_found_at_order_n():
     """An N-cylinder two-stroke's H-type moment lies at order N (N × one cylinder's), above the
     default eighth order for nine cylinders: the family analyses the torques that far."""
-    (row,) = family(load_data(MARINE), str(MARINE), [9], workers=1).rows
+    (row,) = family(read_configuration(MARINE), [9], workers=1).rows
     record = row.to_dict()
     assert record["h_type"]["order"] == 9 and record["h_type"]["amplitude_Nm"] > 0
 

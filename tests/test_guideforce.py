@@ -194,7 +194,7 @@ def test_the_search_finds_the_least_x_type_moment(tmp_path, n, objective):
     c_k. The search's best score equals the least of these sums, to 1e-9."""
     path = tmp_path / "t.toml"
     path.write_text(template_text(n))
-    template = balance.load_template(path)[0]
+    template = balance.load_template(path)
     terms = [(int(t.split(":")[0][1:]), float(t.split(":")[1]) if ":" in t else 1.0)
              for t in objective.split(",")]
 
@@ -225,7 +225,7 @@ def test_the_search_with_gas_agrees_with_the_arrangements_own_torques(tmp_path):
     are the same samples shifted) agree to 1e-9."""
     path = tmp_path / "t.toml"
     path.write_text(template_text(6, gas=True))
-    result = search(balance.load_template(path)[0], "H6,X2", top=5, workers=1, samples=384)
+    result = search(balance.load_template(path), "H6,X2", top=5, workers=1, samples=384)
     for arrangement in result.arrangements:
         values = arrangement.coefficients
         assert arrangement.score == pytest.approx(values["H6"] + values["X2"], abs=1e-12)
@@ -236,7 +236,7 @@ def test_the_search_with_gas_agrees_with_the_arrangements_own_torques(tmp_path):
     ("H4+", "no forward or backward part"), ("X1.5", "whole orders only"),
     ("H0.5:2", "whole orders only")])
 def test_guide_terms_refused(objective, message):
-    template = balance.load_template(CONFIGS.parent / "templates" / "inline-6-4stroke.toml")[0]
+    template = balance.load_template(CONFIGS.parent / "templates" / "inline-6-4stroke.toml")
     with pytest.raises(AnalysisError, match=message) as caught:
         search(template, objective, workers=1)
     assert caught.value.parameter == "objective"
@@ -257,7 +257,7 @@ def test_a_cancelled_throw_couple_is_no_unit():
     order has no unit (H2 = X2 = 0), and the rounding must not weigh in the score. Once it did
     (a unit of 1e-10 N·m), and the listed scores came out of order (3.46 above 3.0)."""
     template = balance.load_template(CONFIGS.parent / "templates" /
-                                     "nakanishi-v12-90-2stroke.toml")[0]
+                                     "nakanishi-v12-90-2stroke.toml")
     result = search(template, "F1,F2,H2,X1,X2", top=6, workers=1)
     scores = [a.score for a in result.arrangements]
     assert scores == sorted(scores)

@@ -614,7 +614,7 @@ def test_search_scores_scale_with_the_weights():
     weights); the scores are the same multiples."""
     import balance_cli as balance
 
-    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    template = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
     plain = search_api(template, "M1,M2", top=6)
     for scale in (1e100, 1e-10):
         scaled = search_api(template, f"M1:{scale:g},M2:{scale:g}", top=6)
@@ -630,7 +630,7 @@ def test_a_tiny_weight_still_ranks_the_smaller_coefficient_first():
     image, Den Hartog's table), so the first two listed have M1 = 0."""
     import balance_cli as balance
 
-    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    template = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
     found = search_api(template, "M1:1e-10", top=4)
     m1 = [a.coefficients["M1"] for a in found.arrangements]
     np.testing.assert_allclose(m1[:2], 0.0, atol=1e-9)
@@ -661,7 +661,7 @@ def test_a_template_too_large_is_refused_at_once_with_its_count(tmp_path, n):
 
     path = tmp_path / f"i{n}.toml"
     path.write_text(inline_template_text(n), encoding="utf-8")
-    template, _ = balance.load_template(path)
+    template = balance.load_template(path)
     started = time.perf_counter()
     with pytest.raises(AnalysisError) as caught:
         search_api(template, "M1")
@@ -723,7 +723,7 @@ def test_search_terms_with_a_weight_that_is_no_bound_are_refused(weight):
     from balance_cli.cranksearch import Term
     from balance_cli.errors import AnalysisError
 
-    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    template = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
     with pytest.raises(AnalysisError) as caught:
         search_api(template, [Term("M", 1), Term("M", 2, weight=weight)])
     assert caught.value.parameter == "objective"
@@ -737,7 +737,7 @@ def test_workers_are_capped_at_what_helps_and_reported_as_run():
     from balance_cli.cranksearch import search
     from balance_cli.cranksearch.parallel import _cores
 
-    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    template = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
     found = search(template, "M1", top=2, workers=1000)
     assert 1 <= found.workers <= _cores()
     assert [a.firing_order for a in found.arrangements] == \
@@ -929,7 +929,7 @@ def test_a_configuration_with_a_byte_order_mark_is_read(tmp_path):
     assert balance.loads("\ufeff" + GOOD).name == "test twin"
     template = tmp_path / "template.toml"
     template.write_bytes(b"\xef\xbb\xbf" + (TEMPLATES / "inline-6-2stroke.toml").read_bytes())
-    assert balance.load_template(template)[0].n_cylinders == 6
+    assert balance.load_template(template).n_cylinders == 6
 
 
 def test_progress_covers_the_listed_arrangements_analyses():
@@ -938,7 +938,7 @@ def test_progress_covers_the_listed_arrangements_analyses():
     total only when the result is ready."""
     import balance_cli as balance
 
-    template, _ = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
+    template = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
     calls = []
     found = search_api(template, "M1", top=5, progress=lambda done, total: calls.append((done, total)))
     totals = {total for _, total in calls}

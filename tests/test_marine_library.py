@@ -119,7 +119,7 @@ def test_six_cylinders_second_order_by_hand_and_the_mass_estimate():
 def test_the_family_template_finds_the_published_six_cylinder_order():
     """The template's exhaustive search for the least first-order moment lists the two even
     six-cylinder orders free of it (coefficients 0; M2 2√3 and 4√3), 1-5-3-4-2-6 among them."""
-    template, _ = balance.load_template(TEMPLATE)
+    template = balance.load_template(TEMPLATE)
     found = search(template, "M1", top=2, workers=1)
     assert found.exhaustive
     orders = {a.firing_order: a for a in found.arrangements}

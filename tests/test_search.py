@@ -114,7 +114,7 @@ def test_the_best_of_seven_cylinders_equal_the_brute_force(objective):
 # --- what the issue asks to reproduce -------------------------------------------------
 
 def template(name):
-    return balance.load_template(TEMPLATES / name)[0]
+    return balance.load_template(TEMPLATES / name)
 
 
 def orders_of(found):
@@ -412,5 +412,5 @@ def test_a_long_template_name_leaves_room_for_the_rank(tmp_path):
     path.write_text(text)
     run = invoke(path, "--objective", "M1", "--top", "3")
     assert run.exit_code == 0, run.output
-    names = [a.engine.name for a in search(balance.load_template(path)[0], "M1", top=3).arrangements]
+    names = [a.engine.name for a in search(balance.load_template(path), "M1", top=3).arrangements]
     assert len(set(names)) == 3 and all(len(n) <= 120 for n in names)

@@ -17,7 +17,7 @@ from click.testing import CliRunner
 
 import balance_cli as balance
 from balance_cli.cli import main
-from balance_cli.config import find_configs, load_data, load_many, load_template
+from balance_cli.config import find_configs, load_many, load_template, read_configuration
 from balance_cli.config.library import library_folder, resolve, templates_folder
 from conftest import CONFIGS, PART3, ROOT
 
@@ -54,15 +54,17 @@ def test_library_names_resolve_to_the_checkouts_files_and_folders(elsewhere):
     assert [e.name for e in load_many(["library:tanaka-part3"])] == \
         [e.name for e in load_many([PART3])]
     assert balance.load("library:today/v/v8-90-cross-plane").name == balance.load(v8).name
-    assert load_data("library:inline-4-car.toml") == load_data(CONFIGS / "inline-4-car.toml")
+    assert read_configuration("library:inline-4-car.toml").data == \
+        read_configuration(CONFIGS / "inline-4-car.toml").data
 
 
 def test_template_names_resolve_with_or_without_their_toml(elsewhere):
     file = TEMPLATES / "inline-3-2stroke.toml"
     assert resolve("template:inline-3-2stroke.toml") == resolve("template:inline-3-2stroke") \
         == file
-    engine, data = load_template("template:inline-3-2stroke")
-    assert engine.name == load_template(file)[0].name and data == load_template(file)[1]
+    engine = load_template("template:inline-3-2stroke")
+    assert engine.name == load_template(file).name
+    assert read_configuration("template:inline-3-2stroke").data == read_configuration(file).data
     assert sorted(find_configs(["template:"])) == sorted(TEMPLATES.glob("*.toml"))
 
 

@@ -157,7 +157,8 @@ def test_a_missing_key_the_format_allows_is_added(tmp_path):
 def test_a_parsed_dict_is_swept_and_left_unchanged():
     data = config_module.parse_text(TWIN, "twin")
     before = json.dumps(data, sort_keys=True)
-    result = balance.sweep(data, "throws[2].z", ["90 mm", "120 mm"], "M1", name="twin.toml")
+    configuration = balance.Configuration(data, "twin.toml")
+    result = balance.sweep(configuration, "throws[2].z", ["90 mm", "120 mm"], "M1")
     assert json.dumps(data, sort_keys=True) == before
     assert result.config == "twin.toml"
     unit = M_REC * R * rad_s(3000) ** 2

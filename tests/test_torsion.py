@@ -441,7 +441,7 @@ def test_search_v_terms_score_is_the_phase_vector_sum(tmp_path):
             out.append(f'z = "{next(zs)} mm"')
     path = tmp_path / "template.toml"
     path.write_text("\n".join(out) + TORSION6)
-    template, _ = balance.load_template(path)
+    template = balance.load_template(path)
     result = balance.search(template, "V1,V2,V3", top=6, workers=1)
     for a in result.arrangements:
         assert_allclose(a.score, a.coefficients["V1"] + a.coefficients["V2"]
@@ -461,7 +461,7 @@ def test_search_v_term_needs_a_torsion_table(tmp_path):
             out.append(f'z = "{next(zs)} mm"')
     path = tmp_path / "template.toml"
     path.write_text("\n".join(out))
-    template, _ = balance.load_template(path)
+    template = balance.load_template(path)
     with pytest.raises(AnalysisError, match=r"no \[torsion\] table"):
         balance.search(template, "M1,V2")
 
@@ -479,7 +479,7 @@ def test_search_tv1_is_the_largest_minor_order(tmp_path):
             out.append(f'z = "{next(zs)} mm"')
     path = tmp_path / "template.toml"
     path.write_text("\n".join(out) + TORSION6)
-    template, _ = balance.load_template(path)
+    template = balance.load_template(path)
     result = balance.search(template, "TV1", top=1000, workers=1)
     assert len(result.arrangements) == result.arrangements_distinct == 60
     scores = []
@@ -535,7 +535,7 @@ def test_search_write_keeps_the_torsion_table(tmp_path):
                  tmp_path / "best")
     assert result.exit_code == 0, result.output
     (written,) = (tmp_path / "best").iterdir()
-    template, _ = balance.load_template(path)
+    template = balance.load_template(path)
     assert balance.load(written).torsion == template.torsion
 
 

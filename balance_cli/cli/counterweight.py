@@ -6,7 +6,7 @@ import click
 
 from ..analysis.balancing import Balances
 from ..analysis.counterweight import check_options, counterweights
-from ..config import as_built_toml, load_data
+from ..config import as_built_toml, read_configuration
 from ..report.csvfile import balance_csv
 from ..units import Scale
 from ..report.counterweight import balance_tables
@@ -113,7 +113,8 @@ def counterweight(paths, planes, radius, balance_factor, shafts, shaft_offsets, 
         # built before anything is written: a failure leaves no file and no report half done
         with reported(balances[0].engine):
             configuration = as_built_toml(
-                load_data(files[0]), balances[0].configuration_tables(shafts=bool(orders)),
+                read_configuration(files[0]).data,
+                balances[0].configuration_tables(shafts=bool(orders)),
                 f"{balances[0].engine.name}, with the counterweights{' and shafts' if orders else ''}"
                 f" proposed by\nbalance counterweight added as built (from {files[0]}).")
     if configuration is not None:

@@ -141,13 +141,12 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
                        lambda e: torque_of(e, samples, max_order, bearings=False, guide=False))
     family_table = None
     if family_path is not None:
-        from ..config import load_data
+        from ..config import read_configuration
         from ..studies.family import family
 
         with reported(flags={"cylinders": "--family-cylinders", "template": family_path}):
-            family_table = family(load_data(family_path), str(family_path),
-                                  counts_option(family_cylinders), samples=samples,
-                                  max_order=max_order)
+            family_table = family(read_configuration(family_path), counts_option(family_cylinders),
+                                  samples=samples, max_order=max_order)
     torsion = None
     if any(r.engine.torsion is not None for r in results):
         from ..errors import TorsionUnavailable

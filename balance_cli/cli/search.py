@@ -115,14 +115,15 @@ def search(template_path, objective, top, allow_uneven, step, workers, scheduler
     alike and are listed, but evaluated once. Without --heuristic the result is exhaustive:
     nothing scores better than what is listed.
     """
-    from ..config import arrangement_toml, load_template
-    from ..config.library import resolve
+    from ..config import arrangement_toml, read_configuration, resolve
     from ..cranksearch import DEFAULT_LIMIT
     from ..cranksearch import search as search_of
 
     with reported():
         refuse_inputs([output], [Path(resolve(template_path))])
-        template, data = load_template(template_path)
+        configuration = read_configuration(template_path)
+        template = configuration.template()
+        data = configuration.data
         if write_dir is not None:
             check_folder(write_dir, "--write")
             # the files --write may write must replace neither the template nor --output
@@ -211,8 +212,7 @@ def family_(path, counts, objective, firing_orders, pitch, power, workers, sampl
     FILE.toml is a configuration or search template of the family's in-line engine: one
     cylinder's data repeated at the pitch (its throws' phases and firing order are not used).
     """
-    from ..config import load_data
-    from ..config.library import resolve
+    from ..config import read_configuration, resolve
     from ..studies.family import family
     from ..report.family import family_tables
 
@@ -227,9 +227,9 @@ def family_(path, counts, objective, firing_orders, pitch, power, workers, sampl
              "objective": "--objective", "workers": "--workers", "template": path}
     callback, bar = _search_progress()
     with reported():
-        data = load_data(path)
+        configuration = read_configuration(path)
     with reported(flags=flags), bar:
-        result = family(data, str(path), counts, objective, pitch_m, power_w, given, samples,
+        result = family(configuration, counts, objective, pitch_m, power_w, given, samples,
                         max_order, workers, progress=callback)
 
     def csv():

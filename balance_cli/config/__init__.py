@@ -10,15 +10,19 @@ cylinder is found by its number.
 
 Modules: :mod:`.reader` (the text, its TOML, and typed values with units), :mod:`.builder`
 (the Engine from parsed data), :mod:`.sections` (crankshafts, counterweights and shafts,
-parts, gas, torsion), :mod:`.files` (files and folders to engines) and :mod:`.write`
-(configurations written back as TOML).
+parts, gas, torsion), :mod:`.files` (files and folders to engines and configurations),
+:mod:`.library` (the shipped engines and templates, named ``library:`` and ``template:``) and
+:mod:`.write` (configurations written back as TOML).
 """
 
 from .builder import build
-from .files import (as_template, find_configs, load, load_data, load_many, load_template,
-                    loads)
+from .files import (Configuration, as_template, find_configs, load, load_many, load_template,
+                    loads, read_configuration)
+from .library import library_folder, resolve, templates_folder
 from .reader import parse_text, read_text
 from .write import arrangement_toml, as_built_toml
 
-__all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template", "load_data",
-           "arrangement_toml", "as_built_toml", "as_template", "read_text", "parse_text"]
+__all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template",
+           "Configuration", "read_configuration", "arrangement_toml", "as_built_toml",
+           "as_template", "read_text", "parse_text", "library_folder", "templates_folder",
+           "resolve"]

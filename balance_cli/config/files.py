@@ -1,9 +1,11 @@
-"""Configuration files and text to engines: one file, a text, a search template, the parsed data
-of a file, and every configuration under a list of files and folders. Wherever a path is taken,
+"""Configuration files and text to engines: one file, a text, a search template, a
+configuration as written (:class:`Configuration`), and every configuration under a list of files and folders. Wherever a path is taken,
 ``library:NAME`` and ``template:NAME`` name a shipped one (:mod:`.library`)."""
 
+import copy
 import os
 from collections.abc import Iterable
+from dataclasses import dataclass
 from pathlib import Path
 
 from .. import checks
@@ -13,8 +15,8 @@ from .builder import build
 from .library import resolve
 from .reader import parse_text, read_text
 
-__all__ = ["load", "loads", "load_data", "as_template", "load_template", "find_configs",
-           "load_many"]
+__all__ = ["load", "loads", "Configuration", "read_configuration", "as_template", "load_template",
+           "find_configs", "load_many"]
 
 
 def load(path: "str | os.PathLike[str]") -> Engine:
@@ -29,9 +31,55 @@ def load(path: "str | os.PathLike[str]") -> Engine:
     return loads(read_text(Path(checks.path(path))), name=str(path))
 
 
-def load_data(path: "str | os.PathLike[str]") -> dict:
-    """The parsed TOML of the file at ``path``, checked as a configuration (its throws'
-    phases may be given or not): what :func:`balance_cli.studies.family.family` repeats.
+@dataclass(frozen=True)
+class Configuration:
+    """A configuration as written: its parsed TOML (``data``) and where it came from (``path``,
+    which messages name).
+
+    An analysis starts from the :class:`~balance_cli.Engine` it describes (:meth:`engine`); a
+    study that varies its keys (:func:`~balance_cli.sweep`) or repeats its cylinders
+    (:func:`~balance_cli.family`) starts from the configuration itself. ``data`` is a copy of
+    what was given: changing the dict given afterwards changes nothing here.
+
+    Raises
+    ------
+    ConfigError
+        ``data`` is not a table of keys, or ``path`` not text
+    """
+
+    data: dict
+    path: str = "<config>"
+
+    def __post_init__(self):
+        if not isinstance(self.data, dict):
+            raise ConfigError(str(self.path), "", f"data must be the parsed TOML of a "
+                                                  f"configuration (a dict), got "
+                                                  f"{type(self.data).__name__}")
+        if not isinstance(self.path, str):
+            raise ConfigError("<config>", "", f"path must be text, got {type(self.path).__name__}")
+        object.__setattr__(self, "data", copy.deepcopy(self.data))
+
+    def engine(self) -> Engine:
+        """The engine it describes (ConfigError naming the file, the key and the fix)."""
+        return build(copy.deepcopy(self.data), self.path)
+
+    def template(self) -> Engine:
+        """The engine of a search template (its ``[[throws]]`` give only ``z``, and it has no
+        ``firing_order``: the search chooses both), every throw at phase 0."""
+        return build(copy.deepcopy(self.data), self.path, template=True)
+
+    def as_template(self) -> "Configuration":
+        """The same configuration without its throws' phases and firing order: a search
+        template of the same engine."""
+        return Configuration(as_template(self.data), self.path)
+
+    def to_dict(self) -> dict:
+        return {"path": self.path, "data": copy.deepcopy(self.data)}
+
+
+def read_configuration(path: "str | os.PathLike[str]") -> Configuration:
+    """The :class:`Configuration` in the file at ``path``, checked as a configuration (its
+    throws' phases may be given or not: a family or a search may start from it).
 
     Raises
     ------
@@ -39,9 +87,9 @@ def load_data(path: "str | os.PathLike[str]") -> dict:
         naming the file, the key and the fix
     """
     path = resolve(path)
-    data = _read_data(path)
-    build(as_template(data), str(path), template=True)
-    return data
+    configuration = Configuration(_read_data(path), str(path))
+    configuration.as_template().template()
+    return configuration
 
 
 def as_template(data: dict) -> dict:
@@ -54,10 +102,11 @@ def as_template(data: dict) -> dict:
     return template
 
 
-def load_template(path: "str | os.PathLike[str]") -> tuple[Engine, dict]:
+def load_template(path: "str | os.PathLike[str]") -> Engine:
     """Read a search template: a configuration whose ``[[throws]]`` give only ``z`` and which
-    has no ``firing_order`` (``balance search`` chooses both). Returns the engine, every throw
-    at phase 0, and the parsed TOML (for :func:`arrangement_toml`).
+    has no ``firing_order`` (``balance search`` chooses both). Returns its engine, every throw
+    at phase 0 (:func:`read_configuration` gives the parsed file too, for writing
+    arrangements).
 
     Raises
     ------
@@ -65,8 +114,7 @@ def load_template(path: "str | os.PathLike[str]") -> tuple[Engine, dict]:
         naming the file, the key and the fix
     """
     path = resolve(path)
-    data = _read_data(path)
-    return build(data, str(path), template=True), data
+    return Configuration(_read_data(path), str(path)).template()
 
 
 def _read_data(path):

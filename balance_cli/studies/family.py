@@ -10,6 +10,7 @@ indicated.
 """
 
 import math
+import os
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -17,7 +18,7 @@ from typing import Any
 from ..analysis.results import analyse
 from ..output import DOCUMENT_VERSION
 from ..checks import instance, positive, whole
-from ..config import as_template, build
+from ..config import Configuration, build, read_configuration
 from ..cranksearch import DEFAULT_LIMIT, search
 from ..errors import AnalysisError, BalanceError
 from ..analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES
@@ -139,17 +140,20 @@ def _even_phases(order, n):
     return [(-fired[c]) % 360.0 for c in range(1, n + 1)]
 
 
-def family(data: dict, path: str, cylinders: Sequence[int], objective: str | None = None,
+def family(configuration, cylinders: Sequence[int], objective: str | None = None,
            pitch_m: float | None = None, power_per_cylinder_w: float | None = None,
            firing_orders: Mapping[int, Sequence[int]] | None = None,
            samples: int = DEFAULT_SAMPLES, max_order: int = DEFAULT_MAX_ORDER,
            workers: int | None = None, limit: int | None = None,
            progress: Callable[[int, int], None] | None = None) -> FamilyResult:
-    """The family table of a template (parsed TOML ``data`` from
-    :func:`~balance_cli.load_template`, read from ``path``).
+    """The family table of an in-line engine: its one cylinder at every number of cylinders.
 
     Parameters
     ----------
+    configuration : Configuration, str or PathLike
+        the engine's configuration (:func:`~balance_cli.read_configuration`), or its file: a
+        configuration with phases or a search template (its phases and firing order are
+        left out)
     cylinders : sequence of int
         the numbers of cylinders, 2 to 24
     objective : str, optional
@@ -172,13 +176,16 @@ def family(data: dict, path: str, cylinders: Sequence[int], objective: str | Non
         naming the parameter, or the file and key
     """
     counts = _counts(cylinders)
-    instance(data, dict, "data", hint=" (balance.load_data(path))")
-    instance(path, str, "path")
+    if isinstance(configuration, (str, os.PathLike)):
+        configuration = read_configuration(configuration)
+    instance(configuration, Configuration, "configuration",
+             hint=" (balance.read_configuration(path), or a file's path)")
+    path = configuration.path
     if power_per_cylinder_w is not None:
         power_per_cylinder_w = positive(power_per_cylinder_w, "power_per_cylinder_w", "power")
     instance(firing_orders, (dict, type(None)), "firing_orders",
              hint=" of cylinder counts to firing orders")
-    data = as_template(data)
+    data = configuration.as_template().data
     template = build(data, path, template=True)
     if template.is_rotary or len(template.bank_angles_rad) != 1 or "cylinders" in data \
             or template.has_several_crankshafts:

@@ -28,8 +28,8 @@ import numpy as np
 
 from ...analysis.results import analyse
 from ...output import DOCUMENT_VERSION
-from ...config import build, parse_text, read_text
-from ...config.library import resolve
+from ...config import Configuration, build, parse_text, read_text
+from ...config import resolve
 from ...analysis.counterweight import check_options, counterweights
 from ...errors import BalanceError, ConfigError, FiringError, SweepError
 from ...analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings
@@ -169,27 +169,30 @@ def _point_error(exc, parameter, value, path):
     return SweepError(text, key=parameter.key, value=value, cause=exc)
 
 
-def _load(config, name):
-    if isinstance(config, dict):
-        return copy.deepcopy(config), name or "<config>"
-    if isinstance(config, (str, os.PathLike)):
-        path = os.fspath(resolve(config))
-        return parse_text(read_text(Path(path)), path), name or path
-    raise SweepError(f"must be a configuration file's path or its parsed TOML (a dict), got "
-                     f"{type(config).__name__}", "config")
+def _load(configuration):
+    """The parsed data and path of a Configuration or a file."""
+    if isinstance(configuration, Configuration):
+        return copy.deepcopy(configuration.data), configuration.path
+    if isinstance(configuration, (str, os.PathLike)):
+        path = os.fspath(resolve(configuration))
+        return parse_text(read_text(Path(path)), path), path
+    raise SweepError(f"must be a Configuration (balance.read_configuration(path), or "
+                     f"balance.Configuration(data, path) of parsed TOML) or a file's path, got "
+                     f"{type(configuration).__name__}", "configuration")
 
 
-def sweep(config, parameter: str, values: Sequence, quantities=None,
+def sweep(configuration, parameter: str, values: Sequence, quantities=None,
           samples: int = DEFAULT_SAMPLES, max_order: int = DEFAULT_MAX_ORDER, *,
-          inertia_kgm2: float | None = None, load: str = "propeller", name: str | None = None,
+          inertia_kgm2: float | None = None, load: str = "propeller",
           overrides: "dict | None" = None,
           progress: "Callable[[int, int], None] | None" = None) -> SweepResult:
-    """Analyse the configuration ``config`` once per value of ``parameter``.
+    """Analyse ``configuration`` once per value of ``parameter``.
 
     Parameters
     ----------
-    config : str, PathLike or dict
-        a configuration file, or its parsed TOML (not changed)
+    configuration : Configuration, str or PathLike
+        a configuration (:func:`~balance_cli.read_configuration`, or
+        ``balance.Configuration(data, path)`` of TOML parsed in code), or its file
     parameter : str
         a configuration key as written in the file: ``speed``, ``rod_length``,
         ``masses.rotating``, ``banks[2].angle``, ``throws[3].phase``, ``gas.imep``,
@@ -209,8 +212,6 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
         flywheel inertia for the ``steadiness`` quantity, kg·m²
     load : str
         "propeller" or "constant", for the steadiness
-    name : str, optional
-        what a dict ``config`` is called in messages (default "<config>")
     overrides : dict, optional
         other keys to set at every point, as written in the file (``{"speed": "3000 rpm"}``:
         the command line's ``--speed``); checked like the file's own values
@@ -230,7 +231,7 @@ def sweep(config, parameter: str, values: Sequence, quantities=None,
         ``samples`` or ``max_order`` out of range
     """
     check_settings(samples, max_order)
-    data, path = _load(config, name)
+    data, path = _load(configuration)
     build(data, path)   # the file as it is first: its own errors are the file's, not the sweep's
     param = parameter_of(data, parameter, path)
     for key, value in (overrides or {}).items():
