@@ -14,7 +14,7 @@ from click.testing import CliRunner
 
 import balance_cli as balance
 from balance_cli.cli import main
-from conftest import CONFIGS, PART3, ROOT, make_engine
+from tests.support import CONFIGS, PART3, ROOT, make_engine
 
 V12 = CONFIGS / "nakanishi-v12-90-2stroke.toml"
 

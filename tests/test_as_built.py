@@ -21,7 +21,7 @@ from balance_cli.analysis.counterweight import built_shafts, rolling_moment_phas
 from balance_cli.kinematics.linkage import BALANCER, COUNTERWEIGHT, CRANK, engine_angles, linkage_state
 from balance_cli.model import BalancerMass, BalancerShaftSpec, CounterweightMass
 
-from conftest import CONFIGS, exact_b
+from tests.support import CONFIGS, exact_b
 
 M, ROT, R, L, RPM, D = 0.6, 0.3, 0.045, 0.15, 3000.0, 0.1
 W = RPM * math.pi / 30.0
@@ -622,7 +622,7 @@ def test_a_counterweight_turns_with_its_own_crankshaft(direction):
     m·ρ·ω²·e^{i(β+α)} when the shaft turns with the first, a backward one of
     m·ρ·ω²·e^{−i(β+α)} against it; it loads crankshaft 2's main bearings by that much and
     crankshaft 1's not at all."""
-    from test_crankshafts import OMEGA, opposed_single
+    from tests.test_crankshafts import OMEGA, opposed_single
 
     me, alpha, beta = 0.05, math.radians(30.0), math.pi
     bare = opposed_single(0.0, direction)

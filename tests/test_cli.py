@@ -9,7 +9,7 @@ import pytest
 from click.testing import CliRunner
 
 from balance_cli.cli import main
-from conftest import CONFIGS, PART3, TWIN as GOOD
+from tests.support import CONFIGS, PART3, TWIN as GOOD
 
 LINKED = textwrap.dedent("""\
     name = "test V"

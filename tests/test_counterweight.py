@@ -15,7 +15,7 @@ from balance_cli.cli import main
 from balance_cli.analysis.counterweight import Plane, plane_at_throw
 from balance_cli.analysis.counterweight import counterweights as balance
 from balance_cli.errors import CounterweightError
-from conftest import CONFIGS, exact_b, make_engine
+from tests.support import CONFIGS, exact_b, make_engine
 
 V12 = CONFIGS / "nakanishi-v12-90-2stroke.toml"
 W12 = CONFIGS / "nakanishi-w12-60-2stroke.toml"

@@ -21,7 +21,7 @@ from balance_cli.cli import main
 from balance_cli.units import Scale
 from balance_cli.units import UNIT_SYSTEMS, parse_quantity, significant
 
-from conftest import ROOT, TWIN, exact_b, make_engine
+from tests.support import ROOT, TWIN, exact_b, make_engine
 
 M, R, L, RPM, D = 0.6, 0.045, 0.15, 3000.0, 0.1
 W = RPM * math.pi / 30.0

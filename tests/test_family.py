@@ -22,7 +22,7 @@ from balance_cli.cli import main
 from balance_cli.config import read_configuration
 from balance_cli.studies.family import family
 
-from conftest import CONFIGS, exact_b
+from tests.support import CONFIGS, exact_b
 
 MARINE = CONFIGS / "marine-6-2stroke.toml"
 M, R, L, D, RPM = 8000.0, 1.2, 2.9, 1.02, 105.0

@@ -11,7 +11,7 @@ from balance_cli.errors import FiringError, ModelError
 from balance_cli.analysis.firing import firing_sequence as firing
 from balance_cli.kinematics import tdc_angles
 from balance_cli.model import Cylinder, Engine, Throw
-from conftest import CONFIGS, make_engine
+from tests.support import CONFIGS, make_engine
 
 INLINE4 = [(0, 0.0), (180, 0.1), (180, 0.2), (0, 0.3)]
 

@@ -15,7 +15,7 @@ from click.testing import CliRunner
 import balance_cli as balance
 from balance_cli.cli import main
 from balance_cli.studies.regress import regression as regress
-from conftest import ROOT
+from tests.support import ROOT
 
 GOLDEN = ROOT / "tests" / "golden" / "compare.json"
 

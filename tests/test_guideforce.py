@@ -13,7 +13,7 @@ import balance_cli as balance
 from balance_cli.cranksearch import search
 from balance_cli.errors import AnalysisError
 from balance_cli.analysis.torque import torque
-from conftest import CONFIGS
+from tests.support import CONFIGS
 
 # a crosshead two-stroke, round figures of a 600 mm bore engine: rods with mass and inertia
 # ([parts]) so that the rod's own dynamics enter the guide force

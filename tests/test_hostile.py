@@ -15,7 +15,7 @@ import pytest
 from click.testing import CliRunner
 
 from balance_cli.cli import main
-from conftest import CONFIGS, TWIN as GOOD
+from tests.support import CONFIGS, TWIN as GOOD
 
 LISTED = """\
 name = "listed V"

@@ -6,7 +6,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from balance_cli import analyse, load
-from conftest import CONFIGS
+from tests.support import CONFIGS
 
 
 def b2_series(q):

@@ -13,7 +13,7 @@ from numpy.testing import assert_allclose
 
 from balance_cli.kinematics.linkage import check_assembly, linkage_state
 from balance_cli.analysis.shaking import shaking_forces as shaking
-from conftest import make_engine
+from tests.support import make_engine
 
 SAMPLES = 256
 MAX_ORDER = 60

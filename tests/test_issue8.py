@@ -21,7 +21,7 @@ from balance_cli.errors import ModelError, OutputError
 from balance_cli.model import Cylinder
 from balance_cli.output import refuse_inputs, write_bytes, write_folder, write_text
 from balance_cli.units import round_degrees, wrap_degrees
-from conftest import CONFIGS, PART3, make_engine
+from tests.support import CONFIGS, PART3, make_engine
 
 BOXER = """\
 name = "Flat twin | opposed <script>alert(1)</script>"

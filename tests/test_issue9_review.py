@@ -12,7 +12,7 @@ import balance_cli
 import balance_cli as balance
 from balance_cli.cli import main
 from balance_cli.model import Throw
-from conftest import CONFIGS, make_engine
+from tests.support import CONFIGS, make_engine
 
 BRAMO = CONFIGS / "bramo-323.toml"
 

@@ -15,7 +15,7 @@ from balance_cli.kinematics import (FINE_SAMPLES, fine_travel, kinematic_state, 
                                     linkage_state)
 
 ROOT = Path(__file__).resolve().parent.parent
-MENDES = (ROOT / "tests/reference/opentorsion_ice/mendes2008.toml").read_text(encoding="utf-8")
+MENDES = (ROOT / "tests/validation/reference/opentorsion_ice/mendes2008.toml").read_text(encoding="utf-8")
 GAS = '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\nimep = "15 bar"\n'
 
 

@@ -10,7 +10,7 @@ from numpy.testing import assert_allclose
 from balance_cli import analyse, load
 from balance_cli.analysis.shaking import ellipse
 from balance_cli.units import STANDARD_GRAVITY
-from conftest import CONFIGS, PART3, exact_b
+from tests.support import CONFIGS, PART3, exact_b
 
 # Clerget proportions of Tanaka's Part III
 Q = 80.0 / 269.5

@@ -18,7 +18,7 @@ from balance_cli.cli import main
 from balance_cli.analysis.marine import DEFAULT_PRU_CLASSES, check_classes, pru_class
 from balance_cli.units import parse_quantity
 
-from conftest import CONFIGS, TWIN, exact_b
+from tests.support import CONFIGS, TWIN, exact_b
 
 MARINE = CONFIGS / "marine-6-2stroke.toml"
 

@@ -21,7 +21,7 @@ from balance_cli.cli import main
 from balance_cli.cli.batch import progress
 from balance_cli.errors import PlotError
 from balance_cli.units import STANDARD_GRAVITY
-from conftest import CONFIGS, PART3
+from tests.support import CONFIGS, PART3
 
 RADIAL = PART3 / "5a-radial-9.toml"
 V8 = PART3 / "1a-v8-90-flat.toml"

@@ -22,8 +22,8 @@ from balance_cli.kinematics.linkage import check_assembly
 from balance_cli.errors import ModelError
 from balance_cli.model import Throw
 from balance_cli.analysis.shaking import shaking_forces as shaking
-from conftest import make_engine
-from test_cli import GOOD, LINKED
+from tests.support import make_engine
+from tests.support import LINKED, TWIN as GOOD
 
 SETTINGS = settings(derandomize=True, max_examples=40, deadline=None,
                     suppress_health_check=[HealthCheck.too_slow])

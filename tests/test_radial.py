@@ -6,7 +6,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from balance_cli.analysis.shaking import shaking_forces as shaking
-from conftest import make_engine
+from tests.support import make_engine
 
 
 def single_cylinder_harmonics(q, max_order):

@@ -1,14 +1,9 @@
 """Every published figure of the source papers (tests/reference/*.toml) against balance."""
 
-import sys
-from pathlib import Path
-
 import pytest
 
-sys.path.insert(0, str(Path(__file__).parent / "reference"))
-
-import evaluate  # noqa: E402
-from balance_cli import load  # noqa: E402
+from balance_cli import load
+from tests.validation.reference import evaluate
 
 ROWS = evaluate.rows()
 ERRATA = {e["id"]: e for e in evaluate.errata()}
@@ -78,8 +73,7 @@ def test_bramo_config_derives_fraeys_de_veubekes_point_masses_from_table_viii():
 
 def test_validation_report_is_current():
     """docs/VALIDATION.md is generated from these records (make validate) and committed."""
-    sys.path.insert(0, str(evaluate.ROOT / "tools"))
-    import validation_report
+    from tools import validation_report
 
     committed = validation_report.TARGET.read_text(encoding="utf-8")
     assert committed == validation_report.render(), "docs/VALIDATION.md is out of date: run make validate"

@@ -10,7 +10,7 @@ from click.testing import CliRunner
 import balance_cli as balance
 from balance_cli.cli import main
 from balance_cli.studies.regress import regression as regress
-from conftest import CONFIGS
+from tests.support import CONFIGS
 
 
 #: the library's engines, counted rather than written down: adding a configuration must not

@@ -13,8 +13,7 @@ import balance_cli as balance
 from balance_cli.errors import AnalysisError, ConfigError
 from balance_cli.cranksearch import parse_objective, search
 
-sys.path.insert(0, str(Path(__file__).parent / "reference"))
-import arrangements as reference  # noqa: E402  (independent: numpy only, no balance_cli)
+from tests.validation.reference import arrangements as reference  # independent: numpy only
 
 ROOT = Path(__file__).resolve().parent.parent
 TEMPLATES = ROOT / "templates"

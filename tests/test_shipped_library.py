@@ -19,7 +19,7 @@ import balance_cli as balance
 from balance_cli.cli import main
 from balance_cli.config import find_configs, load_many, load_template, read_configuration
 from balance_cli.config.library import library_folder, resolve, templates_folder
-from conftest import CONFIGS, PART3, ROOT
+from tests.support import CONFIGS, PART3, ROOT
 
 TEMPLATES = ROOT / "templates"
 

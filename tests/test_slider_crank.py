@@ -6,7 +6,7 @@ from numpy.testing import assert_allclose
 
 from balance_cli.kinematics.linkage import linkage_state
 from balance_cli.analysis.shaking import shaking_forces as shaking
-from conftest import make_engine
+from tests.support import make_engine
 
 
 def series(q):

@@ -15,7 +15,7 @@ import balance_cli as balance
 from balance_cli.cli import main
 from balance_cli.errors import AnalysisError
 from balance_cli.analysis.steadiness import flywheel_for, steadiness
-from conftest import CONFIGS
+from tests.support import CONFIGS
 
 OMEGA = 2 * math.pi * 1200 / 60
 

@@ -21,7 +21,7 @@ import balance_cli as balance
 from balance_cli.config import reader as config_module
 from balance_cli.cli import main
 from balance_cli.studies.sweep import SCHEMA, span
-from conftest import CONFIGS, ROOT, SINGLE, TWIN
+from tests.support import CONFIGS, ROOT, SINGLE, TWIN
 
 M_REC, R = 0.5, 0.040           # kg, m: SINGLE's and TWIN's reciprocating mass and crank radius
 TWIN_PITCH = 0.090              # m, TWIN's throw spacing

@@ -3,8 +3,6 @@ closed forms, independent second methods and the papers."""
 
 import dataclasses
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -14,11 +12,9 @@ import balance_cli
 import balance_cli as balance
 from balance_cli.model import GasCycle
 from balance_cli.analysis.torque import torque
-from conftest import CONFIGS, make_engine
+from tests.support import CONFIGS, make_engine
 
-sys.path.insert(0, str(Path(__file__).parent / "reference"))
-
-import fraeys_newton_euler  # noqa: E402
+from tests.validation.reference import fraeys_newton_euler
 
 
 def single(r=0.05, l=0.2, m=1.0, rpm=3000.0, **extra):

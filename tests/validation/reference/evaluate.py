@@ -5,7 +5,8 @@ Each ``*.toml`` file beside this module holds one paper: a ``[paper]`` table, op
 ``[[figure]]`` records, one per published number. ``errata.toml`` lists the misprints the
 records point to. See README.md here for the record format.
 
-Used by ``tests/test_reference.py`` and by ``tools/validation_report.py`` (``make validate``).
+Used by ``tests/validation/test_reference.py`` and by ``tools/validation_report.py`` (``make
+validate``).
 """
 
 import dataclasses
@@ -16,8 +17,6 @@ from pathlib import Path
 
 import numpy as np
 
-import fraeys_series
-
 from balance_cli import analyse, load
 from balance_cli.kinematics.linkage import close_linkage as linkage
 from balance_cli.analysis.marine import power_related_unbalance
@@ -26,8 +25,10 @@ from balance_cli.analysis.torque import torque
 from balance_cli.model import Cylinder, Engine, Throw
 from balance_cli.units import STANDARD_GRAVITY
 
+from . import fraeys_series
+
 HERE = Path(__file__).resolve().parent
-ROOT = HERE.parent.parent
+ROOT = HERE.parent.parent.parent
 
 __all__ = ["Row", "papers", "errata", "evaluate", "rows"]
 
@@ -290,10 +291,7 @@ def _lead(engine, number):
 
 @lru_cache(maxsize=None)
 def _torsion_response(speeds):
-    import sys
-
-    sys.path.insert(0, str(HERE / "opentorsion_ice"))
-    import compare
+    from .opentorsion_ice import compare
 
     peak, summed, frequencies = compare.response(np.array(speeds))
     return compare, summed, frequencies
