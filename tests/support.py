@@ -27,6 +27,9 @@ PART3 = CONFIGS / "tanaka-part3"
 REFERENCE = ROOT / "tests" / "validation" / "reference"
 
 #: engines of the library that several modules use
+TODAY = CONFIGS / "today"
+V8 = PART3 / "1a-v8-90-flat.toml"
+RADIAL = PART3 / "5a-radial-9.toml"
 V12 = CONFIGS / "nakanishi-v12-90-2stroke.toml"
 BRAMO = CONFIGS / "bramo-323.toml"
 JUMO = "configs/today/opposed-piston/junkers-jumo-205.toml"
@@ -61,6 +64,14 @@ SINGLE = (TWIN.replace('name = "test twin"', 'name = "test single"')
           .replace("firing_order = [1, 2]\n", "").split("[[throws]]")[0] + "[[throws]]\nphase = 0\n")
 #: TWIN's (and SINGLE's) reciprocating mass, kg, crank radius, m, and throw spacing, m
 TWIN_RECIPROCATING_KG, TWIN_CRANK_RADIUS_M, TWIN_PITCH = 0.5, 0.040, 0.090
+
+
+
+def replaced(old, new, base=TWIN):
+    """``base`` with its first ``old`` made ``new`` (which must be there)."""
+    assert old in base, old
+    return base.replace(old, new, 1)
+
 
 #: a V-twin on one throw whose second cylinder rides on a link rod
 LINKED = textwrap.dedent("""\
@@ -168,6 +179,29 @@ stiffness = "1.976e6 N*m/rad"
 
 #: the orders of a four-stroke's torsional excitation, ½ to 12
 TORSION_ORDERS = np.arange(1, 25) / 2
+
+
+#: a [gas] cycle for the car's in-line four (configs/inline-4-car.toml)
+CAR_GAS = """
+[gas]
+bore = "86 mm"
+compression_ratio = 10
+imep = "12 bar"
+"""
+
+
+def inline_toml(name, phases, pitch_mm, cycle=2, banks=(0,)):
+    """An engine with reciprocating masses only (1 kg, r = 50 mm, 3000 rpm), one throw per
+    phase, ``pitch_mm`` apart: m·r·ω² = 1·0.05·(100π)² N."""
+    text = (f'name = "{name}"\ncycle = {cycle}\nspeed = "3000 rpm"\ncrank_radius = "50 mm"\n'
+            'rod_length = "200 mm"\n\n[masses]\nreciprocating = "1 kg"\n')
+    text += "".join(f"\n[[banks]]\nangle = {b}\n" for b in banks)
+    return text + "".join(f'\n[[throws]]\nphase = {p}\nz = "{j * pitch_mm} mm"\n'
+                          for j, p in enumerate(phases))
+
+
+MRW2 = 1.0 * 0.05 * (3000 * math.pi / 30) ** 2      # inline_toml's m·r·ω², N
+PITCH = 0.1                                          # d, m
 
 
 def inline_template_text(n, pitch_mm=500):

@@ -1,5 +1,5 @@
-"""The documented Python API (issue 9): the README's examples run, results equal the command
-line's JSON, errors derive from one base and name parameters, modules are not shadowed."""
+"""The documented Python API: the README's examples run, results equal the command line's
+JSON, errors derive from one base and name parameters, modules are not shadowed."""
 
 import importlib
 import inspect
@@ -14,15 +14,19 @@ from click.testing import CliRunner
 
 import balance_cli as balance
 from balance_cli.cli import main
-from tests.support import CONFIGS, PART3, ROOT, make_engine
 
-V12 = CONFIGS / "nakanishi-v12-90-2stroke.toml"
-
+from tests.support import CONFIGS, make_engine, PART3, ROOT, V12
 
 def readme_python_blocks():
     text = (ROOT / "README.md").read_text(encoding="utf-8")
     section = text[text.index("## Python API"):text.index("## Conventions")]
     return re.findall(r"```python\n(.*?)```", section, flags=re.S)
+
+
+def cli_json(*args):
+    result = CliRunner().invoke(main, [str(a) for a in args])
+    assert result.exit_code == 0, result.output
+    return json.loads(result.stdout)
 
 
 def test_the_readme_examples_run_as_written(tmp_path, monkeypatch):
@@ -52,12 +56,6 @@ def test_the_issue_snippet_runs_with_text_defined_and_raises_for_a_missing_plane
         balance.counterweights(engine, planes=[1, 6], radius_m=0.06, balance_factor=None)
     assert caught.value.parameter == "planes"
     assert balance.plot.locus([result]).axes
-
-
-def cli_json(*args):
-    result = CliRunner().invoke(main, [str(a) for a in args])
-    assert result.exit_code == 0, result.output
-    return json.loads(result.stdout)
 
 
 @pytest.mark.parametrize("config", sorted(p.relative_to(CONFIGS) for p in CONFIGS.rglob("*.toml")))
@@ -161,3 +159,15 @@ def test_the_package_is_typed():
     assert (ROOT / "balance_cli" / "py.typed").exists()
     assert balance.analyse.__annotations__["return"] is balance.EngineResult
     assert "py.typed" in (ROOT / "pyproject.toml").read_text()
+
+
+def test_compare_does_not_import_matplotlib():
+    code = ("import sys; from balance_cli.cli import main\n"
+            "try:\n    main(['compare', sys.argv[1], '--format', 'json', '-o', sys.argv[2]])\n"
+            "except SystemExit:\n    pass\n"
+            "assert 'matplotlib' not in sys.modules, 'matplotlib imported'\n")
+    import tempfile
+    with tempfile.TemporaryDirectory() as folder:
+        done = subprocess.run([sys.executable, "-c", code, str(PART3), f"{folder}/o.json"],
+                              capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr

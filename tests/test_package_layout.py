@@ -6,23 +6,10 @@ import ast
 from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parent.parent / "balance_cli"
-
 #: the most lines a module may have: one idea, a few hundred lines (DESIGN.md)
 MOST_LINES = 500
-
-
 def modules():
     return sorted(PACKAGE.rglob("*.py"))
-
-
-def test_there_are_modules_to_check():
-    assert len(modules()) > 50
-
-
-def test_every_module_is_at_most_500_lines():
-    long = [f"{p.relative_to(PACKAGE.parent)}: {n} lines" for p in modules()
-            if (n := p.read_text(encoding="utf-8").count("\n")) > MOST_LINES]
-    assert not long, "split these by idea:\n" + "\n".join(long)
 
 
 def private_imports(path):
@@ -33,6 +20,16 @@ def private_imports(path):
             if isinstance(node, ast.ImportFrom)
             for alias in node.names
             if alias.name.startswith("_") and not alias.name.startswith("__")]
+
+
+def test_there_are_modules_to_check():
+    assert len(modules()) > 50
+
+
+def test_every_module_is_at_most_500_lines():
+    long = [f"{p.relative_to(PACKAGE.parent)}: {n} lines" for p in modules()
+            if (n := p.read_text(encoding="utf-8").count("\n")) > MOST_LINES]
+    assert not long, "split these by idea:\n" + "\n".join(long)
 
 
 def test_no_module_imports_another_modules_private_name():

@@ -1,10 +1,16 @@
+"""Quantities with units (balance_cli.units): parsing into SI, unit systems for display,
+significant figures and angles normalised once."""
+
 import math
 
 import pytest
 from numpy.testing import assert_allclose
 
-from balance_cli.units import UnitError, parse_quantity
+import balance_cli as balance
+from balance_cli.units import (parse_quantity, round_degrees, Scale, significant, UNIT_SYSTEMS,
+    UnitError, wrap_degrees)
 
+from tests.support import invoke
 
 @pytest.mark.parametrize(
     "text, dimension, si",
@@ -38,3 +44,54 @@ def test_quantities_convert_to_si(text, dimension, si):
 def test_bad_quantities_say_what_to_write(value, dimension, words):
     with pytest.raises(UnitError, match=words):
         parse_quantity(value, dimension)
+
+
+@pytest.mark.parametrize("units, force, moment", [
+    ("N", 1.0, 1.0), ("kN", 1e3, 1e3), ("MN", 1e6, 1e6),
+    ("kgf", 9.80665, 9.80665),
+    # 1 lbf = 0.45359237 kg × 9.80665 m/s² = 4.4482216152605 N; 1 lbf·ft = that × 0.3048 m
+    ("lbf", 4.4482216152605, 1.3558179483314004),
+])
+def test_unit_systems_against_hand_conversion(units, force, moment):
+    scale = Scale.of(False, units.upper() if units != "MN" else "Mn")
+    assert scale.units == units
+    assert_allclose(scale.force(force * 123.0, 1.0), 123.0 if units != "N" else 123.0 * force,
+                    rtol=1e-15)
+    assert_allclose(scale.moment(moment * 7.0), 7.0, rtol=1e-15)
+    assert UNIT_SYSTEMS[units][1] == {"N": "N·m", "kN": "kN·m", "MN": "MN·m", "kgf": "kgf·m",
+                                      "lbf": "lbf·ft"}[units]
+
+
+def test_significant_figures():
+    assert significant(4980395.12) == "4 980 000"
+    assert significant(4980395.12 / 1e3) == "4 980"
+    assert significant(0.214712) == "0.2147"
+    assert significant(3.4e-5) == "3.400e-05"
+    assert significant(0.0) == "0"
+    assert significant(-12.5) == "-12.50"
+
+
+def test_unit_names_in_any_case_unless_ambiguous():
+    assert parse_quantity("1650 RPM", "angular speed") == pytest.approx(1650 * math.pi / 30)
+    assert parse_quantity("2 KG", "mass") == 2.0
+    # 1 psi = 6894.757293168 Pa; P here is no prefix
+    assert parse_quantity("1 PSI", "pressure") == pytest.approx(6894.757293168, rel=1e-15)
+    for text, dimension, meant in (("5 Mm", "length", "'mm'"), ("5 mpa", "pressure", "'MPa'"),
+                                   ("0.05 M", "length", "'m'"), ("5 MBAR", "pressure", "'mbar'"),
+                                   ("1 kg*Mm^2", "moment of inertia", "'kg*mm^2'")):
+        with pytest.raises(balance.UnitError) as caught:
+            parse_quantity(text, dimension)
+        assert "milli" in str(caught.value) and "mega" in str(caught.value)
+        assert f"write {meant}" in str(caught.value)
+    for name in ("mn", "mN"):
+        with pytest.raises(balance.UnitError, match="milli"):
+            Scale.of(False, name)
+    out = invoke("compare", "configs/inline-4-car.toml", "--units", "mn")
+    assert out.exit_code == 2 and "milli" in out.output and "Traceback" not in out.output
+
+
+def test_wrap_and_round_degrees():
+    assert wrap_degrees(-1e-12) == 0.0 and wrap_degrees(360.0) == 0.0
+    assert wrap_degrees(179.9999999, 180.0) == 0.0 and wrap_degrees(179.99, 180.0) == 179.99
+    assert wrap_degrees(-90.0) == 270.0 and wrap_degrees(725.0) == 5.0
+    assert round_degrees(359.996, 2) == 0.0 and round_degrees(359.994, 2) == 359.99
