@@ -43,8 +43,8 @@ def test_the_readme_examples_run_as_written(tmp_path, monkeypatch):
     assert isinstance(namespace["fig"], __import__("matplotlib.figure").figure.Figure)
 
 
-def test_the_issue_snippet_runs_with_text_defined_and_raises_for_a_missing_plane():
-    """Issue 9's snippet asks for planes [1, 6] of the four-throw in-line 4: the library says
+def test_a_snippet_with_text_defined_runs_and_raises_for_a_missing_plane():
+    """A snippet that asks for planes [1, 6] of the four-throw in-line 4: the library says
     which throw is missing, naming its parameter."""
     path = CONFIGS / "inline-4-car.toml"
     engine = balance.load(path)

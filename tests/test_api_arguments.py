@@ -177,7 +177,7 @@ def cases(w):
         ("Engine.cylinders", lambda v: replace(e, cylinders=v), "cylinders", COLLECTIONS),
         ("Engine.firing_order", lambda v: replace(e, firing_order=v), "firing_order",
          [NAN, 3, "1342", (1, 2, 3), (1, 1, 2, 3), (1, 2, 3, 9)]),
-        # issue 17's additions
+        # the engine's vertical, Engine.replace, main orders, shaft offsets, sweeps, PRU, family
         ("Engine.vertical_rad", lambda v: e.replace(vertical_rad=v), "vertical_rad",
          ["x", NAN, INF, 1e300, [], True]),
         ("Engine.replace", lambda v: e.replace(**{v: 1.0}), "Engine.replace",

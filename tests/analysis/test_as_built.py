@@ -90,7 +90,7 @@ I4 = textwrap.dedent(f"""\
 #: the crank, and the big ends to ROT·r·ω²·e^{i(θ+β)}: forward first order (m + ROT)·r·ω²·e^{iβ}
 #: per throw, no backward part. Over β = 0, 90°, 270°, 180° the forces cancel (1 + i − i − 1);
 #: the couple about z̄ = 1.5·d is (m + ROT)·r·ω²·d·(−1.5 − 0.5i + 0.5·(−i) + 1.5·(−1))
-#: = (m + ROT)·r·ω²·d·(−3 − i), of size √10·(m + ROT)·r·ω²·d (tests/test_engineering.py).
+#: = (m + ROT)·r·ω²·d·(−3 − i), of size √10·(m + ROT)·r·ω²·d (tests/analysis/test_results.py).
 #: Two counterweights in the end webs (z = 0 at throw 1, z = 3d at throw 4), phasors c₁ and c₄
 #: (a mass m·ρ at direction φ adds m·ρ·ω²·e^{iφ}): c₁ + c₄ = 0 and −1.5d·c₁ + 1.5d·c₄ = −couple,
 #: so c₄ = (m + ROT)·r·ω²·(1 + i/3) and c₁ = −c₄. Each has
@@ -581,7 +581,7 @@ def test_write_refuses_a_rotary(tmp_path):
 @pytest.mark.parametrize("direction", [1, -1])
 def test_a_counterweight_turns_with_its_own_crankshaft(direction):
     """Two crankshafts (the second at x = 1 m, turning with or against the first, the opposed
-    single of tests/test_crankshafts.py). A counterweight of unbalance m·ρ at angle α on throw 2
+    single of tests/analysis/test_crankshafts.py). A counterweight of unbalance m·ρ at angle α on throw 2
     (phase β = 180° on crankshaft 2) sits at direction·(θ + β + α) about that crankshaft's
     axis: its inertia force m·ρ·ω²·e^{i·direction·(θ + β + α)} is a forward first order of
     m·ρ·ω²·e^{i(β+α)} when the shaft turns with the first, a backward one of

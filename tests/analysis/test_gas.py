@@ -95,8 +95,8 @@ def test_a_bore_without_a_pressure_is_refused_by_the_library():
 
 @pytest.mark.parametrize("bore", [math.nan, math.inf, -0.154, 0.0, "0.154", None])
 def test_torque_checks_the_bore_as_the_command_does(bore):
-    """Item 5: bore_m=nan gave a gas torque of mean 0.0 and NaN extremes, a negative bore was
-    taken as its absolute value and a zero one as no gas."""
+    """Guards against bores taken as they came: bore_m=nan gave a gas torque of mean 0.0 and NaN
+    extremes, a negative bore was taken as its absolute value and a zero one as no gas."""
     import balance_cli as balance
 
     engine = balance.load(CONFIGS / "abc-dragonfly.toml")
@@ -113,9 +113,9 @@ def test_torque_checks_the_bore_as_the_command_does(bore):
 
 
 def test_a_sharp_pressure_curve_warns_that_the_gas_torque_is_not_converged(tmp_path):
-    """Rough edge: a compression ratio of 100 burning in 1° gave a mean gas torque 1.34 %
-    above imep·V_d/(4π) at 256 samples without a word. The work of the cycle fixes the
-    mean: one cylinder, imep 10 bar, V_d = π/4·(80 mm)²·80 mm, so 32.00 N·m exactly."""
+    """Guards against a silent aliasing: a compression ratio of 100 burning in 1° gave a mean gas
+    torque 1.34 % above imep·V_d/(4π) at 256 samples without a word. The work of the cycle fixes
+    the mean: one cylinder, imep 10 bar, V_d = π/4·(80 mm)²·80 mm, so 32.00 N·m exactly."""
     import warnings
 
     import balance_cli as balance

@@ -1,4 +1,4 @@
-"""Guide forces and guide-force moments (issue 18, item 3), against independent second methods:
+"""Guide forces and guide-force moments, against independent second methods:
 the frame reaction torque of the kinetic energy (virtual work), the project guides' statement
 for regular firing, a bimoment summed by hand and a brute-force search."""
 

@@ -39,7 +39,7 @@ def _richardson_second_derivative(f, x, h, levels):
 
 
 def single_cylinder_harmonics(q, max_order):
-    """B_k of one plain slider-crank (checked against the series in test_slider_crank)."""
+    """B_k of one plain slider-crank (checked against the series in test_harmonics_match_the_series_to_its_truncation_error)."""
     engine = make_engine([0], [(0, 0.0)], r=0.08, l=0.08 / q)
     result = shaking(engine, samples=256, max_order=max_order)
     return {o.order: 2 * o.force_forward.real / engine.unit_force_n for o in result.orders}

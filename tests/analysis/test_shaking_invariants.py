@@ -2,7 +2,7 @@
 
 The expensive check (finite differences of the exact positions) runs on a fixed set of
 layouts built to assemble; the cheap invariants (turning, mirroring, scaling) run under
-hypothesis in test_properties.py.
+hypothesis in test_shaking_properties.py.
 """
 
 import math

@@ -90,7 +90,7 @@ def test_doubling_the_speed_quadruples_every_force(engine):
 @SETTINGS
 @given(engines(), st.floats(-math.pi, math.pi))
 def test_an_engine_turned_as_a_whole_has_the_same_maxima(engine, delta):
-    """Turning every bank by δ only changes phases (see test_invariants for the law)."""
+    """Turning every bank by δ only changes phases (see test_turning_the_banks_turns_each_order for the law)."""
     turned = dataclasses.replace(engine, bank_angles_rad=tuple(b + delta for b in engine.bank_angles_rad))
     tol = 1e-10 * scale(engine)
     for a, b in zip(orders(engine), orders(turned)):

@@ -116,7 +116,7 @@ def test_a_tiny_fluctuation_is_resolved_by_the_library(load):
 
 
 def test_a_target_just_above_one_half_gives_the_least_steadiness():
-    """Rough edge: --target 0.50000001 was 'below the least steadiness (about 0 …)': the
+    """Guards against --target 0.50000001 being 'below the least steadiness (about 0 …)': the
     value at the very edge where the engine stops. The least is the steadiness just above
     that edge, and asking for a little more than it must then succeed."""
     import re

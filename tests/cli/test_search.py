@@ -123,7 +123,7 @@ def test_a_long_template_name_leaves_room_for_the_rank(tmp_path):
 
 @pytest.mark.parametrize("objective", ["M1:1e300", "M1:1e308,M2:1e308", "M1:1e-300"])
 def test_search_weights_beyond_their_range_are_refused_with_it(tmp_path, objective):
-    """Item 2: these weights ended in an OverflowError traceback."""
+    """Guards against these weights ending in an OverflowError traceback."""
     template = tmp_path / "t.toml"
     shutil.copy(TEMPLATES / "inline-6-2stroke.toml", template)
     before = snapshot(tmp_path)
@@ -141,7 +141,8 @@ def test_huge_weights_print_a_readable_score(tmp_path):
 
 
 def test_a_top_beyond_what_can_be_held_is_refused(tmp_path):
-    """Item 4: --top 100000 on an in-line 10 reached 100 % and then grew past 7 GB."""
+    """Guards against --top 100000 on an in-line 10 reaching 100 % and then growing past
+    7 GB."""
     template = tmp_path / "i10.toml"
     template.write_text(inline_template_text(10), encoding="utf-8")
     before = snapshot(tmp_path)
@@ -160,8 +161,8 @@ def test_heuristic_with_a_scheduler_names_the_flags():
 
 
 def test_ctrl_c_in_a_multi_process_search_prints_no_worker_traceback(tmp_path):
-    """Rough edge: Ctrl-C (SIGINT to the whole process group, as a terminal sends it) printed
-    stray 'Process ForkPoolWorker-N:' tracebacks. Now one 'Aborted!' from the command."""
+    """Guards against Ctrl-C (SIGINT to the whole process group, as a terminal sends it)
+    printing stray 'Process ForkPoolWorker-N:' tracebacks. Now one 'Aborted!' from the command."""
     import signal
     import subprocess
     import sys

@@ -174,7 +174,7 @@ def test_a_target_that_needs_no_flywheel_says_so():
 
 @pytest.mark.parametrize("inertia, speed", [("1e6 kg*m^2", "1e5 rpm"), ("1e9 kg*m^2", "1e6 rpm")])
 def test_a_steadiness_beyond_rounding_is_finite_and_ordered(tmp_path, inertia, speed):
-    """Item 1: a torque varying by 1e-6 of its mean with a huge flywheel wrote
+    """Guards against a torque varying by 1e-6 of its mean with a huge flywheel writing
     "steadiness": Infinity, and a mean speed outside min..max. Margoulis's r_c =
     ω²·N·I/(2ΔC) is exact to second order in a fluctuation this small (one harmonic,
     constant load), so the integrated steadiness must equal it, ΔC = 2A of the sine; the

@@ -192,7 +192,7 @@ def test_linkage_that_cannot_be_assembled_names_the_cylinder(tmp_path):
 
 
 def test_firing_order_that_does_not_fit_the_crank(tmp_path):
-    """In-line 4 on a flat crank with 1-4-2-3: see test_firing."""
+    """In-line 4 on a flat crank with 1-4-2-3: see tests/analysis/test_firing.py."""
     text = TWIN.replace('[1, 2]', '[1, 4, 2, 3]').replace(
         'phase = 180\n    z = "90 mm"', 'phase = 180\nz = "90 mm"')
     text = text.replace('[[throws]]\nphase = 180\nz = "90 mm"\n',
@@ -257,7 +257,7 @@ def test_a_knuckle_beyond_the_master_rod_is_refused(tmp_path):
 
 
 def test_a_configuration_with_a_byte_order_mark_is_read(tmp_path):
-    """Rough edge: a UTF-8 byte-order mark was refused as "Invalid statement (line 1,
+    """Guards against a UTF-8 byte-order mark refused as "Invalid statement (line 1,
     column 1)"; CSV files accepted it. The same engine with and without the mark compares
     alike, from a file and from a string."""
     import balance_cli as balance
@@ -291,7 +291,7 @@ def test_malformed_configurations_end_in_a_clean_error(text):
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError:
-        return  # load() turns this into a ConfigError; covered in test_cli
+        return  # load() turns this into a ConfigError; covered by test_bad_configuration_gets_one_clear_message
     try:
         build(data, "random.toml")
     except ConfigError as exc:

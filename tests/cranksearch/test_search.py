@@ -305,7 +305,7 @@ def test_search_scores_scale_with_the_weights():
 
 
 def test_a_tiny_weight_still_ranks_the_smaller_coefficient_first():
-    """Rough edge: with ties absolute at 1e-9, M1:1e-10 ranked M1 = 5 above M1 = 0. The
+    """Guards against ties absolute at 1e-9, with which M1:1e-10 ranked M1 = 5 above M1 = 0. The
     in-line 6 two-stroke has two cranks free of primary couple (1-5-3-6-2-4 and its mirror
     image, Den Hartog's table), so the first two listed have M1 = 0."""
     import balance_cli as balance
@@ -321,10 +321,10 @@ def test_a_tiny_weight_still_ranks_the_smaller_coefficient_first():
 
 @pytest.mark.parametrize("n", [20, 21, 22, 23])
 def test_a_template_too_large_is_refused_at_once_with_its_count(tmp_path, n):
-    """Item 3: an in-line 20 to 22 took 38 to 253 s (1.7 GB) to count before the refusal, and
-    an in-line 23 quoted 23^22/4 ≈ 2.3e29 cranks. Even firing leaves (n − 1)! cranks
-    (Den Hartog), counted once with their reversal and evaluated once with their mirror:
-    (n − 1)!/4 to evaluate."""
+    """Guards against a slow count: an in-line 20 to 22 took 38 to 253 s (1.7 GB) to count before
+    the refusal, and an in-line 23 quoted 23^22/4 ≈ 2.3e29 cranks. Even firing leaves (n − 1)!
+    cranks (Den Hartog), counted once with their reversal and evaluated once with their mirror: (n
+    − 1)!/4 to evaluate."""
     import time
 
     import balance_cli as balance
@@ -355,7 +355,7 @@ def test_the_closed_form_count_is_the_dynamic_programmes():
 
 
 def test_the_pool_of_best_scores_is_linear_in_its_size():
-    """Item 4's other half: the pool sorted every score at every offer, quadratic in --top.
+    """Guards against a pool that sorted every score at every offer, quadratic in --top.
     Offering 200 000 distinct scores to a pool of 1000 now takes well under a second, and its
     threshold is the 1000th smallest score offered."""
     import time
@@ -378,8 +378,9 @@ def test_the_pool_of_best_scores_is_linear_in_its_size():
 
 @pytest.mark.parametrize("weight", [math.nan, math.inf, -1.0, 0.0, "1", True])
 def test_search_terms_with_a_weight_that_is_no_bound_are_refused(weight):
-    """Items 6 and 7: NaN or inf returned nothing and claimed exhaustive; a negative weight
-    returned 7.0 where √52 exists (the bound assumes positive weights)."""
+    """Guards against weights that are no bound: NaN or inf returned nothing and claimed
+    exhaustive; a negative weight returned 7.0 where √52 exists (the bound assumes positive
+    weights)."""
     import balance_cli as balance
     from balance_cli.cranksearch import Term
     from balance_cli.errors import AnalysisError
@@ -392,7 +393,7 @@ def test_search_terms_with_a_weight_that_is_no_bound_are_refused(weight):
 
 
 def test_workers_are_capped_at_what_helps_and_reported_as_run():
-    """Rough edge: --workers 1000 reported 1000 workers while about 460 processes ran, and
+    """Guards against --workers 1000 reporting 1000 workers while about 460 processes ran, and
     took 4.5 s instead of 1 s."""
     import balance_cli as balance
     from balance_cli.cranksearch import search
@@ -406,8 +407,8 @@ def test_workers_are_capped_at_what_helps_and_reported_as_run():
 
 
 def test_progress_covers_the_listed_arrangements_analyses():
-    """Item 4's silence: progress reached 100 % before the listed arrangements were analysed
-    (minutes with a large --top). Now the analyses are counted, and progress ends at its
+    """Guards against a silent wait: progress reached 100 % before the listed arrangements were
+    analysed (minutes with a large --top). Now the analyses are counted, and progress ends at its
     total only when the result is ready."""
     import balance_cli as balance
 

@@ -1,4 +1,4 @@
-"""Issue 18, item 5: the marine family in the library (configs/man-s80mc-c7-*cyl.toml and
+"""The marine family in the library (configs/man-s80mc-c7-*cyl.toml and
 templates/marine-family-2stroke.toml) against the MAN B&W S80MC-C7/ME-C7 project guide.
 
 Published: Table 17.04.01 of the guide's section 17.04 (3 880 kW a cylinder at 76 r/min; PRU of

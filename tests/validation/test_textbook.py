@@ -34,7 +34,7 @@ from tests.support import ROOT, TODAY
 FAMILIES = ("inline", "v", "boxer", "w")
 FILES = sorted(p.relative_to(TODAY).as_posix() for f in FAMILIES for p in (TODAY / f).glob("*.toml"))
 #: every file of the library; those of one crankshaft without offsets are FILES, which the
-#: classic per-cylinder series checks too (the others: tests/test_crankshafts.py)
+#: classic per-cylinder series checks too (the others: tests/analysis/test_crankshafts.py)
 ALL_FILES = sorted(p.relative_to(TODAY).as_posix() for p in TODAY.rglob("*.toml"))
 #: relative size of rounding noise in an exact cancellation (sums of 2-16 phasors of size 1,
 #: FFT of 256 samples): far below any figure a textbook gives
@@ -119,7 +119,7 @@ V10_S1 = math.sqrt(12.5 + 5.5 * math.sqrt(5))
 V10_S2 = math.sqrt(12.5 - 5.5 * math.sqrt(5))
 
 
-def test_library_holds_the_engines_the_issue_asks_for():
+def test_library_holds_todays_engines_in_their_families():
     assert len(FILES) == 24
     assert {f.split("/")[0] for f in FILES} == set(FAMILIES)
     assert len(ALL_FILES) == 28
@@ -530,7 +530,7 @@ def test_library_table_figures_match_the_hand_derivations():
 
 @pytest.mark.parametrize("name", ALL_FILES)
 def test_each_file_names_its_engine_marks_estimates_and_states_its_balance(name):
-    """The issue asks for a source key, the real engine in a comment block, estimates said to
+    """Each file gives a source key, the real engine in a comment block, estimates said to
     be estimates, and the textbook (or, for the W16, a derived) statement of the balance."""
     engine = engine_of(name)
     assert engine.source
