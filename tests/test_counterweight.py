@@ -12,7 +12,8 @@ from numpy.testing import assert_allclose
 
 from balance_cli import load
 from balance_cli.cli import main
-from balance_cli.analysis.counterweight import Plane, plane_at_throw
+from balance_cli.analysis.balancing import Plane
+from balance_cli.analysis.planes import plane_at_throw
 from balance_cli.analysis.counterweight import counterweights as balance
 from balance_cli.errors import CounterweightError
 from conftest import CONFIGS, exact_b, make_engine
