@@ -6,8 +6,10 @@ BIN    := $(VENV)/bin
 # what running needs (demo), and that with the test tools (test, bench, ...)
 RUN    := $(VENV)/.installed-run
 STAMP  := $(VENV)/.installed-test
+# the linters (lint)
+LINT   := $(VENV)/.installed-lint
 
-.PHONY: setup demo test bench validate regress-update install-check clean
+.PHONY: setup demo test lint bench validate regress-update install-check clean
 
 $(VENV)/bin/python:
 	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 11))' || \
@@ -29,6 +31,11 @@ $(STAMP): pyproject.toml setup.py | $(VENV)/bin/python
 	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[test]'
 	@touch $(RUN) $(STAMP)
 
+$(LINT): pyproject.toml setup.py | $(VENV)/bin/python
+	@$(OLD_NAME)
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[lint]'
+	@touch $(RUN) $(LINT)
+
 setup: $(STAMP)
 
 demo: $(RUN)
@@ -38,6 +45,14 @@ demo: $(RUN)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest
+
+# ruff (rules B, E, F, I, NPY, UP, W and the format), mypy on the package, and the import
+# contracts: the layers of the package and no cycles (pyproject.toml)
+lint: $(LINT)
+	$(BIN)/ruff check balance_cli tests tools
+	$(BIN)/ruff format --check balance_cli tests tools
+	$(BIN)/mypy
+	$(BIN)/lint-imports
 
 bench: $(STAMP)
 	$(BIN)/python tools/bench.py

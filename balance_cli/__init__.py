@@ -23,8 +23,17 @@ The names below load on first use where they need what most commands do not (mat
 import importlib
 
 from .about import __version__
-from .analysis.balancing import (Antivibrateur, Balance, Balances, BalancerShaft, Counterweight,
-                                 Plane, RollingMoment, Shaft, ShaftMass)
+from .analysis.balancing import (
+    Antivibrateur,
+    Balance,
+    BalancerShaft,
+    Balances,
+    Counterweight,
+    Plane,
+    RollingMoment,
+    Shaft,
+    ShaftMass,
+)
 from .analysis.counterweight import counterweights
 from .analysis.cylinders import CylinderTorque, CylinderTorques, cylinder_torques
 from .analysis.firing import Firing
@@ -37,13 +46,44 @@ from .analysis.series import ReducedMass, Series
 from .analysis.shaking import OrderComponents, Shaking
 from .analysis.steadiness import Steadiness, flywheel_for, steadiness
 from .analysis.torque import CrankshaftTorque, TorqueResult, TorqueSet, torque
-from .config import (Configuration, find_configs, load, load_many, load_template, loads,
-                     read_configuration)
-from .errors import (AnalysisError, BalanceError, ConfigError, CounterweightError, FiringError,
-                     ModelError, OrderError, OutputError, PlotError, RegressError,
-                     SamplingWarning, SweepError, TorsionUnavailable, UnitError)
-from .model import (BalancerMass, BalancerShaftSpec, Crankshaft, CounterweightMass, Cylinder,
-                    Engine, GasCycle, Parts, ShaftDisk, Throw, TorsionModel)
+from .config import (
+    Configuration,
+    find_configs,
+    load,
+    load_many,
+    load_template,
+    loads,
+    read_configuration,
+)
+from .errors import (
+    AnalysisError,
+    BalanceError,
+    ConfigError,
+    CounterweightError,
+    FiringError,
+    ModelError,
+    OrderError,
+    OutputError,
+    PlotError,
+    RegressError,
+    SamplingWarning,
+    SweepError,
+    TorsionUnavailable,
+    UnitError,
+)
+from .model import (
+    BalancerMass,
+    BalancerShaftSpec,
+    CounterweightMass,
+    Crankshaft,
+    Cylinder,
+    Engine,
+    GasCycle,
+    Parts,
+    ShaftDisk,
+    Throw,
+    TorsionModel,
+)
 from .studies.regress import Moved, Regression, regression
 
 #: public names loaded on first use: name -> (module, attribute; None for the module itself)
@@ -62,33 +102,105 @@ _LAZY = {
 }
 
 #: the subpackages, reachable as attributes whether or not something has imported them yet
-_PACKAGES = ("about", "analysis", "checks", "cli", "config", "cranksearch", "errors",
-             "harmonics", "kinematics", "model", "output", "report", "studies", "tolerances",
-             "torsion", "units")
+_PACKAGES = (
+    "about",
+    "analysis",
+    "checks",
+    "cli",
+    "config",
+    "cranksearch",
+    "errors",
+    "harmonics",
+    "kinematics",
+    "model",
+    "output",
+    "report",
+    "studies",
+    "tolerances",
+    "torsion",
+    "units",
+)
 
 __all__ = [
     # the engine and where it comes from
-    "load", "loads", "load_many", "load_template", "find_configs", "Configuration",
+    "load",
+    "loads",
+    "load_many",
+    "load_template",
+    "find_configs",
+    "Configuration",
     "read_configuration",
-    "Engine", "Cylinder", "Throw", "Crankshaft", "Parts", "GasCycle", "CounterweightMass",
-    "BalancerMass", "BalancerShaftSpec", "TorsionModel", "ShaftDisk",
+    "Engine",
+    "Cylinder",
+    "Throw",
+    "Crankshaft",
+    "Parts",
+    "GasCycle",
+    "CounterweightMass",
+    "BalancerMass",
+    "BalancerShaftSpec",
+    "TorsionModel",
+    "ShaftDisk",
     # shaking forces and moments, firing, comparison
-    "analyse", "compare", "EngineResult", "Comparison", "Shaking", "OrderComponents", "Firing",
-    "power_related_unbalance", "PowerRelatedUnbalance",
+    "analyse",
+    "compare",
+    "EngineResult",
+    "Comparison",
+    "Shaking",
+    "OrderComponents",
+    "Firing",
+    "power_related_unbalance",
+    "PowerRelatedUnbalance",
     # counterweights and balancer shafts
-    "counterweights", "Balance", "Balances", "Counterweight", "Plane", "Shaft", "ShaftMass",
-    "BalancerShaft", "RollingMoment", "Antivibrateur",
+    "counterweights",
+    "Balance",
+    "Balances",
+    "Counterweight",
+    "Plane",
+    "Shaft",
+    "ShaftMass",
+    "BalancerShaft",
+    "RollingMoment",
+    "Antivibrateur",
     # torques, steadiness, gas pressure
-    "torque", "TorqueResult", "TorqueSet", "Series", "ReducedMass", "PinForce",
-    "CrankshaftTorque", "GuideForces", "cylinder_torques", "CylinderTorque", "CylinderTorques",
-    "steadiness", "flywheel_for", "Steadiness", "read_pressure_csv", "read_cycle_csv",
-    "PressureCurve", "CycleCurve",
+    "torque",
+    "TorqueResult",
+    "TorqueSet",
+    "Series",
+    "ReducedMass",
+    "PinForce",
+    "CrankshaftTorque",
+    "GuideForces",
+    "cylinder_torques",
+    "CylinderTorque",
+    "CylinderTorques",
+    "steadiness",
+    "flywheel_for",
+    "Steadiness",
+    "read_pressure_csv",
+    "read_cycle_csv",
+    "PressureCurve",
+    "CycleCurve",
     # studies, search, torsion, pictures (loaded on first use)
-    "regression", "Regression", "Moved", *_LAZY,
+    "regression",
+    "Regression",
+    "Moved",
+    *_LAZY,
     # errors and warnings
-    "BalanceError", "ConfigError", "ModelError", "FiringError", "AnalysisError",
-    "CounterweightError", "PlotError", "OutputError", "UnitError", "RegressError", "OrderError",
-    "SweepError", "TorsionUnavailable", "SamplingWarning",
+    "BalanceError",
+    "ConfigError",
+    "ModelError",
+    "FiringError",
+    "AnalysisError",
+    "CounterweightError",
+    "PlotError",
+    "OutputError",
+    "UnitError",
+    "RegressError",
+    "OrderError",
+    "SweepError",
+    "TorsionUnavailable",
+    "SamplingWarning",
     "__version__",
 ]
 

@@ -26,7 +26,7 @@ def is_real(value) -> bool:
 def positive(value, name, dimension=None, error=AnalysisError) -> float:
     """``value`` as a float: a real number greater than zero, finite, and within the range
     balance accepts for ``dimension`` (a key of :data:`balance_cli.units.LIMITS`)."""
-    if not is_real(value) or not value > 0:   # NaN fails "> 0" too
+    if not is_real(value) or not value > 0:  # NaN fails "> 0" too
         raise error(f"must be a number greater than zero, got {value!r}", name)
     value = float(value)
     if dimension is not None:
@@ -41,8 +41,11 @@ def positive(value, name, dimension=None, error=AnalysisError) -> float:
 
 def whole(value, name, low, high, error=AnalysisError) -> int:
     """``value`` as an int: a whole number (numpy's too, not a bool) from ``low`` to ``high``."""
-    if not isinstance(value, (int, np.integer)) or isinstance(value, (bool, np.bool_)) \
-            or not low <= value <= high:
+    if (
+        not isinstance(value, (int, np.integer))
+        or isinstance(value, (bool, np.bool_))
+        or not low <= value <= high
+    ):
         raise error(f"must be a whole number from {low:,} to {high:,}, got {value!r}", name)
     return int(value)
 
@@ -55,8 +58,9 @@ def curve(values, name, error=AnalysisError) -> np.ndarray:
             raise ValueError
         array = array.astype(float)
     except (TypeError, ValueError):
-        raise error(f"must be a one-dimensional array of real numbers, got "
-                    f"{type(values).__name__}", name) from None
+        raise error(
+            f"must be a one-dimensional array of real numbers, got {type(values).__name__}", name
+        ) from None
     if not np.all(np.isfinite(array)):
         raise error("must hold finite numbers only (it has NaN or inf)", name)
     return array
@@ -66,8 +70,11 @@ def instance(value, kind, name, error=AnalysisError, hint=""):
     """``value`` unchanged if it is a ``kind``."""
     if not isinstance(value, kind):
         names = " or ".join(k.__name__ for k in (kind if isinstance(kind, tuple) else (kind,)))
-        raise error(f"must be {'an' if names[0] in 'AEIOU' else 'a'} {names}{hint}, got "
-                    f"{type(value).__name__}", name)
+        raise error(
+            f"must be {'an' if names[0] in 'AEIOU' else 'a'} {names}{hint}, got "
+            f"{type(value).__name__}",
+            name,
+        )
     return value
 
 
@@ -77,8 +84,9 @@ def path(value, name="path"):
 
     if isinstance(value, (str, os.PathLike)) and str(os.fspath(value)).strip():
         return value
-    error = ConfigError(f"<{name}>", "", f"{name} must be a file path (a str or os.PathLike), "
-                                         f"got {value!r}")
+    error = ConfigError(
+        f"<{name}>", "", f"{name} must be a file path (a str or os.PathLike), got {value!r}"
+    )
     error.parameter = name
     raise error
 

@@ -8,9 +8,20 @@ zero`` without parsing the message.
 """
 
 __all__ = [
-    "BalanceError", "UnitError", "ConfigError", "ModelError", "FiringError", "AnalysisError",
-    "CounterweightError", "PlotError", "OutputError", "SamplingWarning", "OrderError",
-    "SweepError", "RegressError", "TorsionUnavailable",
+    "BalanceError",
+    "UnitError",
+    "ConfigError",
+    "ModelError",
+    "FiringError",
+    "AnalysisError",
+    "CounterweightError",
+    "PlotError",
+    "OutputError",
+    "SamplingWarning",
+    "OrderError",
+    "SweepError",
+    "RegressError",
+    "TorsionUnavailable",
 ]
 
 
@@ -80,7 +91,7 @@ class OrderError(AnalysisError, KeyError):
     before it became a BalanceError."""
 
     def __str__(self):
-        return self.args[0]   # a KeyError's own str() would quote the message
+        return self.args[0]  # a KeyError's own str() would quote the message
 
 
 class CounterweightError(BalanceError, ValueError):
@@ -111,7 +122,6 @@ class SweepError(BalanceError, ValueError):
     def __init__(self, problem, parameter=None, key=None, value=None, cause=None):
         self.key, self.value, self.cause = key, value, cause
         super().__init__(problem, parameter)
-
 
 
 class RegressError(BalanceError, ValueError):

@@ -15,8 +15,17 @@ import numpy as np
 from .errors import SamplingWarning
 from .tolerances import ALIASING_TOLERANCE
 
-__all__ = ["fourier", "orders_of", "forward_backward", "check_sampling", "synthesize",
-           "periodic_derivative", "accelerations", "shifted", "resampled"]
+__all__ = [
+    "fourier",
+    "orders_of",
+    "forward_backward",
+    "check_sampling",
+    "synthesize",
+    "periodic_derivative",
+    "accelerations",
+    "shifted",
+    "resampled",
+]
 
 
 def fourier(signal):
@@ -67,7 +76,8 @@ def check_sampling(position_coefficients, max_order, label=""):
         warning = SamplingWarning(
             f"{label}{n} samples a revolution are too few for orders up to {max_order}: the "
             f"orders from {band} still carry {excess:.1e} of the largest inertia force; "
-            "use more samples")
+            "use more samples"
+        )
         warning.samples, warning.excess = n, excess
         warnings.warn(warning, stacklevel=3)
         return False
@@ -99,7 +109,7 @@ def periodic_derivative(values, period=2 * math.pi):
     n = values.shape[-1]
     k = orders_of(n) * (2 * math.pi / period)
     if n % 2 == 0:
-        k[n // 2] = 0.0   # the Nyquist term has no sign; its derivative is dropped
+        k[n // 2] = 0.0  # the Nyquist term has no sign; its derivative is dropped
     return np.fft.ifft(np.fft.fft(values, axis=-1) * 1j * k, axis=-1)
 
 

@@ -17,8 +17,17 @@ from pathlib import Path
 
 from .errors import OutputError
 
-__all__ = ["write_text", "write_bytes", "write_folder", "ensure_folder", "check_folder",
-           "refuse_inputs", "to_json", "DOCUMENT_VERSION", "READABLE_VERSIONS"]
+__all__ = [
+    "write_text",
+    "write_bytes",
+    "write_folder",
+    "ensure_folder",
+    "check_folder",
+    "refuse_inputs",
+    "to_json",
+    "DOCUMENT_VERSION",
+    "READABLE_VERSIONS",
+]
 
 #: version of the JSON documents balance writes. 2 added the vertical and horizontal
 #: components, the free moments' summary and an axis of None for circles; balance regress
@@ -61,8 +70,9 @@ def _encode(value, margin, top=False):
         if not top and _shallow(value.values()):
             return _ONE_LINE(value)
         inner = margin + "  "
-        body = ",\n".join(f"{inner}{_ONE_LINE(str(k))}: {_encode(v, inner)}"
-                          for k, v in value.items())
+        body = ",\n".join(
+            f"{inner}{_ONE_LINE(str(k))}: {_encode(v, inner)}" for k, v in value.items()
+        )
         return "{\n" + body + "\n" + margin + "}" if body else "{}"
     if kind is list or kind is tuple:
         if _NESTED.isdisjoint(map(type, value)):
@@ -123,8 +133,10 @@ def _destination(target):
         except FileNotFoundError:
             real = Path(os.path.realpath(path))
             if not real.parent.is_dir():
-                raise OutputError(f"{shown!r} is a link to {str(real)!r}, whose folder does not "
-                                  "exist; create it or write elsewhere") from None
+                raise OutputError(
+                    f"{shown!r} is a link to {str(real)!r}, whose folder does not "
+                    "exist; create it or write elsewhere"
+                ) from None
         except OSError as exc:
             raise OutputError(f"cannot write {shown!r}: {_reason(exc)}") from None
     else:
@@ -132,8 +144,9 @@ def _destination(target):
     if real.is_file() and (not os.access(real, os.W_OK) or not real.stat().st_mode & 0o222):
         # renaming over it would replace a file its owner made read-only (root's access() says
         # yes to every file: the mode bits say what its owner meant)
-        raise OutputError(f"cannot write {shown!r}: the file is read-only; make it writable or "
-                          "write elsewhere")
+        raise OutputError(
+            f"cannot write {shown!r}: the file is read-only; make it writable or write elsewhere"
+        )
     return real
 
 
@@ -147,7 +160,7 @@ def write_bytes(target, write):
         real = None if special else _destination(target)
     except OutputError:
         raise
-    except OSError as exc:   # a name too long, say
+    except OSError as exc:  # a name too long, say
         raise OutputError(f"cannot write {shown!r}: {_reason(exc)}") from None
     if special:
         try:
@@ -191,7 +204,7 @@ def check_folder(target, what="the report"):
     try:
         if os.path.lexists(target) and not Path(target).is_dir():
             if Path(target).is_symlink() and not Path(target).exists():
-                os.stat(target)   # says why the link leads nowhere (a loop, say)
+                os.stat(target)  # says why the link leads nowhere (a loop, say)
             raise OutputError(f"{shown!r} is not a folder; give a folder for {what}")
     except OSError as exc:
         raise OutputError(f"cannot write into {shown!r}: {_reason(exc)}") from None
@@ -239,8 +252,10 @@ def write_folder(target, fill):
             for name in names:
                 destination = real / name
                 if destination.is_dir() or _special(destination):
-                    raise OutputError(f"cannot write {str(target / name)!r}: it is not a regular "
-                                      "file; move it away")
+                    raise OutputError(
+                        f"cannot write {str(target / name)!r}: it is not a regular "
+                        "file; move it away"
+                    )
             for name in names:
                 os.replace(temporary / name, os.path.realpath(real / name))
             temporary.rmdir()
@@ -267,5 +282,7 @@ def refuse_inputs(outputs, inputs):
             continue
         for source in inputs:
             if _same(output, source):
-                raise OutputError(f"{str(output)!r} is an input file ({str(source)!r}); write the "
-                                  "output somewhere else")
+                raise OutputError(
+                    f"{str(output)!r} is an input file ({str(source)!r}); write the "
+                    "output somewhere else"
+                )

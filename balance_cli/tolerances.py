@@ -3,9 +3,20 @@
 Imports nothing: the ground floor of the package.
 """
 
-__all__ = ["NOISE_FLOOR", "ALIASING_TOLERANCE", "ANGLE_TOLERANCE_DEG", "TDC_PRECISION_DEG",
-           "UNIFORM_FIRING_DEG", "SAME_POSITION_M", "SAME_DIRECTION_RAD", "PHASE_FLOOR", "PHASE_CHANGE_DEG",
-           "FIRING_CHANGE_DEG", "SPECTRUM_FLOOR", "minimum_samples"]
+__all__ = [
+    "NOISE_FLOOR",
+    "ALIASING_TOLERANCE",
+    "ANGLE_TOLERANCE_DEG",
+    "TDC_PRECISION_DEG",
+    "UNIFORM_FIRING_DEG",
+    "SAME_POSITION_M",
+    "SAME_DIRECTION_RAD",
+    "PHASE_FLOOR",
+    "PHASE_CHANGE_DEG",
+    "FIRING_CHANGE_DEG",
+    "SPECTRUM_FLOOR",
+    "minimum_samples",
+]
 
 #: A force below this fraction of m_rec·r·ω²·n (N), or a moment below it times one metre
 #: (N·m), is rounding noise and is reported as an exact zero. The FFT of exact positions is

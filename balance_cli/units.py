@@ -14,10 +14,25 @@ from .errors import UnitError
 from .tolerances import ANGLE_TOLERANCE_DEG
 
 __all__ = [
-    "DIMENSIONS", "LIMITS", "STANDARD_GRAVITY", "parse_quantity", "check_finite_range",
-    "rad_s_to_rpm", "m_to_mm", "kg_to_g", "n_to_kgf", "wrap_degrees", "round_degrees",
-    "phasor_deg", "angle_change", "UNIT_SYSTEMS", "unit_system", "significant", "Scale",
-    "shown_unit", "shown_value",
+    "DIMENSIONS",
+    "LIMITS",
+    "STANDARD_GRAVITY",
+    "parse_quantity",
+    "check_finite_range",
+    "rad_s_to_rpm",
+    "m_to_mm",
+    "kg_to_g",
+    "n_to_kgf",
+    "wrap_degrees",
+    "round_degrees",
+    "phasor_deg",
+    "angle_change",
+    "UNIT_SYSTEMS",
+    "unit_system",
+    "significant",
+    "Scale",
+    "shown_unit",
+    "shown_value",
 ]
 
 #: m/s², the conventional value used to turn kilogram-force into newtons
@@ -34,20 +49,52 @@ DIMENSIONS = {
     "mass": {"kg": 1.0, "g": 1e-3, "lb": 0.45359237},
     "angular speed": {"rpm": _RPM, "rev/min": _RPM, "rad/s": 1.0, "rps": 2.0 * math.pi},
     # kgf·cm·s² is the "kg cm sec²" of the older papers (Fraeys de Veubeke's J, j)
-    "moment of inertia": {"kg*m^2": 1.0, "kg*cm^2": 1e-4, "g*cm^2": 1e-7, "kg*mm^2": 1e-6,
-                          "lb*in^2": 0.45359237 * 0.0254**2,
-                          "kgf*cm*s^2": STANDARD_GRAVITY * 1e-2},
-    "pressure": {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "bar": _BAR, "mbar": 1e2, "psi": 6894.757293168,
-                 "atm": 101325.0, "kgf/cm^2": _KGF_CM2, "at": _KGF_CM2},
-    "torque": {"N*m": 1.0, "Nm": 1.0, "kN*m": 1e3, "kgf*m": STANDARD_GRAVITY,
-               "lbf*ft": 1.3558179483314004},
+    "moment of inertia": {
+        "kg*m^2": 1.0,
+        "kg*cm^2": 1e-4,
+        "g*cm^2": 1e-7,
+        "kg*mm^2": 1e-6,
+        "lb*in^2": 0.45359237 * 0.0254**2,
+        "kgf*cm*s^2": STANDARD_GRAVITY * 1e-2,
+    },
+    "pressure": {
+        "Pa": 1.0,
+        "kPa": 1e3,
+        "MPa": 1e6,
+        "bar": _BAR,
+        "mbar": 1e2,
+        "psi": 6894.757293168,
+        "atm": 101325.0,
+        "kgf/cm^2": _KGF_CM2,
+        "at": _KGF_CM2,
+    },
+    "torque": {
+        "N*m": 1.0,
+        "Nm": 1.0,
+        "kN*m": 1e3,
+        "kgf*m": STANDARD_GRAVITY,
+        "lbf*ft": 1.3558179483314004,
+    },
     # hp is the mechanical horsepower (550 ft·lbf/s), PS the metric one (75 kgf·m/s)
-    "power": {"W": 1.0, "kW": 1e3, "MW": 1e6, "hp": 550 * 0.3048 * 0.45359237 * STANDARD_GRAVITY,
-              "PS": 75 * STANDARD_GRAVITY},
+    "power": {
+        "W": 1.0,
+        "kW": 1e3,
+        "MW": 1e6,
+        "hp": 550 * 0.3048 * 0.45359237 * STANDARD_GRAVITY,
+        "PS": 75 * STANDARD_GRAVITY,
+    },
     # a mass times its radius (a counterweight's or balancer mass's m·ρ), as balancing
     # machines and drawings give it
-    "unbalance": {"kg*m": 1.0, "kg*cm": 1e-2, "kg*mm": 1e-3, "g*m": 1e-3, "g*cm": 1e-5,
-                  "g*mm": 1e-6, "lb*in": 0.45359237 * 0.0254, "oz*in": 0.45359237 / 16 * 0.0254},
+    "unbalance": {
+        "kg*m": 1.0,
+        "kg*cm": 1e-2,
+        "kg*mm": 1e-3,
+        "g*m": 1e-3,
+        "g*cm": 1e-5,
+        "g*mm": 1e-6,
+        "lb*in": 0.45359237 * 0.0254,
+        "oz*in": 0.45359237 / 16 * 0.0254,
+    },
     # a crankshaft section's twist stiffness and a damper's or a throw's viscous damping
     "torsional stiffness": {"N*m/rad": 1.0, "kN*m/rad": 1e3, "MN*m/rad": 1e6},
     "torsional damping": {"N*m*s/rad": 1.0, "kN*m*s/rad": 1e3},
@@ -82,12 +129,21 @@ LIMITS = {
 }
 
 # ASCII digits only; any unit word, so that an unknown one is reported as a unit
-_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\s\d.+-].*?)\s*$",
-                       re.ASCII)
-_EXAMPLES = {"length": "82.5 mm", "mass": "1770.4 g", "angular speed": "1650 rpm",
-             "moment of inertia": "0.12 kg*m^2", "pressure": "45 bar", "torque": "850 N*m", "power": "21 MW",
-             "unbalance": "0.072 kg*m",
-             "torsional stiffness": "1.25e6 N*m/rad", "torsional damping": "2 N*m*s/rad"}
+_QUANTITY = re.compile(
+    r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\s\d.+-].*?)\s*$", re.ASCII
+)
+_EXAMPLES = {
+    "length": "82.5 mm",
+    "mass": "1770.4 g",
+    "angular speed": "1650 rpm",
+    "moment of inertia": "0.12 kg*m^2",
+    "pressure": "45 bar",
+    "torque": "850 N*m",
+    "power": "21 MW",
+    "unbalance": "0.072 kg*m",
+    "torsional stiffness": "1.25e6 N*m/rad",
+    "torsional damping": "2 N*m*s/rad",
+}
 
 
 def _units_of(dimension):
@@ -128,9 +184,11 @@ def parse_quantity(text, dimension):
     if unit not in factors:
         for other, table in DIMENSIONS.items():
             if unit in table:
-                raise UnitError(f"{text!r} is {_article(other)} {other}, but {_article(dimension)} "
-                                f"{dimension} is needed "
-                                f"(units: {_units_of(dimension)})")
+                raise UnitError(
+                    f"{text!r} is {_article(other)} {other}, but {_article(dimension)} "
+                    f"{dimension} is needed "
+                    f"(units: {_units_of(dimension)})"
+                )
         raise UnitError(f"unknown unit {written!r} in {text!r} (units: {_units_of(dimension)})")
     value = number * factors[unit]
     check_finite_range(value, dimension, shown=repr(text))
@@ -138,8 +196,10 @@ def parse_quantity(text, dimension):
 
 
 #: letters whose case changes a unit's meaning, in words
-_CASE_SENSITIVE = {"m": "small m is milli (or metre), capital M mega",
-                   "p": "small p is pico, capital P peta (or pascal)"}
+_CASE_SENSITIVE = {
+    "m": "small m is milli (or metre), capital M mega",
+    "p": "small p is pico, capital P peta (or pascal)",
+}
 
 
 #: what may follow a prefix letter: the base symbols a milli-, mega-, pico- or peta- could
@@ -155,7 +215,7 @@ def _case_clash(written, meant):
     for i, (a, b) in enumerate(zip(written, meant)):
         if a == b or a.lower() not in _CASE_SENSITIVE or (i and written[i - 1] not in "*/"):
             continue
-        rest = re.split(r"[*/^]", written[i + 1:])[0].lower()
+        rest = re.split(r"[*/^]", written[i + 1 :])[0].lower()
         if rest in _PREFIXED:
             return _CASE_SENSITIVE[a.lower()]
     return None
@@ -170,8 +230,10 @@ def _any_case(unit, factors, text):
         return unit
     clash = _case_clash(unit, matches[0])
     if clash:
-        raise UnitError(f"{unit!r} in {text!r} could be read two ways ({clash}); write "
-                        f"{matches[0]!r} if that is meant")
+        raise UnitError(
+            f"{unit!r} in {text!r} could be read two ways ({clash}); write "
+            f"{matches[0]!r} if that is meant"
+        )
     return matches[0]
 
 
@@ -184,11 +246,17 @@ def unit_system(name):
         if matches:
             clash = _case_clash(name.strip(), matches[0])
             if clash:
-                raise UnitError(f"{name!r} could be read two ways ({clash}); write "
-                                f"{matches[0]!r} if that is meant", "units")
+                raise UnitError(
+                    f"{name!r} could be read two ways ({clash}); write "
+                    f"{matches[0]!r} if that is meant",
+                    "units",
+                )
             return matches[0]
-    raise UnitError(f"must be one of {', '.join(UNIT_SYSTEMS)} (with moments in "
-                    f"{', '.join(m for _, m, _ in UNIT_SYSTEMS.values())}), got {name!r}", "units")
+    raise UnitError(
+        f"must be one of {', '.join(UNIT_SYSTEMS)} (with moments in "
+        f"{', '.join(m for _, m, _ in UNIT_SYSTEMS.values())}), got {name!r}",
+        "units",
+    )
 
 
 @dataclass(frozen=True)
@@ -285,10 +353,12 @@ def _article(word):
 
 
 def _plural(dimension):
-    return {"moment of inertia": "moments of inertia", "power": "powers",
-            "torsional stiffness": "torsional stiffnesses",
-            "torsional damping": "torsional damping coefficients"}.get(dimension,
-                                                                              dimension + "s")
+    return {
+        "moment of inertia": "moments of inertia",
+        "power": "powers",
+        "torsional stiffness": "torsional stiffnesses",
+        "torsional damping": "torsional damping coefficients",
+    }.get(dimension, dimension + "s")
 
 
 def check_finite_range(value, dimension, shown=None, smallest=True):
@@ -298,10 +368,14 @@ def check_finite_range(value, dimension, shown=None, smallest=True):
     low = low if smallest else 0.0
     shown = shown or f"{value!r}"
     if not math.isfinite(value):
-        raise UnitError(f'{shown} is not a finite number; give a value such as "{_EXAMPLES[dimension]}"')
+        raise UnitError(
+            f'{shown} is not a finite number; give a value such as "{_EXAMPLES[dimension]}"'
+        )
     if value and not low <= abs(value) <= high:
-        raise UnitError(f"{shown} is outside the {_plural(dimension)} balance accepts: "
-                        f"{low / factor:g} to {high / factor:g} {unit}")
+        raise UnitError(
+            f"{shown} is outside the {_plural(dimension)} balance accepts: "
+            f"{low / factor:g} to {high / factor:g} {unit}"
+        )
 
 
 def rad_s_to_rpm(speed_rad_s):

@@ -46,15 +46,30 @@ BALANCE = str(Path(sys.executable).parent / "balance")
 
 def benchmarks(folder):
     return [
-        ("balance compare configs --format json", [BALANCE, "compare", "configs", "--format", "json"],
-         'python -c "import numpy, click, tabulate"',
-         [sys.executable, "-c", "import numpy, click, tabulate"], 1.5 / 21, 15),
-        ("balance torque configs --format json", [BALANCE, "torque", "configs", "--format", "json"],
-         'python -c "import numpy, click, tabulate"',
-         [sys.executable, "-c", "import numpy, click, tabulate"], 1.5 / 21, 15),
-        ("balance report configs --html", [BALANCE, "report", "configs", "--html", "-o", folder],
-         'python -c "import numpy, click, tabulate, matplotlib.pyplot"',
-         [sys.executable, "-c", "import numpy, click, tabulate, matplotlib.pyplot"], 3.0 / 21, 5),
+        (
+            "balance compare configs --format json",
+            [BALANCE, "compare", "configs", "--format", "json"],
+            'python -c "import numpy, click, tabulate"',
+            [sys.executable, "-c", "import numpy, click, tabulate"],
+            1.5 / 21,
+            15,
+        ),
+        (
+            "balance torque configs --format json",
+            [BALANCE, "torque", "configs", "--format", "json"],
+            'python -c "import numpy, click, tabulate"',
+            [sys.executable, "-c", "import numpy, click, tabulate"],
+            1.5 / 21,
+            15,
+        ),
+        (
+            "balance report configs --html",
+            [BALANCE, "report", "configs", "--html", "-o", folder],
+            'python -c "import numpy, click, tabulate, matplotlib.pyplot"',
+            [sys.executable, "-c", "import numpy, click, tabulate, matplotlib.pyplot"],
+            3.0 / 21,
+            5,
+        ),
     ]
 
 
@@ -115,21 +130,34 @@ def median_run(command, runs=3):
 
 
 def search_bench():
-    command = [BALANCE, "search", "templates/inline-12-2stroke.toml", "--objective",
-               "M1,M2,M3,M4", "--format", "json"]
+    command = [
+        BALANCE,
+        "search",
+        "templates/inline-12-2stroke.toml",
+        "--objective",
+        "M1,M2,M3,M4",
+        "--format",
+        "json",
+    ]
     timed(command)
     wall, document = median_run(command)
     total = document["arrangements_total"]
     rate = total / wall
     naive = statistics.median(naive_rate() for _ in range(3))
     verdict = "ok" if wall < 5.0 else "TOO SLOW"
-    print(f"{wall * 1000:8.1f} ms  median of 3  balance search templates/inline-12-2stroke.toml "
-          f"--objective M1,M2,M3,M4 ({document['workers']} workers)")
-    print(f"          {total:,} arrangements ({document['arrangements_distinct']:,} distinct), "
-          f"{document['evaluated']:,} evaluated, {document['pruned']:,} skipped by bound: "
-          f"{rate:,.0f} arrangements/s")
-    print(f"          straightforward enumeration (in-line 10, every permutation): "
-          f"{naive:,.0f} arrangements/s, so {total / naive:.0f} s for the in-line 12")
+    print(
+        f"{wall * 1000:8.1f} ms  median of 3  balance search templates/inline-12-2stroke.toml "
+        f"--objective M1,M2,M3,M4 ({document['workers']} workers)"
+    )
+    print(
+        f"          {total:,} arrangements ({document['arrangements_distinct']:,} distinct), "
+        f"{document['evaluated']:,} evaluated, {document['pruned']:,} skipped by bound: "
+        f"{rate:,.0f} arrangements/s"
+    )
+    print(
+        f"          straightforward enumeration (in-line 10, every permutation): "
+        f"{naive:,.0f} arrangements/s, so {total / naive:.0f} s for the in-line 12"
+    )
     print(f"speed-up {rate / naive:.1f}; whole search {wall:.2f} s (target under 5 s): {verdict}\n")
     return wall >= 5.0
 
@@ -137,15 +165,26 @@ def search_bench():
 def family_bench():
     """The marine family table for 5 to 12 cylinders: every row searched exhaustively (target:
     under a minute on two cores)."""
-    command = [BALANCE, "family", "configs/marine-6-2stroke.toml", "--cylinders", "5-12",
-               "--format", "json"]
+    command = [
+        BALANCE,
+        "family",
+        "configs/marine-6-2stroke.toml",
+        "--cylinders",
+        "5-12",
+        "--format",
+        "json",
+    ]
     wall, document = median_run(command)
     methods = {row["method"] for row in document["rows"]}
     verdict = "ok" if wall < 60.0 and methods == {"exhaustive"} else "TOO SLOW"
-    print(f"{wall * 1000:8.1f} ms  median of 3  balance family configs/marine-6-2stroke.toml "
-          f"--cylinders 5-12 ({', '.join(sorted(methods))})")
-    print(f"family table of 8 cylinder numbers in {wall:.2f} s (target under 60 s, every row "
-          f"exhaustive): {verdict}\n")
+    print(
+        f"{wall * 1000:8.1f} ms  median of 3  balance family configs/marine-6-2stroke.toml "
+        f"--cylinders 5-12 ({', '.join(sorted(methods))})"
+    )
+    print(
+        f"family table of 8 cylinder numbers in {wall:.2f} s (target under 60 s, every row "
+        f"exhaustive): {verdict}\n"
+    )
     return verdict != "ok"
 
 
@@ -154,7 +193,9 @@ def torsion_bench():
     try:
         import opentorsion  # noqa: F401
     except ImportError:
-        print("torsion: openTorsion is not installed (pip install 'engine-balance[torsion]'): skipped\n")
+        print(
+            "torsion: openTorsion is not installed (pip install 'engine-balance[torsion]'): skipped\n"
+        )
         return False
     import numpy as np
 
@@ -162,8 +203,10 @@ def torsion_bench():
     from balance_cli.torsion import torsional_vibration as torsion
 
     text = (ROOT / "tests/validation/reference/opentorsion_ice/mendes2008.toml").read_text(encoding="utf-8")
-    engine = balance.loads(text + '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\n'
-                                  'imep = "15 bar"\n', "mendes2008 with [gas]")
+    engine = balance.loads(
+        text + '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\nimep = "15 bar"\n',
+        "mendes2008 with [gas]",
+    )
     speeds = np.linspace(600.0, 2400.0, 100)
     torsion(engine, speeds, 12)
     times = []
@@ -173,8 +216,10 @@ def torsion_bench():
         times.append(time.perf_counter() - start)
     wall = statistics.median(times)
     verdict = "ok" if wall <= 0.5 else "TOO SLOW"
-    print(f"{wall * 1000:8.1f} ms  median of 5  balance.torsion, six throws, 100 speeds, orders "
-          f"1/2 to 12")
+    print(
+        f"{wall * 1000:8.1f} ms  median of 5  balance.torsion, six throws, 100 speeds, orders "
+        f"1/2 to 12"
+    )
     print(f"torsional sweep in {wall:.3f} s (target at most 0.5 s): {verdict}\n")
     return verdict != "ok"
 
@@ -200,8 +245,10 @@ def main():
             verdict = "ok" if each <= target else "TOO SLOW"
             print(f"{a * 1000:8.1f} ms  median of {runs}  {name}")
             print(f"{b * 1000:8.1f} ms  median of {runs}  {base_name}")
-            print(f"ratio {ratio:.2f} for {engines} engines: {each:.3f} of the baseline an engine "
-                  f"({(a - b) / engines * 1000:.1f} ms; target at most {target:.3f}): {verdict}\n")
+            print(
+                f"ratio {ratio:.2f} for {engines} engines: {each:.3f} of the baseline an engine "
+                f"({(a - b) / engines * 1000:.1f} ms; target at most {target:.3f}): {verdict}\n"
+            )
             failed |= each > target
     if os.environ.get("BASE"):
         against(os.environ["BASE"])

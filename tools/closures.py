@@ -20,8 +20,12 @@ ROOT = Path(__file__).resolve().parent.parent
 GAS = '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\nimep = "15 bar"\n'
 CASES = [
     ("Mendes diesel with [gas]", "tests/validation/reference/opentorsion_ice/mendes2008.toml", GAS, "torque"),
-    ("Mendes diesel with [gas]", "tests/validation/reference/opentorsion_ice/mendes2008.toml", GAS,
-     "torsional_vibration"),
+    (
+        "Mendes diesel with [gas]",
+        "tests/validation/reference/opentorsion_ice/mendes2008.toml",
+        GAS,
+        "torsional_vibration",
+    ),
     ("Jumo 205", "configs/today/opposed-piston/junkers-jumo-205.toml", "", "torque"),
 ]
 
@@ -49,8 +53,13 @@ print(count)
 
 def count(path, extra, call):
     """Closings of the linkage by ``balance.<call>(engine)`` in a fresh process."""
-    done = subprocess.run([sys.executable, "-c", PROBE, str(ROOT / path), extra, call],
-                          cwd=ROOT, check=True, capture_output=True, text=True)
+    done = subprocess.run(
+        [sys.executable, "-c", PROBE, str(ROOT / path), extra, call],
+        cwd=ROOT,
+        check=True,
+        capture_output=True,
+        text=True,
+    )
     return int(done.stdout.split()[-1])
 
 

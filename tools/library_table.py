@@ -55,13 +55,19 @@ def _layout(engine):
         kind = "in-line"
     else:
         spread = banks[-1] - banks[0]
-        kind = (f"{len(banks)} banks, {spread:g}° spread" if len(banks) > 2
-                else "opposed banks (180°)" if abs(spread - 180.0) < 1e-9 else f"{spread:g}° V")
+        kind = (
+            f"{len(banks)} banks, {spread:g}° spread"
+            if len(banks) > 2
+            else "opposed banks (180°)"
+            if abs(spread - 180.0) < 1e-9
+            else f"{spread:g}° V"
+        )
     text = f"{kind}, {pins} pin{'s' if pins != 1 else ''}"
     if engine.has_several_crankshafts:
         against = sum(s.direction == -1 for s in engine.crankshafts)
         text += f" on {len(engine.crankshafts)} crankshafts" + (
-            f" ({against} turning against the first)" if against else "")
+            f" ({against} turning against the first)" if against else ""
+        )
     if engine.has_opposed_pistons:
         text += ", opposed pistons"
     return text
@@ -72,12 +78,18 @@ def _crank(engine):
     phase)."""
     parts = []
     for index, shaft in enumerate(engine.crankshafts):
-        phases = "-".join(f"{math.degrees(t.phase_rad) % 360:.4g}" for t in engine.throws
-                          if t.crankshaft_index == index)
+        phases = "-".join(
+            f"{math.degrees(t.phase_rad) % 360:.4g}"
+            for t in engine.throws
+            if t.crankshaft_index == index
+        )
         if len(engine.crankshafts) > 1:
-            phases = (f"shaft {index + 1}" + (" (against)" if shaft.direction == -1 else "")
-                      + (f", gear {math.degrees(shaft.phase_rad):g}°" if shaft.phase_rad else "")
-                      + f": {phases}")
+            phases = (
+                f"shaft {index + 1}"
+                + (" (against)" if shaft.direction == -1 else "")
+                + (f", gear {math.degrees(shaft.phase_rad):g}°" if shaft.phase_rad else "")
+                + f": {phases}"
+            )
         parts.append(phases)
     return "; ".join(parts)
 
@@ -89,8 +101,10 @@ def _figures(result):
     cells = []
 
     def largest(o):
-        return ((abs(o.force_forward) + abs(o.force_backward)) / unit,
-                abs(o.moment_forward) + abs(o.moment_backward))
+        return (
+            (abs(o.force_forward) + abs(o.force_backward)) / unit,
+            abs(o.moment_forward) + abs(o.moment_backward),
+        )
 
     for k in ORDERS:
         f, m = largest(result.order(k))
@@ -139,8 +153,15 @@ def render():
         gaps = sorted({round(i, 3) for i in firing.intervals_deg})
         fire = "-".join(map(str, firing.order)) + f" ({'/'.join(f'{g:g}' for g in gaps)})"
         relative = path.relative_to(ROOT / "configs").as_posix()
-        cells = [f"[{relative}]({relative})", engine.name, _layout(engine), _crank(engine), fire,
-                 statement(path), *_figures(result)]
+        cells = [
+            f"[{relative}]({relative})",
+            engine.name,
+            _layout(engine),
+            _crank(engine),
+            fire,
+            statement(path),
+            *_figures(result),
+        ]
         lines.append("| " + " | ".join(_cell(c) for c in cells) + " |")
     return "\n".join(lines) + "\n"
 
@@ -149,7 +170,9 @@ def main(argv):
     text = render()
     if "--check" in argv:
         if TARGET.read_text(encoding="utf-8") != text:
-            sys.exit(f"{TARGET.relative_to(ROOT)} is out of date: run python tools/library_table.py")
+            sys.exit(
+                f"{TARGET.relative_to(ROOT)} is out of date: run python tools/library_table.py"
+            )
         return
     tmp = TARGET.with_suffix(".md.tmp")
     tmp.write_text(text, encoding="utf-8")

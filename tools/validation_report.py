@@ -29,9 +29,12 @@ def _cell(text):
 
 def render():
     rows = evaluate.rows()
-    papers = {p["paper"]["key"]: p["paper"]
-              for p in sorted(evaluate.papers(),
-                                     key=lambda p: p["paper"].get("seed", "~" + p["paper"]["key"]))}
+    papers = {
+        p["paper"]["key"]: p["paper"]
+        for p in sorted(
+            evaluate.papers(), key=lambda p: p["paper"].get("seed", "~" + p["paper"]["key"])
+        )
+    }
     errata = evaluate.errata()
     verdicts = Counter("erratum" if r.erratum else r.verdict for r in rows)
     lines = [
@@ -47,39 +50,55 @@ def render():
         "",
         f"**{len(rows)} figures: {verdicts['agrees']} agree within their tolerance, "
         f"{verdicts['erratum']} are errata of the papers"
-        + (f", {verdicts['DISAGREES']} DISAGREE" if verdicts["DISAGREES"] else "") + ".**",
+        + (f", {verdicts['DISAGREES']} DISAGREE" if verdicts["DISAGREES"] else "")
+        + ".**",
         "",
     ]
     for key, paper in papers.items():
         mine = [r for r in rows if r.paper == key]
         # a seed paper's transcription, or a maker's document by its address (and a note of what
         # its figures allow to be checked)
-        origin = (f"Transcription: `shared/seeds/{paper['seed']}`." if "seed" in paper
-                  else f"Source: <{paper['url']}>.")
+        origin = (
+            f"Transcription: `shared/seeds/{paper['seed']}`."
+            if "seed" in paper
+            else f"Source: <{paper['url']}>."
+        )
         lines += [f"## {paper['title']}", "", origin, ""]
         if "note" in paper:
             lines += [paper["note"].strip(), ""]
-        lines += ["| id | where | quantity | unit | published | ours | deviation | tolerance | verdict | reason |",
-                  "|---|---|---|---|---:|---:|---:|---:|---|---|"]
+        lines += [
+            "| id | where | quantity | unit | published | ours | deviation | tolerance | verdict | reason |",
+            "|---|---|---|---|---:|---:|---:|---:|---|---|",
+        ]
         for r in mine:
             lines.append(
                 f"| {r.id} | {_cell(r.where)} | {_cell(r.quantity)} | {r.unit} | {_number(r.published)} "
                 f"| {_number(r.ours)} | {_number(r.deviation, 3)} | {_number(r.tolerance, 3)} | {r.verdict} "
-                f"| {_cell(r.reason)} |")
+                f"| {_cell(r.reason)} |"
+            )
         lines.append("")
-    lines += ["## Errata", "",
-              "Confirmed: listed in `shared/seeds/INDEX.md` and reproduced here. New: found by this",
-              "project. Refuted: listed but not borne out (none so far). The verdict says what kind of",
-              "error it is: a misprint (the printed figure differs from what the paper's own working",
-              "gives), a slip (an arithmetic error in that working), a truncation (the paper's series",
-              "stops short: its figure is the series, the exact value differs), a sign, or unexplained.",
-              ""]
+    lines += [
+        "## Errata",
+        "",
+        "Confirmed: listed in `shared/seeds/INDEX.md` and reproduced here. New: found by this",
+        "project. Refuted: listed but not borne out (none so far). The verdict says what kind of",
+        "error it is: a misprint (the printed figure differs from what the paper's own working",
+        "gives), a slip (an arithmetic error in that working), a truncation (the paper's series",
+        "stops short: its figure is the series, the exact value differs), a sign, or unexplained.",
+        "",
+    ]
     for e in errata:
         records = ", ".join(r.id for r in rows if r.erratum == e["id"])
         kind = f"{e['verdict']}, " if "verdict" in e else ""
-        lines += [f"### {e['id']} ({kind}{e['status']}): {e['where']}", "",
-                  f"- printed: {e['printed']}", f"- correct: {e['correct']}",
-                  f"- evidence: {e['evidence']}", f"- records: {records}", ""]
+        lines += [
+            f"### {e['id']} ({kind}{e['status']}): {e['where']}",
+            "",
+            f"- printed: {e['printed']}",
+            f"- correct: {e['correct']}",
+            f"- evidence: {e['evidence']}",
+            f"- records: {records}",
+            "",
+        ]
     return "\n".join(lines)
 
 
@@ -87,7 +106,9 @@ def main(argv):
     text = render()
     if "--check" in argv:
         if not TARGET.exists() or TARGET.read_text(encoding="utf-8") != text:
-            print(f"{TARGET.relative_to(ROOT)} is out of date: run `make validate`", file=sys.stderr)
+            print(
+                f"{TARGET.relative_to(ROOT)} is out of date: run `make validate`", file=sys.stderr
+            )
             return 1
         return 0
     TARGET.parent.mkdir(parents=True, exist_ok=True)

@@ -2,9 +2,8 @@
 the antivibrateur, rolling moments, and the result of :func:`~balance_cli.counterweights`."""
 
 import math
-from dataclasses import dataclass
-
 import numbers
+from dataclasses import dataclass
 
 from ..errors import CounterweightError, UnitError
 from ..model import Engine
@@ -12,8 +11,19 @@ from ..output import DOCUMENT_VERSION
 from ..units import check_finite_range, phasor_deg, rad_s_to_rpm
 from .shaking import DEFAULT_SAMPLES, Shaking
 
-__all__ = ["Plane", "Counterweight", "Shaft", "ShaftMass", "BalancerShaft", "RollingMoment",
-           "Antivibrateur", "Balance", "Balances", "built_weight_record", "positive_length"]
+__all__ = [
+    "Plane",
+    "Counterweight",
+    "Shaft",
+    "ShaftMass",
+    "BalancerShaft",
+    "RollingMoment",
+    "Antivibrateur",
+    "Balance",
+    "Balances",
+    "built_weight_record",
+    "positive_length",
+]
 
 
 @dataclass(frozen=True)
@@ -43,8 +53,13 @@ class Counterweight:
     angle_deg: float
 
     def to_dict(self) -> dict:
-        return {"z_m": self.plane.z_m, "throw": self.plane.throw, "mass_kg": self.mass_kg,
-                "radius_m": self.radius_m, "angle_deg": self.angle_deg}
+        return {
+            "z_m": self.plane.z_m,
+            "throw": self.plane.throw,
+            "mass_kg": self.mass_kg,
+            "radius_m": self.radius_m,
+            "angle_deg": self.angle_deg,
+        }
 
 
 @dataclass(frozen=True)
@@ -62,9 +77,13 @@ class Shaft:
     z_m: float
 
     def to_dict(self) -> dict:
-        return {"order": self.order, "speed_ratio": self.speed_ratio,
-                "mass_eccentricity_kgm": self.mass_eccentricity_kgm, "phase_deg": self.phase_deg,
-                "z_m": self.z_m}
+        return {
+            "order": self.order,
+            "speed_ratio": self.speed_ratio,
+            "mass_eccentricity_kgm": self.mass_eccentricity_kgm,
+            "phase_deg": self.phase_deg,
+            "z_m": self.z_m,
+        }
 
 
 @dataclass(frozen=True)
@@ -81,8 +100,11 @@ class ShaftMass:
         return self.mass_eccentricity_kgm / positive_length(eccentricity_m, "eccentricity_m")
 
     def to_dict(self) -> dict:
-        return {"mass_eccentricity_kgm": self.mass_eccentricity_kgm, "phase_deg": self.phase_deg,
-                "z_m": self.z_m}
+        return {
+            "mass_eccentricity_kgm": self.mass_eccentricity_kgm,
+            "phase_deg": self.phase_deg,
+            "z_m": self.z_m,
+        }
 
 
 @dataclass(frozen=True)
@@ -114,8 +136,13 @@ class RollingMoment:
         return phasor_deg(complex(self.cos_nm, self.sin_nm))
 
     def to_dict(self) -> dict:
-        entry: dict = {"order": self.order, "cos_Nm": self.cos_nm, "sin_Nm": self.sin_nm,
-                 "amplitude_Nm": self.amplitude_nm, "phase_deg": self.phase_deg}
+        entry: dict = {
+            "order": self.order,
+            "cos_Nm": self.cos_nm,
+            "sin_Nm": self.sin_nm,
+            "amplitude_Nm": self.amplitude_nm,
+            "phase_deg": self.phase_deg,
+        }
         if self.speed_ratios:
             entry["speed_ratios"] = list(self.speed_ratios)
         return entry
@@ -149,11 +176,15 @@ class BalancerShaft:
 
     def to_dict(self) -> dict:
         moment = self.rolling_moment or RollingMoment(self.order, 0.0, 0.0)
-        return {"speed_ratio": self.speed_ratio, "order": self.order,
-                "turning": "with" if self.speed_ratio > 0 else "against",
-                "offset_m": {"lateral": self.lateral_m, "vertical": self.vertical_m},
-                "masses": [m.to_dict() for m in self.masses], "force_N": self.force_n,
-                "rolling_moment": moment.to_dict()}
+        return {
+            "speed_ratio": self.speed_ratio,
+            "order": self.order,
+            "turning": "with" if self.speed_ratio > 0 else "against",
+            "offset_m": {"lateral": self.lateral_m, "vertical": self.vertical_m},
+            "masses": [m.to_dict() for m in self.masses],
+            "force_N": self.force_n,
+            "rolling_moment": moment.to_dict(),
+        }
 
 
 @dataclass(frozen=True)
@@ -170,9 +201,12 @@ class Antivibrateur:
         return self.mass_eccentricity_kgm / self.eccentricity_m
 
     def to_dict(self) -> dict:
-        return {"mass_eccentricity_kgm": self.mass_eccentricity_kgm,
-                "eccentricity_m": self.eccentricity_m, "mass_kg": self.mass_kg,
-                "phase_deg": self.phase_deg}
+        return {
+            "mass_eccentricity_kgm": self.mass_eccentricity_kgm,
+            "eccentricity_m": self.eccentricity_m,
+            "mass_kg": self.mass_kg,
+            "phase_deg": self.phase_deg,
+        }
 
 
 @dataclass(frozen=True)
@@ -239,8 +273,10 @@ class Balance:
         def stage(shaking):
             # below the noise floor it is rounding, an exact zero as compare writes it
             largest = shaking.largest_force()
-            return {"largest_resultant_N": largest if largest >= engine.noise_floor_n else 0.0,
-                    "orders": shaking.records(engine)}
+            return {
+                "largest_resultant_N": largest if largest >= engine.noise_floor_n else 0.0,
+                "orders": shaking.records(engine),
+            }
 
         entry = {
             "name": engine.name,
@@ -266,7 +302,8 @@ class Balance:
             entry["as_built"] = {
                 "counterweights": [built_weight_record(engine, w) for w in engine.counterweights],
                 "balancer_shafts": [s.to_dict() for s in self.built_shafts],
-                **stage(self.original)}
+                **stage(self.original),
+            }
         return entry
 
     def configuration_tables(self, shafts: bool = False) -> dict:
@@ -284,15 +321,20 @@ class Balance:
             engine, whose counterweights ride on its crankcase
         """
         if self.antivibrateur is not None:
-            raise CounterweightError("has no configuration table, and the counterweights "
-                                     "proposed include its mass; leave it out to write a "
-                                     "configuration", "antivibrateur_radius_m")
+            raise CounterweightError(
+                "has no configuration table, and the counterweights "
+                "proposed include its mass; leave it out to write a "
+                "configuration",
+                "antivibrateur_radius_m",
+            )
         engine = self.engine
         if engine.is_rotary:
             raise CounterweightError(
                 "of a rotary engine cannot be written as configuration tables: its counterweights "
                 "ride on the turning crankcase, and [[counterweights]] and [[shafts]] describe "
-                "masses geared to a turning crank", "counterweights")
+                "masses geared to a turning crank",
+                "counterweights",
+            )
         first = math.degrees(engine.throws[0].phase_rad)
         weights = []
         for weight in self.counterweights:
@@ -301,31 +343,51 @@ class Balance:
             index = 0 if weight.plane.throw is None else weight.plane.throw - 1
             # Counterweight.angle_deg is measured from throw 1; a built one from its own throw
             angle = weight.angle_deg + first - math.degrees(engine.throws[index].phase_rad)
-            weights.append({"throw": index + 1, "mass": f"{float(weight.mass_kg)!r} kg",
-                            "radius": f"{float(weight.radius_m)!r} m",
-                            "angle": float(math.remainder(angle, 360.0)) + 0.0,
-                            "z": f"{float(weight.plane.z_m)!r} m"})
+            weights.append(
+                {
+                    "throw": index + 1,
+                    "mass": f"{float(weight.mass_kg)!r} kg",
+                    "radius": f"{float(weight.radius_m)!r} m",
+                    "angle": float(math.remainder(angle, 360.0)) + 0.0,
+                    "z": f"{float(weight.plane.z_m)!r} m",
+                }
+            )
         tables: dict = {"counterweights": weights}
         if shafts:
             tables["shafts"] = [
-                {"ratio": shaft.speed_ratio, "lateral": f"{float(shaft.lateral_m)!r} m",
-                 "vertical": f"{float(shaft.vertical_m)!r} m",
-                 # ShaftMass.phase_deg is measured with the crank; a built mass's angle in its
-                 # shaft's own sense of turning
-                 "masses": [{"mass_radius": f"{float(m.mass_eccentricity_kgm)!r} kg*m",
-                             "angle": math.remainder(math.copysign(1, shaft.speed_ratio)
-                                                     * m.phase_deg, 360.0) + 0.0,
-                             "z": f"{float(m.z_m)!r} m"} for m in shaft.masses]}
-                for shaft in self.balancer_shafts]
+                {
+                    "ratio": shaft.speed_ratio,
+                    "lateral": f"{float(shaft.lateral_m)!r} m",
+                    "vertical": f"{float(shaft.vertical_m)!r} m",
+                    # ShaftMass.phase_deg is measured with the crank; a built mass's angle in its
+                    # shaft's own sense of turning
+                    "masses": [
+                        {
+                            "mass_radius": f"{float(m.mass_eccentricity_kgm)!r} kg*m",
+                            "angle": math.remainder(
+                                math.copysign(1, shaft.speed_ratio) * m.phase_deg, 360.0
+                            )
+                            + 0.0,
+                            "z": f"{float(m.z_m)!r} m",
+                        }
+                        for m in shaft.masses
+                    ],
+                }
+                for shaft in self.balancer_shafts
+            ]
         return tables
 
 
 def built_weight_record(engine, weight) -> dict:
     """A counterweight as built, as ``counterweight --format json`` lists it under ``as_built``."""
-    return {"throw": weight.throw, "mass_radius_kgm": weight.mass_radius_kgm,
-            "mass_kg": weight.mass_kg, "radius_m": weight.radius_m,
-            "angle_deg": math.degrees(weight.angle_rad), "z_m": engine.counterweight_z_m(weight)}
-
+    return {
+        "throw": weight.throw,
+        "mass_radius_kgm": weight.mass_radius_kgm,
+        "mass_kg": weight.mass_kg,
+        "radius_m": weight.radius_m,
+        "angle_deg": math.degrees(weight.angle_rad),
+        "z_m": engine.counterweight_z_m(weight),
+    }
 
 
 @dataclass(frozen=True)
@@ -338,14 +400,19 @@ class Balances:
         if not self.balances:
             raise CounterweightError("needs at least one balanced engine", "balances")
         if len({(b.samples, b.max_order) for b in self.balances}) > 1:
-            raise CounterweightError("must all be analysed with the same samples and max_order",
-                                     "balances")
+            raise CounterweightError(
+                "must all be analysed with the same samples and max_order", "balances"
+            )
 
     def to_dict(self) -> dict:
         """What ``counterweight --format json`` writes: one :meth:`Balance.to_dict` per engine."""
         first = self.balances[0]
-        return {"balance_version": DOCUMENT_VERSION, "samples": first.samples,
-                "max_order": first.max_order, "engines": [b.to_dict() for b in self.balances]}
+        return {
+            "balance_version": DOCUMENT_VERSION,
+            "samples": first.samples,
+            "max_order": first.max_order,
+            "engines": [b.to_dict() for b in self.balances],
+        }
 
 
 def positive_length(value, parameter):

@@ -41,8 +41,12 @@ class CylinderTorque:
     gas: Series | None
 
     def to_dict(self) -> dict:
-        return {"cylinder": self.number, "throw": self.throw, "inertia": self.inertia.to_dict(),
-                "gas": None if self.gas is None else self.gas.to_dict()}
+        return {
+            "cylinder": self.number,
+            "throw": self.throw,
+            "inertia": self.inertia.to_dict(),
+            "gas": None if self.gas is None else self.gas.to_dict(),
+        }
 
 
 @dataclass(frozen=True)
@@ -85,14 +89,20 @@ class CylinderTorques:
 
     def to_dict(self) -> dict:
         engine = self.engine
-        return {"balance_version": DOCUMENT_VERSION, "name": engine.name,
-                "config": engine.config_path, "speed_rpm": rad_s_to_rpm(engine.speed_rad_s),
-                "samples": self.samples, "max_order": self.max_order,
-                "cylinders": [c.to_dict() for c in self.cylinders]}
+        return {
+            "balance_version": DOCUMENT_VERSION,
+            "name": engine.name,
+            "config": engine.config_path,
+            "speed_rpm": rad_s_to_rpm(engine.speed_rad_s),
+            "samples": self.samples,
+            "max_order": self.max_order,
+            "cylinders": [c.to_dict() for c in self.cylinders],
+        }
 
 
-def cylinder_torques(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER,
-                     pressure=None, bore_m=None) -> CylinderTorques:
+def cylinder_torques(
+    engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressure=None, bore_m=None
+) -> CylinderTorques:
     """Every cylinder's own inertia and gas torque, from the same kinematic state, reduced mass
     and gas load as :func:`~balance_cli.torque`.
 
@@ -103,8 +113,11 @@ def cylinder_torques(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDE
     check_settings(samples, max_order)
     state = kinematic_state(engine, samples)
     if engine.has_several_crankshafts or any(c.is_opposed for c in engine.cylinders):
-        raise AnalysisError("has several crankshafts or opposed pistons; a cylinder's torque "
-                            "on one throw is given for one crankshaft only", "engine")
+        raise AnalysisError(
+            "has several crankshafts or opposed pistons; a cylinder's torque "
+            "on one throw is given for one crankshaft only",
+            "engine",
+        )
     gas = gas_load(engine, samples, pressure, bore_m)
     omega = engine.speed_rad_s
     turns = int(round(engine.cycle_deg / 360.0))
@@ -114,13 +127,18 @@ def cylinder_torques(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDE
         n = cylinder.number
         # only this cylinder's rows; the shaft's constant inertia in μ has no derivative: no
         # torque of its own
-        mu, _ = reduced_mass_and_momentum(engine, state.parts(masses.cylinder == n,
-                                                              rods.cylinder == n))
+        mu, _ = reduced_mass_and_momentum(
+            engine, state.parts(masses.cylinder == n, rods.cylinder == n)
+        )
         inertia = np.tile(-0.5 * omega**2 * periodic_derivative(mu).real, turns)
         torque = None
         if gas is not None:
-            torque = cycle_series(engine, -gas.net_pressure[n] * gas.area_m2
-                                  * np.tile(state.travel_rates[n], turns), max_order)
-        out.append(CylinderTorque(n, cylinder.throw, cycle_series(engine, inertia, max_order),
-                                  torque))
+            torque = cycle_series(
+                engine,
+                -gas.net_pressure[n] * gas.area_m2 * np.tile(state.travel_rates[n], turns),
+                max_order,
+            )
+        out.append(
+            CylinderTorque(n, cylinder.throw, cycle_series(engine, inertia, max_order), torque)
+        )
     return CylinderTorques(engine, samples, max_order, tuple(out))

@@ -55,9 +55,14 @@ class Firing:
 
     def to_dict(self) -> dict:
         """The ``firing`` entry of ``compare --format json``."""
-        return {"order": list(self.order), "angles_deg": list(self.angles_deg),
-                "intervals_deg": list(self.intervals_deg), "uniform": self.uniform,
-                "max_deviation_deg": self.max_deviation_deg, "given": self.given}
+        return {
+            "order": list(self.order),
+            "angles_deg": list(self.angles_deg),
+            "intervals_deg": list(self.intervals_deg),
+            "uniform": self.uniform,
+            "max_deviation_deg": self.max_deviation_deg,
+            "given": self.given,
+        }
 
 
 def _after(angle, reference):

@@ -20,8 +20,7 @@ from .firing import firing_angles
 from .pressure import PressureCurve, cycle_pressure
 from .shaking import MAX_SAMPLES
 
-__all__ = ["GasLoad", "gas_bore", "gas_load", "gas_torque", "check_gas_sampling",
-           "GAS_CONVERGENCE"]
+__all__ = ["GasLoad", "gas_bore", "gas_load", "gas_torque", "check_gas_sampling", "GAS_CONVERGENCE"]
 
 #: the gas torque's mean may move by this fraction (of its mean, or of a hundredth of its
 #: peak for a cycle that averages out) when the samples are doubled before a warning: the
@@ -36,16 +35,24 @@ def gas_bore(engine, pressure, bore_m):
     if pressure is not None:
         instance(pressure, PressureCurve, "pressure", hint=" (balance.read_pressure_csv gives one)")
         if pressure.cycle_deg != engine.cycle_deg:
-            raise AnalysisError(f"covers {pressure.cycle_deg:g}°, but {engine.name!r} is a "
-                                f"{engine.cycle}-stroke ({engine.cycle_deg:g}°)", "pressure")
+            raise AnalysisError(
+                f"covers {pressure.cycle_deg:g}°, but {engine.name!r} is a "
+                f"{engine.cycle}-stroke ({engine.cycle_deg:g}°)",
+                "pressure",
+            )
         bore_m = bore_m if bore_m is not None else (engine.gas.bore_m if engine.gas else None)
         if bore_m is None:
-            raise AnalysisError("is missing for the pressure curve: give the bore, or a [gas] "
-                                "table with one", "bore_m")
+            raise AnalysisError(
+                "is missing for the pressure curve: give the bore, or a [gas] table with one",
+                "bore_m",
+            )
         return positive(bore_m, "bore_m", "length")
     if bore_m is not None:
-        raise AnalysisError("applies to a pressure curve only; give the pressure too (a [gas] "
-                            "table has its own bore)", "bore_m")
+        raise AnalysisError(
+            "applies to a pressure curve only; give the pressure too (a [gas] "
+            "table has its own bore)",
+            "bore_m",
+        )
     return None if engine.gas is None else engine.gas.bore_m
 
 
@@ -54,9 +61,15 @@ def _pressure_curves(engine, fire, pressure):
     piston's travel from bottom dead centre to bottom dead centre round its firing."""
     if pressure is not None:
         return {c.number: pressure for c in engine.cylinders}
-    return {c.number: cycle_pressure(engine.gas, fine_travel(engine, c.number, fire[c.number] - 180.0),
-                                     engine.cycle_deg, engine.config_path)
-            for c in engine.cylinders}
+    return {
+        c.number: cycle_pressure(
+            engine.gas,
+            fine_travel(engine, c.number, fire[c.number] - 180.0),
+            engine.cycle_deg,
+            engine.config_path,
+        )
+        for c in engine.cylinders
+    }
 
 
 def _net_pressures(engine, samples, turns, fire, curves):
@@ -99,16 +112,19 @@ def gas_load(engine, samples, pressure=None, bore_m=None) -> "GasLoad | None":
     fire = firing_angles(engine)
     curves = _pressure_curves(engine, fire, pressure)
     turns = int(round(engine.cycle_deg / 360.0))
-    return GasLoad(_net_pressures(engine, samples, turns, fire, curves), math.pi * bore**2 / 4,
-                   curves, fire)
+    return GasLoad(
+        _net_pressures(engine, samples, turns, fire, curves), math.pi * bore**2 / 4, curves, fire
+    )
 
 
 def gas_torque(engine, travel_rates, net_pressure, area):
     """The gas torque over the cycle, N·m: −Σ (p − p_c)·A·ds/dθ with each cylinder's travel
     rate over a revolution (m/rad, by number) repeated over the cycle."""
     turns = int(round(engine.cycle_deg / 360.0))
-    return sum(-net_pressure[c.number] * area * np.tile(travel_rates[c.number], turns)
-               for c in engine.cylinders)
+    return sum(
+        -net_pressure[c.number] * area * np.tile(travel_rates[c.number], turns)
+        for c in engine.cylinders
+    )
 
 
 def check_gas_sampling(engine, samples, load, gas_curve):
@@ -122,9 +138,12 @@ def check_gas_sampling(engine, samples, load, gas_curve):
     fine = kinematic_state(engine, FINE_SAMPLES).travel
     numbers = list(fine)
     rates = periodic_derivative(resampled(np.array([fine[n] for n in numbers]), finer)).real
-    better_curve = gas_torque(engine, dict(zip(numbers, rates)),
-                              _net_pressures(engine, finer, turns, load.firing_deg, load.curves),
-                              load.area_m2)
+    better_curve = gas_torque(
+        engine,
+        dict(zip(numbers, rates)),
+        _net_pressures(engine, finer, turns, load.firing_deg, load.curves),
+        load.area_m2,
+    )
     mean, better = float(np.mean(gas_curve)), float(np.mean(better_curve))
     scale = max(abs(better), 1e-2 * float(np.abs(better_curve).max()))
     moved = abs(mean - better) / scale if scale > 0 else 0.0
@@ -134,6 +153,7 @@ def check_gas_sampling(engine, samples, load, gas_curve):
         warning = SamplingWarning(
             f"{engine.name}: the gas torque is not converged at {samples} samples a revolution: "
             f"its mean moves by {moved:.1e} of itself at {finer} (a sharp pressure curve); "
-            f"use {min(needed, MAX_SAMPLES)} samples or more")
+            f"use {min(needed, MAX_SAMPLES)} samples or more"
+        )
         warning.samples, warning.excess = samples, moved
         warnings.warn(warning, stacklevel=3)

@@ -84,9 +84,12 @@ class CylinderGuide:
     def to_dict(self) -> dict:
         """The cylinder's largest guide force and couple over the cycle (the orders are the
         API's: :attr:`force`, :attr:`couple`)."""
-        return {"cylinder": self.number, "z_m": self.z_m,
-                "max_force_N": float(np.abs(self.force_curve).max()),
-                "max_couple_Nm": float(np.abs(self.couple_curve).max())}
+        return {
+            "cylinder": self.number,
+            "z_m": self.z_m,
+            "max_force_N": float(np.abs(self.force_curve).max()),
+            "max_couple_Nm": float(np.abs(self.couple_curve).max()),
+        }
 
 
 @dataclass(frozen=True)
@@ -120,9 +123,13 @@ class GuideForces:
 
     def to_dict(self) -> dict:
         """``guide_force`` of ``torque --format json`` (see the README)."""
-        return {"lever_m": self.lever_m, "mean_z_m": self.mean_z_m,
-                "h_type": self.h_type.to_dict(), "x_type": self.x_type.to_dict(),
-                "cylinders": [c.to_dict() for c in self.cylinders]}
+        return {
+            "lever_m": self.lever_m,
+            "mean_z_m": self.mean_z_m,
+            "h_type": self.h_type.to_dict(),
+            "x_type": self.x_type.to_dict(),
+            "cylinders": [c.to_dict() for c in self.cylinders],
+        }
 
 
 def _lateral(engine, state, net_pressure, area, turns):
@@ -132,7 +139,7 @@ def _lateral(engine, state, net_pressure, area, turns):
     masses, rods = state.masses, state.rods
     row = {}
     for index, owner in enumerate(masses.cylinder):
-        row.setdefault(int(owner), index)   # a cylinder's piston comes before its knuckle
+        row.setdefault(int(owner), index)  # a cylinder's piston comes before its knuckle
     rod_row = {int(c): i for i, c in enumerate(rods.cylinder)}
     rates = (np.conj(rods.directions) * periodic_derivative(rods.directions)).imag
     # every mass's acceleration in one transform
@@ -159,20 +166,24 @@ def _lateral(engine, state, net_pressure, area, turns):
         # each cylinder's own offset: a bank's or its own overrides the engine's
         offset = engine.pin_offset_of(cyl)
         t = (w * local.imag - gas - m * a.real) / local.real
-        lateral = m * a.imag + t * local.imag + w * local.real   # the guide's force on the piston
+        lateral = m * a.imag + t * local.imag + w * local.real  # the guide's force on the piston
         travel = np.tile(state.travel[n], turns)
         forces[n] = -lateral
         couples[n] = -(travel * lateral + offset * gas)
         if cyl.is_link:
             master = engine.cylinder(cyl.master)
             knuckle = piston - length * u
-            big_end = masses.positions[row[master.number]] - \
-                engine.rod_length_m * rods.directions[rod_row[master.number]]
+            big_end = (
+                masses.positions[row[master.number]]
+                - engine.rod_length_m * rods.directions[rod_row[master.number]]
+            )
             load = (t + 1j * w) * np.tile(u, turns) - np.tile(
-                cyl.knuckle_kg * harmonic_accelerations(knuckle, omega), turns)
+                cyl.knuckle_kg * harmonic_accelerations(knuckle, omega), turns
+            )
             arm = np.tile(knuckle - big_end, turns)
-            link_moments[master.number] = link_moments.get(master.number, 0.0) + \
-                (np.conj(arm) * load).imag
+            link_moments[master.number] = (
+                link_moments.get(master.number, 0.0) + (np.conj(arm) * load).imag
+            )
     return forces, couples
 
 
@@ -187,8 +198,10 @@ def guide_forces(engine, state, net_pressure, area, turns, max_order) -> GuideFo
     forces, couples = _lateral(engine, state, net_pressure, area, turns)
     mean = engine.mean_z_m
     lever = engine.rod_length_m
-    cylinders = tuple(CylinderGuide(c.number, c.z_m, forces[c.number], couples[c.number], series)
-                      for c in engine.cylinders)
+    cylinders = tuple(
+        CylinderGuide(c.number, c.z_m, forces[c.number], couples[c.number], series)
+        for c in engine.cylinders
+    )
     h = sum(couples[c.number] for c in engine.cylinders)
     x = sum(couples[c.number] * (c.z_m - mean) for c in engine.cylinders) / lever
     return GuideForces(series(h, "Nm"), series(x, "Nm"), lever, mean, cylinders)

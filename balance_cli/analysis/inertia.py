@@ -18,8 +18,10 @@ def parts_of_crankshaft(engine, state, crankshaft):
     throws' masses and rods (a balancer-shaft mass, on throw −1, rides on no crankshaft)."""
     shaft_of = np.array([t.crankshaft_index for t in engine.throws])
     throws = state.masses.throw_index
-    return state.parts((throws >= 0) & (shaft_of[throws] == crankshaft),
-                       shaft_of[state.rods.throw_index] == crankshaft)
+    return state.parts(
+        (throws >= 0) & (shaft_of[throws] == crankshaft),
+        shaft_of[state.rods.throw_index] == crankshaft,
+    )
 
 
 def reduced_mass_and_momentum(engine, state, crankshaft=None):

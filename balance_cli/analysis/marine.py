@@ -17,12 +17,24 @@ from ..kinematics import FINE_SAMPLES, kinematic_state
 from .counterweight import counterweights
 from .shaking import Shaking
 
-__all__ = ["DEFAULT_PRU_CLASSES", "DEFAULT_PRU_ORDERS", "Power", "PowerRelatedUnbalance",
-           "engine_power", "power_related_unbalance", "pru_class", "check_classes"]
+__all__ = [
+    "DEFAULT_PRU_CLASSES",
+    "DEFAULT_PRU_ORDERS",
+    "Power",
+    "PowerRelatedUnbalance",
+    "engine_power",
+    "power_related_unbalance",
+    "pru_class",
+    "check_classes",
+]
 
 #: upper bounds (N·m/kW) of the project guides' classes and their words; the last is open
-DEFAULT_PRU_CLASSES = ((60.0, "not relevant"), (120.0, "unlikely"), (220.0, "likely"),
-                       (math.inf, "most likely"))
+DEFAULT_PRU_CLASSES = (
+    (60.0, "not relevant"),
+    (120.0, "unlikely"),
+    (220.0, "likely"),
+    (math.inf, "most likely"),
+)
 #: the orders the guides give: first and second
 DEFAULT_PRU_ORDERS = (1, 2)
 _CLASS_WORDS = ("not relevant", "unlikely", "likely", "most likely")
@@ -55,12 +67,19 @@ def check_classes(bounds):
     try:
         values = [float(b) for b in bounds]
     except (TypeError, ValueError):
-        raise AnalysisError(f"must be three numbers of N·m/kW, got {bounds!r}",
-                            "pru_classes") from None
-    if len(values) != 3 or not all(math.isfinite(v) and v > 0 for v in values) \
-            or not values[0] < values[1] < values[2]:
-        raise AnalysisError(f"must be three increasing positive numbers of N·m/kW (the bounds "
-                            f"of {', '.join(_CLASS_WORDS)}), got {bounds!r}", "pru_classes")
+        raise AnalysisError(
+            f"must be three numbers of N·m/kW, got {bounds!r}", "pru_classes"
+        ) from None
+    if (
+        len(values) != 3
+        or not all(math.isfinite(v) and v > 0 for v in values)
+        or not values[0] < values[1] < values[2]
+    ):
+        raise AnalysisError(
+            f"must be three increasing positive numbers of N·m/kW (the bounds "
+            f"of {', '.join(_CLASS_WORDS)}), got {bounds!r}",
+            "pru_classes",
+        )
     return tuple(zip(values + [math.inf], _CLASS_WORDS))
 
 
@@ -68,14 +87,20 @@ def _check_class_table(classes):
     """A table of (bound, word) as :func:`check_classes` makes, the last bound infinite."""
     try:
         bounds = [bound for bound, _ in classes]
-        if len(bounds) == 4 and math.isinf(bounds[-1]) and all(
-                isinstance(word, str) for _, word in classes):
+        if (
+            len(bounds) == 4
+            and math.isinf(bounds[-1])
+            and all(isinstance(word, str) for _, word in classes)
+        ):
             check_classes(bounds[:-1])
             return
     except (TypeError, ValueError, BalanceError):
         pass
-    raise AnalysisError("must be (bound, class) pairs as check_classes((60, 120, 220)) "
-                            f"makes them, got {classes!r}", "classes")
+    raise AnalysisError(
+        "must be (bound, class) pairs as check_classes((60, 120, 220)) "
+        f"makes them, got {classes!r}",
+        "classes",
+    )
 
 
 def pru_class(value, classes=DEFAULT_PRU_CLASSES):
@@ -98,15 +123,22 @@ def engine_power(engine, power_w=None):
     gas = engine.gas
     if gas is not None and gas.imep_pa is not None:
         travel = kinematic_state(engine, FINE_SAMPLES).travel
-        swept = sum(gas.piston_area_m2 * (t[::_STROKE_STEP].max() - t[::_STROKE_STEP].min())
-                    for t in travel.values())
+        swept = sum(
+            gas.piston_area_m2 * (t[::_STROKE_STEP].max() - t[::_STROKE_STEP].min())
+            for t in travel.values()
+        )
         cycles_per_s = engine.speed_rad_s / (2 * math.pi) * 2 / engine.cycle
         return Power(gas.imep_pa * swept * cycles_per_s, "indicated"), None
     if engine.power_w is not None:
-        return None, (f"the power is given at {engine.power_speed_rad_s * 30 / math.pi:g} rpm, "
-                      f"not at the {engine.speed_rad_s * 30 / math.pi:g} rpm analysed; give the "
-                      "power at this speed")
-    return None, "no power: give `power` in the configuration, a [gas] table with an imep, or the power with the analysis"
+        return None, (
+            f"the power is given at {engine.power_speed_rad_s * 30 / math.pi:g} rpm, "
+            f"not at the {engine.speed_rad_s * 30 / math.pi:g} rpm analysed; give the "
+            "power at this speed"
+        )
+    return (
+        None,
+        "no power: give `power` in the configuration, a [gas] table with an imep, or the power with the analysis",
+    )
 
 
 @dataclass(frozen=True)
@@ -147,23 +179,35 @@ class PowerRelatedUnbalance:
         ``note``."""
         if self.power is None:
             return {"note": self.note}
-        return {"power_kW": self.power.kilowatts, "power_source": self.power.source,
-                "classes": [{"below_Nm_per_kW": None if math.isinf(b) else b, "class": w}
-                            for b, w in self.classes],
-                "orders": list(self.orders), "first_order_balanced": self.first_order_balanced}
+        return {
+            "power_kW": self.power.kilowatts,
+            "power_source": self.power.source,
+            "classes": [
+                {"below_Nm_per_kW": None if math.isinf(b) else b, "class": w}
+                for b, w in self.classes
+            ],
+            "orders": list(self.orders),
+            "first_order_balanced": self.first_order_balanced,
+        }
 
 
 def _entry(order, record, kilowatts, classes):
     moment = record["moment"]
     v, h = moment["vertical_Nm"], moment["horizontal_Nm"]
-    return {"order": order, "vertical_Nm": v, "horizontal_Nm": h,
-            "vertical_Nm_per_kW": v / kilowatts, "horizontal_Nm_per_kW": h / kilowatts,
-            "vertical_class": pru_class(v / kilowatts, classes),
-            "horizontal_class": pru_class(h / kilowatts, classes)}
+    return {
+        "order": order,
+        "vertical_Nm": v,
+        "horizontal_Nm": h,
+        "vertical_Nm_per_kW": v / kilowatts,
+        "horizontal_Nm_per_kW": h / kilowatts,
+        "vertical_class": pru_class(v / kilowatts, classes),
+        "horizontal_class": pru_class(h / kilowatts, classes),
+    }
 
 
-def power_related_unbalance(result, power_w=None, orders=DEFAULT_PRU_ORDERS,
-                            classes=DEFAULT_PRU_CLASSES):
+def power_related_unbalance(
+    result, power_w=None, orders=DEFAULT_PRU_ORDERS, classes=DEFAULT_PRU_CLASSES
+):
     """The :class:`PowerRelatedUnbalance` of an analysed engine
     (:class:`~balance_cli.EngineResult`); without a power, one that says why
     (``available`` False, ``note``).
@@ -185,11 +229,17 @@ def power_related_unbalance(result, power_w=None, orders=DEFAULT_PRU_ORDERS,
     power, why = engine_power(result.engine, power_w)
     if power is None:
         return PowerRelatedUnbalance(None, classes=classes, note=why)
-    if isinstance(orders, (str, bytes)) or not all(
+    if (
+        isinstance(orders, (str, bytes))
+        or not all(
             isinstance(k, int) and not isinstance(k, bool) and 1 <= k <= result.max_order
-            for k in orders) or not orders:
-        raise AnalysisError(f"must be orders from 1 to {result.max_order}, got {orders!r}",
-                            "orders")
+            for k in orders
+        )
+        or not orders
+    ):
+        raise AnalysisError(
+            f"must be orders from 1 to {result.max_order}, got {orders!r}", "orders"
+        )
     records = result.order_records()
     entries = tuple(_entry(k, records[k - 1], power.kilowatts, classes) for k in orders)
     balanced = None

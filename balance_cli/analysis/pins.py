@@ -52,8 +52,10 @@ class PinForce:
         steps = k * self.period_deg / 360.0 if is_real(k) and math.isfinite(k) else math.nan
         # order(1e300) once wrapped round the samples and answered
         if not (0 <= steps < n / 2 and abs(steps - round(steps)) < 1e-9):
-            raise OrderError(f"order {k!r} is not among the orders of these forces (multiples of "
-                             f"{360 / self.period_deg:g} below {n / 2 * 360 / self.period_deg:g})")
+            raise OrderError(
+                f"order {k!r} is not among the orders of these forces (multiples of "
+                f"{360 / self.period_deg:g} below {n / 2 * 360 / self.period_deg:g})"
+            )
         j = int(round(steps))
         c = self._spectrum
         return complex(c[j % n]), complex(c[-j % n])
@@ -68,14 +70,17 @@ class PinForce:
                 backward = 0j
             # a crank pin's force is read in the crank's terms (radial, tangential, forward,
             # backward); the engine's vertical belongs to the free forces
-            orders.append({"order": j / per_turn,
-                           "force": part_values(forward, backward, floor_n, "N", components=False)})
+            orders.append(
+                {
+                    "order": j / per_turn,
+                    "force": part_values(forward, backward, floor_n, "N", components=False),
+                }
+            )
         entry: dict = {"throw": self.throw, "orders": orders}
         if self.radial is not None and self.tangential is not None:
             entry["radial"] = self.radial.to_dict()
             entry["tangential"] = self.tangential.to_dict()
         return entry
-
 
 
 #: virtual shifts of a crank pin, in crank radii: ±h and ±h/2 for a Richardson-extrapolated
@@ -88,7 +93,7 @@ def _derivative(values):
     """d/dh at 0 from ``values`` at h = _STEPS·step (leading axis), per unit step: central
     differences extrapolated, (4·fine − coarse)/3."""
     coarse = (values[0] - values[1]) / 2
-    fine = (values[2] - values[3])
+    fine = values[2] - values[3]
     return (4 * fine - coarse) / 3
 
 
@@ -115,24 +120,35 @@ def pin_forces(engine, state, turns, net_pressure, area):
         shifted = linkage_state(engine, grid, {index: shifts}, throw_index=index)
         # only what rides on this pin moves with it: the same rows of the whole engine's state
         on_pin = np.isin(masses.cylinder, shifted.masses.cylinder) & (
-            (masses.cylinder > 0) | (masses.throw_index == index))
+            (masses.cylinder > 0) | (masses.throw_index == index)
+        )
         rods_on_pin = np.isin(rods.cylinder, shifted.rods.cylinder)
         size = (2, len(_STEPS))
         dx = _derivative(np.moveaxis(shifted.masses.positions.reshape(-1, *size, n), 2, 0)) / step
         du = _derivative(np.moveaxis(shifted.rods.directions.reshape(-1, *size, n), 2, 0)) / step
-        inertial = (weights[on_pin, None] * (np.conj(accelerations[on_pin])[:, None] * dx).real
-                    ).sum(axis=0)
-        inertial += (rods.corrections_kgm2[rods_on_pin, None, None]
-                     * angular_accelerations[rods_on_pin, None]
-                     * (np.conj(rods.directions[rods_on_pin])[:, None] * du).imag).sum(axis=0)
-        parts = np.tile(inertial, turns)                       # (along, across) × cycle
+        inertial = (
+            weights[on_pin, None] * (np.conj(accelerations[on_pin])[:, None] * dx).real
+        ).sum(axis=0)
+        inertial += (
+            rods.corrections_kgm2[rods_on_pin, None, None]
+            * angular_accelerations[rods_on_pin, None]
+            * (np.conj(rods.directions[rods_on_pin])[:, None] * du).imag
+        ).sum(axis=0)
+        parts = np.tile(inertial, turns)  # (along, across) × cycle
         # an opposed-piston cylinder has two rods but one pressure
         numbers = list(dict.fromkeys(int(m) for m in shifted.rods.cylinder))
         if net_pressure and numbers:
-            ds = _derivative(np.moveaxis(np.array([shifted.travel[m] for m in numbers])
-                                         .reshape(-1, *size, n), 2, 0)) / step
-            parts = parts + sum(net_pressure[m] * area * np.tile(ds[i], turns)
-                                for i, m in enumerate(numbers))
+            ds = (
+                _derivative(
+                    np.moveaxis(
+                        np.array([shifted.travel[m] for m in numbers]).reshape(-1, *size, n), 2, 0
+                    )
+                )
+                / step
+            )
+            parts = parts + sum(
+                net_pressure[m] * area * np.tile(ds[i], turns) for i, m in enumerate(numbers)
+            )
         forces.append(-(parts[0] + 1j * parts[1]))
     # each crankshaft's own masses and its counterweights load its own main bearings; a
     # balancer shaft runs in bearings of its own: its rows (throw −1, which picks the last
@@ -140,7 +156,10 @@ def pin_forces(engine, state, turns, net_pressure, area):
     shaft_of = np.array([t.crankshaft_index for t in engine.throws])[masses.throw_index]
     crank_inertia = []
     for s_index in range(len(engine.crankshafts)):
-        own = np.where(np.isin(masses.cylinder, CRANKSHAFT_OWNERS) & (shaft_of == s_index),
-                       masses.masses_kg, 0.0)
+        own = np.where(
+            np.isin(masses.cylinder, CRANKSHAFT_OWNERS) & (shaft_of == s_index),
+            masses.masses_kg,
+            0.0,
+        )
         crank_inertia.append(np.tile(-(own[:, None] * accelerations).sum(axis=0), turns))
     return forces, crank_inertia

@@ -27,8 +27,14 @@ from ..errors import AnalysisError, ConfigError, UnitError
 from ..kinematics.state import FINE_SAMPLES
 from ..units import DIMENSIONS, check_finite_range, parse_quantity
 
-__all__ = ["PressureCurve", "CycleCurve", "read_pressure_csv", "read_cycle_csv", "cycle_pressure",
-           "CYCLE_GRID_DEG"]
+__all__ = [
+    "PressureCurve",
+    "CycleCurve",
+    "read_pressure_csv",
+    "read_cycle_csv",
+    "cycle_pressure",
+    "CYCLE_GRID_DEG",
+]
 
 #: resolution of the parametric cycle's integration, points per crank degree (the kinematics'
 #: fine grid): interpolated onto the analysis grid, its cylinders agree to about 1e-6 of the
@@ -62,9 +68,12 @@ class PressureCurve:
     source: str = ""
 
     def to_dict(self) -> dict:
-        return {"source": self.source, "cycle_deg": self.cycle_deg,
-                "angles_deg": [float(x) for x in self.angles_deg],
-                "pressures_Pa": [float(x) for x in self.pressures_pa]}
+        return {
+            "source": self.source,
+            "cycle_deg": self.cycle_deg,
+            "angles_deg": [float(x) for x in self.angles_deg],
+            "pressures_Pa": [float(x) for x in self.pressures_pa],
+        }
 
     def at(self, angles_deg):
         """Pressure at crank angles from the firing TDC (any, wrapped into the cycle), Pa;
@@ -101,9 +110,13 @@ class CycleCurve:
 
     def to_dict(self) -> dict:
         unit = "Pa" if self.quantity == "pressure" else "Nm"
-        return {"quantity": self.quantity, "source": self.source, "cycle_deg": self.cycle_deg,
-                "angles_deg": [float(a) for a in self.angles_deg],
-                f"values_{unit}": [float(v) for v in self.values]}
+        return {
+            "quantity": self.quantity,
+            "source": self.source,
+            "cycle_deg": self.cycle_deg,
+            "angles_deg": [float(a) for a in self.angles_deg],
+            f"values_{unit}": [float(v) for v in self.values],
+        }
 
 
 def read_pressure_csv(path, cycle_deg=None):
@@ -137,8 +150,9 @@ def read_cycle_csv(path, quantity, cycle_deg=None):
     if quantity not in ("pressure", "torque"):
         raise AnalysisError(f"must be 'pressure' or 'torque', got {quantity!r}", "quantity")
     if cycle_deg is not None and (not checks.is_real(cycle_deg) or cycle_deg not in (360, 720)):
-        raise AnalysisError(f"must be 360, 720 or None (the cycle the angles span), got "
-                            f"{cycle_deg!r}", "cycle_deg")
+        raise AnalysisError(
+            f"must be 360, 720 or None (the cycle the angles span), got {cycle_deg!r}", "cycle_deg"
+        )
     if os.path.exists(path) and not os.path.isdir(path) and not os.path.isfile(path):
         # a FIFO or a device would block or never end: only regular files are read
         raise ConfigError(path, "", "is not a regular file; give a CSV file")
@@ -152,7 +166,9 @@ def read_cycle_csv(path, quantity, cycle_deg=None):
     except UnicodeDecodeError:
         raise ConfigError(path, "", "is not UTF-8 text; give a CSV file") from None
     except (OSError, csv.Error) as exc:
-        raise ConfigError(path, "", f"cannot read the file ({getattr(exc, 'strerror', None) or exc})") from None
+        raise ConfigError(
+            path, "", f"cannot read the file ({getattr(exc, 'strerror', None) or exc})"
+        ) from None
     rows = [(i, row) for i, row in enumerate(rows, 1) if row and any(cell.strip() for cell in row)]
     example = f"angle_deg,{quantity}_{'bar' if quantity == 'pressure' else 'Nm'}"
     if not rows:
@@ -161,35 +177,58 @@ def read_cycle_csv(path, quantity, cycle_deg=None):
     unit, factor = _column_unit(path, line, header, quantity, example)
     first = header[0].strip().lower()
     if first not in ("angle_deg", "angle (deg)", "angle [deg]", "angle"):
-        raise ConfigError(path, f"line {line}", f"the first column is {header[0].strip()!r}; name "
-                                                f"it angle_deg and give crank angles in degrees")
+        raise ConfigError(
+            path,
+            f"line {line}",
+            f"the first column is {header[0].strip()!r}; name "
+            f"it angle_deg and give crank angles in degrees",
+        )
     angles, values = [], []
     for line, row in rows[1:]:
         if len(row) != 2:
-            raise ConfigError(path, f"line {line}", f"has {len(row)} column{'' if len(row) == 1 else 's'}; give two: the angle "
-                                                    f"in degrees and the {quantity}")
+            raise ConfigError(
+                path,
+                f"line {line}",
+                f"has {len(row)} column{'' if len(row) == 1 else 's'}; give two: the angle "
+                f"in degrees and the {quantity}",
+            )
         try:
             angle, value = float(row[0]), float(row[1])
         except ValueError:
-            raise ConfigError(path, f"line {line}", f"cannot read {row!r} as two numbers; write "
-                                                    "them with a decimal point (12.5, not 12,5) "
-                                                    "and separate the columns by a comma") from None
+            raise ConfigError(
+                path,
+                f"line {line}",
+                f"cannot read {row!r} as two numbers; write "
+                "them with a decimal point (12.5, not 12,5) "
+                "and separate the columns by a comma",
+            ) from None
         if not np.isfinite(angle) or not np.isfinite(value):
             raise ConfigError(path, f"line {line}", "holds a number that is not finite")
         if abs(angle) > 2 * 720.0:
-            raise ConfigError(path, f"line {line}", f"angle {angle:g}° is beyond two cycles; give "
-                                                    "crank angles in degrees over one cycle")
+            raise ConfigError(
+                path,
+                f"line {line}",
+                f"angle {angle:g}° is beyond two cycles; give "
+                "crank angles in degrees over one cycle",
+            )
         try:
             check_finite_range(value * factor, quantity, f"{value:g} {unit}", smallest=False)
         except UnitError as exc:
             raise ConfigError(path, f"line {line}", str(exc)) from None
         if quantity == "pressure" and value < 0:
-            raise ConfigError(path, f"line {line}", f"pressure {value:g} {unit} is negative; give "
-                                                    "absolute pressures")
+            raise ConfigError(
+                path,
+                f"line {line}",
+                f"pressure {value:g} {unit} is negative; give absolute pressures",
+            )
         if angles and angle <= angles[-1]:
             problem = "repeats the angle" if angle == angles[-1] else "goes back"
-            raise ConfigError(path, f"line {line}", f"{problem} ({angle:g}° after {angles[-1]:g}°); "
-                                                    "sort the rows by angle and give each once")
+            raise ConfigError(
+                path,
+                f"line {line}",
+                f"{problem} ({angle:g}° after {angles[-1]:g}°); "
+                "sort the rows by angle and give each once",
+            )
         angles.append(angle)
         values.append(value * factor)
     if len(angles) < 8:
@@ -203,27 +242,37 @@ def read_cycle_csv(path, quantity, cycle_deg=None):
         # the last row closes the cycle on the first: keep one of them
         angles, values = angles[:-1], values[:-1]
     elif span > cycle_deg or cycle_deg - span > 2 * steps.max():
-        raise ConfigError(path, f"line {rows[-1][0]}", f"the angles cover {span:g}°, not one "
-                                                       f"{cycle_deg:g}° cycle; give one cycle")
+        raise ConfigError(
+            path,
+            f"line {rows[-1][0]}",
+            f"the angles cover {span:g}°, not one {cycle_deg:g}° cycle; give one cycle",
+        )
     return CycleCurve(angles, np.array(values), float(cycle_deg), quantity, str(path))
 
 
 def _column_unit(path, line, header, quantity, example):
     """The second column's unit as written, and its factor to SI."""
     if len(header) != 2:
-        raise ConfigError(path, f"line {line}", f"the header must name two columns, such as {example}")
+        raise ConfigError(
+            path, f"line {line}", f"the header must name two columns, such as {example}"
+        )
     name = header[1].strip()
     dimension = quantity
     for prefix, suffix in ((f"{quantity}_", ""), (f"{quantity} (", ")"), (f"{quantity} [", "]")):
         if name.lower().startswith(prefix) and name.endswith(suffix) and len(name) > len(prefix):
-            unit = name[len(prefix): len(name) - len(suffix)].strip()
+            unit = name[len(prefix) : len(name) - len(suffix)].strip()
             try:
                 return unit, parse_quantity(f"1 {unit}", dimension)
             except UnitError as exc:
-                raise ConfigError(path, f"line {line}", f"the {quantity} column's unit: {exc}") from None
+                raise ConfigError(
+                    path, f"line {line}", f"the {quantity} column's unit: {exc}"
+                ) from None
     units = ", ".join(DIMENSIONS[dimension])
-    raise ConfigError(path, f"line {line}", f"the second column is {name!r}; name it "
-                                            f"{quantity}_<unit> with a unit of {units}")
+    raise ConfigError(
+        path,
+        f"line {line}",
+        f"the second column is {name!r}; name it {quantity}_<unit> with a unit of {units}",
+    )
 
 
 def _wiebe(psi, start, duration, a, m):
@@ -235,12 +284,15 @@ def _wiebe(psi, start, duration, a, m):
 def _compression_expansion(psi, volume, gas, heat_j):
     """Pressure from ψ = −180° to 180° (fine grid ``psi``, volumes ``volume``)."""
     n = gas.polytropic_exponent
-    released = heat_j * _wiebe(psi, gas.combustion_start_deg, gas.combustion_duration_deg,
-                               gas.wiebe_a, gas.wiebe_m)
+    released = heat_j * _wiebe(
+        psi, gas.combustion_start_deg, gas.combustion_duration_deg, gas.wiebe_a, gas.wiebe_m
+    )
     # p·Vⁿ = p₁·V₁ⁿ + (n − 1)·∫ Vⁿ⁻¹ dQ, by the trapezoidal rule on the fine grid
     integrand = volume ** (n - 1) * np.gradient(released, psi)
-    integral = np.concatenate([[0.0], np.cumsum(0.5 * (integrand[1:] + integrand[:-1]) * np.diff(psi))])
-    return (gas.intake_pa * volume[0] ** n + (n - 1) * integral) / volume ** n
+    integral = np.concatenate(
+        [[0.0], np.cumsum(0.5 * (integrand[1:] + integrand[:-1]) * np.diff(psi))]
+    )
+    return (gas.intake_pa * volume[0] ** n + (n - 1) * integral) / volume**n
 
 
 def cycle_pressure(gas, travel_m, cycle_deg, where="[gas]"):
@@ -279,8 +331,12 @@ def cycle_pressure(gas, travel_m, cycle_deg, where="[gas]"):
         unit, w1 = work(1.0)
         heat = (gas.imep_pa * swept - w0) / (w1 - w0)
         if heat < 0:
-            raise ConfigError(where, "gas.imep", "is below what compression and expansion alone "
-                                                 "give; raise it or leave it out for a motored cycle")
+            raise ConfigError(
+                where,
+                "gas.imep",
+                "is below what compression and expansion alone "
+                "give; raise it or leave it out for a motored cycle",
+            )
         pressure = motored + heat * (unit - motored)
     angles = np.arange(0.0, cycle_deg, 1.0 / _FINE)
     signed = (angles + cycle_deg / 2) % cycle_deg - cycle_deg / 2

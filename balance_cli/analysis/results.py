@@ -9,13 +9,19 @@ import numpy as np
 from ..checks import instance, items
 from ..errors import AnalysisError
 from ..kinematics import check_assembly
-from .firing import Firing, firing_sequence
-from .marine import DEFAULT_PRU_CLASSES, check_classes, power_related_unbalance
 from ..model import Engine
 from ..output import DOCUMENT_VERSION
-from .shaking import (DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, OrderComponents, Shaking, part_values,
-                      shaking_forces)
 from ..units import rad_s_to_rpm, wrap_degrees
+from .firing import Firing, firing_sequence
+from .marine import DEFAULT_PRU_CLASSES, check_classes, power_related_unbalance
+from .shaking import (
+    DEFAULT_MAX_ORDER,
+    DEFAULT_SAMPLES,
+    OrderComponents,
+    Shaking,
+    part_values,
+    shaking_forces,
+)
 
 __all__ = ["EngineResult", "Comparison", "analyse", "compare", "find_reference"]
 
@@ -89,7 +95,9 @@ class EngineResult:
         """Order ``k`` (1-based) of the forces and moments; KeyError outside 1..max_order."""
         return self.shaking.order(k)
 
-    def counterweighted_locus(self, order: int | None = None, points: int | None = None) -> np.ndarray:
+    def counterweighted_locus(
+        self, order: int | None = None, points: int | None = None
+    ) -> np.ndarray:
         """The resultant force over one revolution after an ideal crankshaft counterweight, N
         (complex: real along the reference axis); one order only if ``order`` is given.
         ``points`` defaults to four times the samples."""
@@ -126,16 +134,25 @@ class EngineResult:
             if o.order == 1 and (skip_forward or skip_backward):
                 forward = o.force_forward if part == "force" else o.moment_forward
                 backward = o.force_backward if part == "force" else o.moment_backward
-                values = part_values(0j if skip_forward else forward,
-                                     0j if skip_backward else backward, floor, unit,
-                                     engine.vertical_axis_rad)
+                values = part_values(
+                    0j if skip_forward else forward,
+                    0j if skip_backward else backward,
+                    floor,
+                    unit,
+                    engine.vertical_axis_rad,
+                )
             else:
                 values = records[o.order - 1][part]
             if values[f"max_{unit}"] > (best["max"] if best else 0.0):
-                best = {"order": o.order, "max": values[f"max_{unit}"], "axis_deg": values["axis_deg"],
-                        "min": values[f"min_{unit}"],
-                        "sense": "forward" if values[f"forward_{unit}"] >= values[f"backward_{unit}"]
-                        else "backward"}
+                best = {
+                    "order": o.order,
+                    "max": values[f"max_{unit}"],
+                    "axis_deg": values["axis_deg"],
+                    "min": values[f"min_{unit}"],
+                    "sense": "forward"
+                    if values[f"forward_{unit}"] >= values[f"backward_{unit}"]
+                    else "backward",
+                }
         if best is None:
             return None
         best["direction"] = _direction_words(best, engine.vertical_axis_rad, part)
@@ -151,15 +168,15 @@ class EngineResult:
             object.__setattr__(self, "_order_records", cached)
         return cached
 
-    def power_related_unbalance(self, power_w: float | None = None, orders=(1, 2),
-                                classes=None):
+    def power_related_unbalance(self, power_w: float | None = None, orders=(1, 2), classes=None):
         """The power related unbalance of this engine (:mod:`balance_cli.analysis.marine`): a
         :class:`~balance_cli.analysis.marine.PowerRelatedUnbalance` (``available`` False, with
         its ``note``, without a power)."""
         return power_related_unbalance(self, power_w, orders, classes or DEFAULT_PRU_CLASSES)
 
-    def to_dict(self, reference: "EngineResult | None" = None, pru_classes=None,
-                pru_orders=(1, 2)) -> dict:
+    def to_dict(
+        self, reference: "EngineResult | None" = None, pru_classes=None, pru_orders=(1, 2)
+    ) -> dict:
         """This engine's entry of ``compare --format json`` (SI units; see the README).
 
         ``reference`` is the result the percentage refers to (default: this one, as in the
@@ -196,8 +213,10 @@ class EngineResult:
             "pru_note": pru.note,
             "sampling_ok": self.shaking.sampling_ok,
             # the cached records are flat dicts in a dict: a copy two levels deep is a copy
-            "orders": [{k: dict(v) if isinstance(v, dict) else v for k, v in record.items()}
-                       for record in self.order_records()],
+            "orders": [
+                {k: dict(v) if isinstance(v, dict) else v for k, v in record.items()}
+                for record in self.order_records()
+            ],
         }
 
 
@@ -218,8 +237,12 @@ def _main_record(main, unit):
     """``main_order``'s entry in JSON: its ``max`` with the unit in the key."""
     if main is None:
         return None
-    return {"order": main["order"], f"max_{unit}": main["max"], "axis_deg": main["axis_deg"],
-            "direction": main["direction"]}
+    return {
+        "order": main["order"],
+        f"max_{unit}": main["max"],
+        "axis_deg": main["axis_deg"],
+        "direction": main["direction"],
+    }
 
 
 def _direction_words(main, vertical_rad, part):
@@ -241,8 +264,9 @@ def _direction_words(main, vertical_rad, part):
     return f"{signed:+.0f}° from {names[0]}"
 
 
-def analyse(engine: Engine, samples: int = DEFAULT_SAMPLES,
-            max_order: int = DEFAULT_MAX_ORDER) -> EngineResult:
+def analyse(
+    engine: Engine, samples: int = DEFAULT_SAMPLES, max_order: int = DEFAULT_MAX_ORDER
+) -> EngineResult:
     """Shaking forces and moments, firing and largest resultant of ``engine``.
 
     Parameters
@@ -277,11 +301,13 @@ def analyse(engine: Engine, samples: int = DEFAULT_SAMPLES,
         firing=firing_sequence(engine),
         samples=samples,
         largest_force_n=_above_floor(shaking.largest_force(), engine.noise_floor_n),
-        counterweighted_force_n=_above_floor(shaking.largest_force(forward, backward),
-                                             engine.noise_floor_n),
+        counterweighted_force_n=_above_floor(
+            shaking.largest_force(forward, backward), engine.noise_floor_n
+        ),
         largest_moment_nm=_above_floor(shaking.largest_moment(), engine.noise_floor_nm),
-        counterweighted_moment_nm=_above_floor(shaking.largest_moment(forward, backward),
-                                               engine.noise_floor_nm),
+        counterweighted_moment_nm=_above_floor(
+            shaking.largest_moment(forward, backward), engine.noise_floor_nm
+        ),
     )
 
 
@@ -331,13 +357,18 @@ class Comparison:
             "samples": self.samples,
             "max_order": self.max_order,
             "reference": self.reference.engine.name,
-            "engines": [r.to_dict(self.reference, self.pru_classes, self.pru_orders)
-                        for r in self.results],
+            "engines": [
+                r.to_dict(self.reference, self.pru_classes, self.pru_orders) for r in self.results
+            ],
         }
 
 
-def compare(results: "Iterable[EngineResult]", reference: str | None = None,
-            pru_classes=None, pru_orders=None) -> Comparison:
+def compare(
+    results: "Iterable[EngineResult]",
+    reference: str | None = None,
+    pru_classes=None,
+    pru_orders=None,
+) -> Comparison:
     """The comparison of analysed engines (:func:`analyse`, same settings); ``reference`` is
     the name (or a unique prefix) of the engine the percentages refer to, default the first;
     ``pru_classes`` the bounds of the power related unbalance's classes (N·m/kW; default the
@@ -345,15 +376,19 @@ def compare(results: "Iterable[EngineResult]", reference: str | None = None,
     2, those analysed)."""
     results = tuple(items(results, EngineResult, "results"))
     if reference is not None and not isinstance(reference, str):
-        raise AnalysisError(f"must be an engine's name (a str) or None, got {reference!r}",
-                            "reference")
+        raise AnalysisError(
+            f"must be an engine's name (a str) or None, got {reference!r}", "reference"
+        )
     names = [r.engine.name for r in results]
     twice = next((n for n in names if names.count(n) > 1), None)
     if twice is not None:
         files = ", ".join(r.engine.config_path for r in results if r.engine.name == twice)
-        raise AnalysisError(f"name {twice!r} more than once ({files}): engines are told apart by "
-                            "name (in percentages, regression tables, legends); give each "
-                            "configuration its own name, or compare each file once", "results")
+        raise AnalysisError(
+            f"name {twice!r} more than once ({files}): engines are told apart by "
+            "name (in percentages, regression tables, legends); give each "
+            "configuration its own name, or compare each file once",
+            "results",
+        )
     if len({(r.samples, r.max_order) for r in results}) > 1:
         raise AnalysisError("must all be analysed with the same samples and max_order", "results")
     if pru_classes is not None:
@@ -361,11 +396,18 @@ def compare(results: "Iterable[EngineResult]", reference: str | None = None,
     if pru_orders is None:
         pru_orders = tuple(k for k in (1, 2) if k <= results[0].max_order)
     # an order asked twice is judged once
-    pru_orders = (tuple(dict.fromkeys(pru_orders)) if isinstance(pru_orders, (list, tuple))
-                  else pru_orders)
-    if not isinstance(pru_orders, tuple) or not pru_orders or not all(
+    pru_orders = (
+        tuple(dict.fromkeys(pru_orders)) if isinstance(pru_orders, (list, tuple)) else pru_orders
+    )
+    if (
+        not isinstance(pru_orders, tuple)
+        or not pru_orders
+        or not all(
             isinstance(k, int) and not isinstance(k, bool) and 1 <= k <= results[0].max_order
-            for k in pru_orders):
-        raise AnalysisError(f"must be orders from 1 to {results[0].max_order}, got "
-                            f"{pru_orders!r}", "pru_orders")
+            for k in pru_orders
+        )
+    ):
+        raise AnalysisError(
+            f"must be orders from 1 to {results[0].max_order}, got {pru_orders!r}", "pru_orders"
+        )
     return Comparison(results, find_reference(results, reference), pru_classes, pru_orders)

@@ -41,12 +41,13 @@ class Series:
         orders = []
         for j in range(1, int(round(max_order * per_turn)) + 1):
             cos, sin = float(2 * c[j].real), float(-2 * c[j].imag)
-            orders.append((j / per_turn, cos if abs(cos) >= floor else 0.0,
-                           sin if abs(sin) >= floor else 0.0))
+            orders.append(
+                (j / per_turn, cos if abs(cos) >= floor else 0.0, sin if abs(sin) >= floor else 0.0)
+            )
         mean = c[0].real if abs(c[0].real) >= floor else 0.0
         theta = np.arange(n) * period_deg / n
         if np.abs(curve).max() < floor:
-            curve = np.zeros_like(curve)   # rounding noise only (a centred piston's tilting)
+            curve = np.zeros_like(curve)  # rounding noise only (a centred piston's tilting)
         return cls(float(period_deg), float(mean), tuple(orders), theta, curve, unit)
 
     @property
@@ -70,20 +71,30 @@ class Series:
                 if abs(order - k) < 1e-9:
                     return cos, sin
         highest = self.orders[-1][0] if self.orders else 0
-        raise OrderError(f"order {k!r} is not among the orders of this series (multiples of "
-                         f"{360 / self.period_deg:g} up to {highest:g})")
+        raise OrderError(
+            f"order {k!r} is not among the orders of this series (multiples of "
+            f"{360 / self.period_deg:g} up to {highest:g})"
+        )
 
     def to_dict(self) -> dict:
         """``mean_<unit>``, ``max_``, ``min_``, ``range_`` and ``orders[]`` (``order``, ``cos_``,
         ``sin_``, ``amplitude_``, ``phase_deg``: the order is amplitude·cos(kθ − phase))."""
         u = self.unit
         return {
-            f"mean_{u}": self.mean, f"max_{u}": self.max, f"min_{u}": self.min,
+            f"mean_{u}": self.mean,
+            f"max_{u}": self.max,
+            f"min_{u}": self.min,
             f"range_{u}": self.range,
-            "orders": [{"order": k, f"cos_{u}": cos, f"sin_{u}": sin,
-                        f"amplitude_{u}": math.hypot(cos, sin),
-                        "phase_deg": phasor_deg(complex(cos, sin))}
-                       for k, cos, sin in self.orders],
+            "orders": [
+                {
+                    "order": k,
+                    f"cos_{u}": cos,
+                    f"sin_{u}": sin,
+                    f"amplitude_{u}": math.hypot(cos, sin),
+                    "phase_deg": phasor_deg(complex(cos, sin)),
+                }
+                for k, cos, sin in self.orders
+            ],
         }
 
 

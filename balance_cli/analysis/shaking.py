@@ -15,8 +15,18 @@ from ..units import phasor_deg, wrap_degrees
 if TYPE_CHECKING:
     from ..model import Engine
 
-__all__ = ["DEFAULT_SAMPLES", "DEFAULT_MAX_ORDER", "MAX_SAMPLES", "OrderComponents", "Shaking",
-           "shaking_forces", "ellipse", "check_settings", "part_values", "directional"]
+__all__ = [
+    "DEFAULT_SAMPLES",
+    "DEFAULT_MAX_ORDER",
+    "MAX_SAMPLES",
+    "OrderComponents",
+    "Shaking",
+    "shaking_forces",
+    "ellipse",
+    "check_settings",
+    "part_values",
+    "directional",
+]
 
 DEFAULT_SAMPLES = 256
 DEFAULT_MAX_ORDER = 8
@@ -34,12 +44,18 @@ def check_settings(samples, max_order):
         raise AnalysisError(f"must be at least 1, got {max_order}", "max_order")
     highest = (MAX_SAMPLES - 1) // 4
     if minimum_samples(max_order) > MAX_SAMPLES:
-        raise AnalysisError(f"must be at most {highest}: {MAX_SAMPLES} samples, the most, resolve "
-                            f"orders up to {highest}; got {max_order}", "max_order")
+        raise AnalysisError(
+            f"must be at most {highest}: {MAX_SAMPLES} samples, the most, resolve "
+            f"orders up to {highest}; got {max_order}",
+            "max_order",
+        )
     low = minimum_samples(max_order)
     if not low <= samples <= MAX_SAMPLES:
-        raise AnalysisError(f"must be from {low} to {MAX_SAMPLES} for orders up to {max_order} "
-                            f"(more than four a revolution per order), got {samples}", "samples")
+        raise AnalysisError(
+            f"must be from {low} to {MAX_SAMPLES} for orders up to {max_order} "
+            f"(more than four a revolution per order), got {samples}",
+            "samples",
+        )
 
 
 def ellipse(forward, backward):
@@ -49,7 +65,9 @@ def ellipse(forward, backward):
         axis = 0.0
     else:
         # both phasors line up where kθ + arg X⁺ = −kθ + arg X⁻
-        axis = (math.atan2(forward.imag, forward.real) + math.atan2(backward.imag, backward.real)) / 2
+        axis = (
+            math.atan2(forward.imag, forward.real) + math.atan2(backward.imag, backward.real)
+        ) / 2
         axis = math.radians(wrap_degrees(math.degrees(axis), 180.0))
     return a + b, abs(a - b), axis
 
@@ -87,17 +105,26 @@ def part_values(forward, backward, floor, unit, vertical_rad=0.0, components=Tru
     forward, backward = clean(forward), clean(backward)
     largest, smallest, axis = ellipse(forward, backward)
     values = {
-        f"forward_{unit}": abs(forward), "forward_deg": phasor_deg(forward),
-        f"backward_{unit}": abs(backward), "backward_deg": phasor_deg(backward),
-        f"max_{unit}": largest, f"min_{unit}": smallest if smallest >= floor else 0.0,
+        f"forward_{unit}": abs(forward),
+        "forward_deg": phasor_deg(forward),
+        f"backward_{unit}": abs(backward),
+        "backward_deg": phasor_deg(backward),
+        f"max_{unit}": largest,
+        f"min_{unit}": smallest if smallest >= floor else 0.0,
         "axis_deg": math.degrees(axis) if forward and backward else None,
     }
     if components:
         vertical, horizontal = directional(forward, backward, vertical_rad)
         v_size, v_phase = _component(vertical, floor)
         h_size, h_phase = _component(horizontal, floor)
-        values.update({f"vertical_{unit}": v_size, "vertical_deg": v_phase,
-                       f"horizontal_{unit}": h_size, "horizontal_deg": h_phase})
+        values.update(
+            {
+                f"vertical_{unit}": v_size,
+                "vertical_deg": v_phase,
+                f"horizontal_{unit}": h_size,
+                "horizontal_deg": h_phase,
+            }
+        )
     return values
 
 
@@ -114,18 +141,26 @@ class OrderComponents:
     moment_forward: complex
     moment_backward: complex
 
-    def to_dict(self, noise_floor_n: float = 0.0, noise_floor_nm: float | None = None,
-                vertical_rad: float = 0.0) -> dict:
+    def to_dict(
+        self,
+        noise_floor_n: float = 0.0,
+        noise_floor_nm: float | None = None,
+        vertical_rad: float = 0.0,
+    ) -> dict:
         """The order as ``compare --format json`` writes it (SI). Forces below
         ``noise_floor_n`` (N) and moments below ``noise_floor_nm`` (N·m; default the same
         number) are rounding noise: exact zeros, phase 0. ``vertical_rad`` is the engine's
         vertical (:attr:`Engine.vertical_axis_rad`), from the reference axis."""
         floor_nm = noise_floor_n if noise_floor_nm is None else noise_floor_nm
-        return {"order": self.order,
-                "force": part_values(self.force_forward, self.force_backward, noise_floor_n, "N",
-                                     vertical_rad),
-                "moment": part_values(self.moment_forward, self.moment_backward, floor_nm, "Nm",
-                                      vertical_rad)}
+        return {
+            "order": self.order,
+            "force": part_values(
+                self.force_forward, self.force_backward, noise_floor_n, "N", vertical_rad
+            ),
+            "moment": part_values(
+                self.moment_forward, self.moment_backward, floor_nm, "Nm", vertical_rad
+            ),
+        }
 
 
 @dataclass(frozen=True)
@@ -160,13 +195,21 @@ class Shaking:
     def records(self, engine: "Engine") -> list:
         """Every order's JSON record (:meth:`OrderComponents.to_dict`) with ``engine``'s noise
         floors and vertical: the one place orders become records."""
-        return [o.to_dict(engine.noise_floor_n, engine.noise_floor_nm, engine.vertical_axis_rad)
-                for o in self.orders]
+        return [
+            o.to_dict(engine.noise_floor_n, engine.noise_floor_nm, engine.vertical_axis_rad)
+            for o in self.orders
+        ]
 
     def order(self, k: int) -> OrderComponents:
         """Order ``k`` (1-based); KeyError outside 1..max_order."""
-        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 1 <= k <= self.max_order:
-            raise OrderError(f"order {k!r} is not among the orders analysed (1 to {self.max_order})", "k")
+        if (
+            isinstance(k, bool)
+            or not isinstance(k, (int, np.integer))
+            or not 1 <= k <= self.max_order
+        ):
+            raise OrderError(
+                f"order {k!r} is not among the orders analysed (1 to {self.max_order})", "k"
+            )
         return self.orders[k - 1]
 
     def force(self, upsample=1, skip_forward_first=False, skip_backward_first=False):
@@ -174,8 +217,9 @@ class Shaking:
         without the forward (backward) first order when ``skip_forward_first``
         (``skip_backward_first``): what ideal counterweights on a crankshaft turning with
         (against) the first take away."""
-        return _over_revolution(self.force_coefficients, upsample, skip_forward_first,
-                                skip_backward_first)
+        return _over_revolution(
+            self.force_coefficients, upsample, skip_forward_first, skip_backward_first
+        )
 
     def largest_force(self, skip_forward_first=False, skip_backward_first=False) -> float:
         """Largest magnitude of the resultant force over a revolution, N."""
@@ -183,8 +227,9 @@ class Shaking:
 
     def moment(self, upsample=1, skip_forward_first=False, skip_backward_first=False):
         """The free moment over one revolution (all orders), N·m, on a grid N·upsample."""
-        return _over_revolution(self.moment_coefficients, upsample, skip_forward_first,
-                                skip_backward_first)
+        return _over_revolution(
+            self.moment_coefficients, upsample, skip_forward_first, skip_backward_first
+        )
 
     def largest_moment(self, skip_forward_first=False, skip_backward_first=False) -> float:
         """Largest magnitude of the free moment over a revolution, N·m."""
@@ -196,10 +241,15 @@ class Shaking:
         axis); one order only if ``order`` is given."""
         n = self.force_coefficients.shape[-1]
         points = 4 * n if points is None else points
-        if isinstance(points, bool) or not isinstance(points, int) or points < 1 \
-                or (order is None and points % n):
-            raise AnalysisError(f"must be a positive multiple of the {n} samples, got {points!r}",
-                                "points")
+        if (
+            isinstance(points, bool)
+            or not isinstance(points, int)
+            or points < 1
+            or (order is None and points % n)
+        ):
+            raise AnalysisError(
+                f"must be a positive multiple of the {n} samples, got {points!r}", "points"
+            )
         if order is not None:
             o = self.order(order)
             theta = 2 * np.pi * np.arange(points) / points
@@ -213,48 +263,69 @@ class Shaking:
         crank-pin masses together as "pins", counterweights as built as "counterweights" and
         balancer-shaft masses as "shafts"; they add up to the engine's phasors (the star)."""
         if self.mass_coefficients is None or self.masses is None:
-            raise AnalysisError("has no per-mass shares once a balancer is added; ask the "
-                                "engine's own analysis", "cylinder_phasors")
+            raise AnalysisError(
+                "has no per-mass shares once a balancer is added; ask the engine's own analysis",
+                "cylinder_phasors",
+            )
         self.order(order)
         shares = []
         owners = self.masses.cylinder
         numbers: list[int | str] = list(dict.fromkeys(int(n) for n in owners if n > 0))
-        groups = {"pins": (BIG_ENDS, CRANK), "counterweights": (COUNTERWEIGHT,),
-                  "shafts": (BALANCER,)}
+        groups = {
+            "pins": (BIG_ENDS, CRANK),
+            "counterweights": (COUNTERWEIGHT,),
+            "shafts": (BALANCER,),
+        }
         for number in numbers + list(groups):
             mine = np.isin(owners, groups[number]) if number in groups else owners == number
             if number in groups and not mine.any():
                 continue
-            shares.append((str(number), complex(self.mass_coefficients[mine, order].sum()),
-                           complex(self.mass_coefficients[mine, -order].sum())))
+            shares.append(
+                (
+                    str(number),
+                    complex(self.mass_coefficients[mine, order].sum()),
+                    complex(self.mass_coefficients[mine, -order].sum()),
+                )
+            )
         return shares
 
-    def cylinder_moment_phasors(self, order: int, mean_z_m: float) -> list[tuple[str, complex, complex]]:
+    def cylinder_moment_phasors(
+        self, order: int, mean_z_m: float
+    ) -> list[tuple[str, complex, complex]]:
         """Each cylinder's share of the free moment of order ``order``: [(label, forward N·m,
         backward N·m)], each mass's force times its lever z − ``mean_z_m`` (the engine's z̄,
         which the moments were taken about); they add up to the engine's moment phasors."""
         if self.mass_coefficients is None or self.masses is None:
-            raise AnalysisError("has no per-mass shares once a balancer is added; ask the "
-                                "engine's own analysis", "cylinder_moment_phasors")
-        levered = replace(self, mass_coefficients=(self.masses.z_m - mean_z_m)[:, None]
-                          * self.mass_coefficients)
+            raise AnalysisError(
+                "has no per-mass shares once a balancer is added; ask the engine's own analysis",
+                "cylinder_moment_phasors",
+            )
+        levered = replace(
+            self, mass_coefficients=(self.masses.z_m - mean_z_m)[:, None] * self.mass_coefficients
+        )
         return levered.cylinder_phasors(order)
 
-    def moment_locus(self, order=None, skip_forward_first=False, points=None,
-                     skip_backward_first=False):
+    def moment_locus(
+        self, order=None, skip_forward_first=False, points=None, skip_backward_first=False
+    ):
         """The free moment over one revolution, N·m, at the angles :meth:`locus` takes for the
         force; ``skip_forward_first`` leaves out the forward first order (an ideal
         counterweight in two planes cancels that couple as it cancels the force)."""
         # the force locus of a copy whose forces are these moments: one path for both
-        swapped = replace(self, force_coefficients=self.moment_coefficients,
-                          orders=tuple(replace(o, force_forward=o.moment_forward,
-                                               force_backward=o.moment_backward)
-                                       for o in self.orders))
+        swapped = replace(
+            self,
+            force_coefficients=self.moment_coefficients,
+            orders=tuple(
+                replace(o, force_forward=o.moment_forward, force_backward=o.moment_backward)
+                for o in self.orders
+            ),
+        )
         return swapped.locus(order, skip_forward_first, points, skip_backward_first)
 
     @classmethod
-    def from_coefficients(cls, force, moment, max_order, sampling_ok=True, mass_coefficients=None,
-                          masses=None):
+    def from_coefficients(
+        cls, force, moment, max_order, sampling_ok=True, mass_coefficients=None, masses=None
+    ):
         """Orders 1..max_order read off full coefficient arrays (N, N·m)."""
         orders = np.arange(1, max_order + 1)
         ff, fb = forward_backward(force, orders)
@@ -286,8 +357,9 @@ def _over_revolution(coefficients, upsample, skip_forward_first, skip_backward_f
     return synthesize(c, upsample)
 
 
-def shaking_forces(engine: "Engine", samples: int = DEFAULT_SAMPLES,
-                   max_order: int = DEFAULT_MAX_ORDER) -> Shaking:
+def shaking_forces(
+    engine: "Engine", samples: int = DEFAULT_SAMPLES, max_order: int = DEFAULT_MAX_ORDER
+) -> Shaking:
     """Resultant shaking force and free moment of ``engine``, order by order.
 
     The force is the sum of the inertia forces −m·a of every point mass; the moment is

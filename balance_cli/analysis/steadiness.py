@@ -145,8 +145,9 @@ def _dominant_order(torque, period_deg):
     return int(np.argmax(c)) * 360.0 / period_deg
 
 
-def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller",
-               reduced_mass_kgm2=None) -> Steadiness:
+def steadiness(
+    torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller", reduced_mass_kgm2=None
+) -> Steadiness:
     """The periodic speed of an engine driving a load.
 
     Parameters
@@ -172,7 +173,7 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
         a parameter out of range, a load that is not one of LOADS, or a torque whose mean is
         not positive under a propeller
     """
-    from scipy.integrate import cumulative_trapezoid   # only the steadiness needs scipy
+    from scipy.integrate import cumulative_trapezoid  # only the steadiness needs scipy
 
     torque = _curve(torque_nm, "torque_nm")
     if len(torque) < 8:
@@ -184,8 +185,11 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
         raise AnalysisError(f"must be one of {', '.join(LOADS)}, got {load!r}", "load")
     scale = float(np.abs(torque).max())
     if float(torque.max() - torque.min()) <= 1e-12 * scale:
-        raise AnalysisError("does not vary over the cycle: the speed is constant and the steadiness "
-                            "infinite; give a torque that varies", "torque_nm")
+        raise AnalysisError(
+            "does not vary over the cycle: the speed is constant and the steadiness "
+            "infinite; give a torque that varies",
+            "torque_nm",
+        )
     period = math.radians(period_deg)
     n = len(torque)
     theta = np.arange(n) * period / n
@@ -194,15 +198,22 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
     mu_rate = np.fft.ifft(np.fft.fft(mu) * 1j * k).real
     mean_torque = float(torque.mean())
     if abs(mean_torque) <= 1e-12 * scale:
-        mean_torque = 0.0   # rounding: a torque that averages out
-    drive, rate, total = _periodic(torque, period), _periodic(mu_rate, period), _periodic(mu, period)
+        mean_torque = 0.0  # rounding: a torque that averages out
+    drive, rate, total = (
+        _periodic(torque, period),
+        _periodic(mu_rate, period),
+        _periodic(mu, period),
+    )
     # the speed is written base·(1 + deviation), the deviation from logarithms of ratios
     # close to 1 (log1p, expm1): ω itself cannot resolve a fluctuation below 1e-16 of it,
     # which made a steadiness of 1e17 "inf" and a mean speed below the minimum
     if load == "propeller":
         if mean_torque <= 0:
-            raise AnalysisError(f"has a mean of {mean_torque:.4g} N·m: a propeller absorbs only a "
-                                "positive mean torque", "torque_nm")
+            raise AnalysisError(
+                f"has a mean of {mean_torque:.4g} N·m: a propeller absorbs only a "
+                "positive mean torque",
+                "torque_nm",
+            )
         ell = mean_torque / speed_rad_s**2
 
         # the periodic solution of u' + g·u = f in closed form, u = e^(−G)·(u₀ + F), F = ∫f·e^G,
@@ -212,18 +223,27 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
         g = (rate(fine) + 2 * ell) / (inertia_kgm2 + total(fine))
         f = 2 * drive(fine) / (inertia_kgm2 + total(fine))
         big_g = cumulative_trapezoid(g, fine, initial=0.0)
-        if big_g[-1] > 200:   # e^G would reach the limits of floating point
-            raise AnalysisError("is too small for this torque and load: the speed could not "
-                                "settle within the cycle; give a larger one", "inertia_kgm2")
-        if not big_g[-1] > 0:   # no damping within a cycle: no periodic solution to pick
-            raise AnalysisError("is too large for this propeller: its load could not hold the "
-                                "speed within a cycle; give a smaller one", "inertia_kgm2")
+        if big_g[-1] > 200:  # e^G would reach the limits of floating point
+            raise AnalysisError(
+                "is too small for this torque and load: the speed could not "
+                "settle within the cycle; give a larger one",
+                "inertia_kgm2",
+            )
+        if not big_g[-1] > 0:  # no damping within a cycle: no periodic solution to pick
+            raise AnalysisError(
+                "is too large for this propeller: its load could not hold the "
+                "speed within a cycle; give a smaller one",
+                "inertia_kgm2",
+            )
         big_f = cumulative_trapezoid(f * np.exp(big_g), fine, initial=0.0)
         start = big_f[-1] / math.expm1(big_g[-1])
         ratio = big_f / start
         if not start > 0 or np.any(ratio <= -1):
-            raise AnalysisError("is too small for this torque: the engine would stop within the "
-                                "cycle; give a larger one", "inertia_kgm2")
+            raise AnalysisError(
+                "is too small for this torque: the engine would stop within the "
+                "cycle; give a larger one",
+                "inertia_kgm2",
+            )
         base = math.sqrt(start)
         deviation = np.expm1(0.5 * np.interp(theta, fine, np.log1p(ratio) - big_g))
     else:
@@ -233,7 +253,7 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
         excess = 2 * (drive(fine) - mean_torque)
         integral = np.interp(theta, fine, cumulative_trapezoid(excess, fine, initial=0.0))
         inertia = inertia_kgm2 + mu
-        lowest = float(np.max(-integral))   # (I + μ)·u must stay positive
+        lowest = float(np.max(-integral))  # (I + μ)·u must stay positive
 
         def mean_speed(constant):
             return float(np.sqrt((constant + integral) / inertia).mean()) - speed_rad_s
@@ -241,29 +261,52 @@ def steadiness(torque_nm, period_deg, inertia_kgm2, speed_rad_s, load="propeller
         top = lowest + inertia.max() * speed_rad_s**2 * 4 + 1.0
         if mean_speed(lowest) >= 0:
             # even a speed touching zero once a cycle averages more than the mean asked for
-            raise AnalysisError("is too small for this torque: the engine would stop within the "
-                                "cycle; give a larger one", "inertia_kgm2")
+            raise AnalysisError(
+                "is too small for this torque: the engine would stop within the "
+                "cycle; give a larger one",
+                "inertia_kgm2",
+            )
         constant = brentq(mean_speed, lowest, top, xtol=1e-14 * top)
         if not constant > 0 or np.any(integral / constant <= -1):
-            raise AnalysisError("is too small for this torque: the engine would stop within the "
-                                "cycle; give a larger one", "inertia_kgm2")
+            raise AnalysisError(
+                "is too small for this torque: the engine would stop within the "
+                "cycle; give a larger one",
+                "inertia_kgm2",
+            )
         # ω² = K·(1 + J/K)/(I_m·(1 + (μ − μ̄)/I_m)), I_m = I + μ̄
         mean_inertia = float(inertia.mean())
         base = math.sqrt(constant / mean_inertia)
-        deviation = np.expm1(0.5 * (np.log1p(integral / constant)
-                                    - np.log1p((inertia - mean_inertia) / mean_inertia)))
+        deviation = np.expm1(
+            0.5
+            * (np.log1p(integral / constant) - np.log1p((inertia - mean_inertia) / mean_inertia))
+        )
     speed = base * (1.0 + deviation)
     if not (math.isfinite(base) and np.all(np.isfinite(deviation)) and np.all(speed > 0)):
-        raise AnalysisError("is too small for this torque: the engine would stop within the "
-                            "cycle; give a larger one", "inertia_kgm2")
-    result = Steadiness(np.degrees(theta), speed, float(inertia_kgm2), load, mean_torque,
-                        float(torque.max() - torque.min()), _dominant_order(torque, period_deg),
-                        float(mu.mean()), base, deviation)
+        raise AnalysisError(
+            "is too small for this torque: the engine would stop within the "
+            "cycle; give a larger one",
+            "inertia_kgm2",
+        )
+    result = Steadiness(
+        np.degrees(theta),
+        speed,
+        float(inertia_kgm2),
+        load,
+        mean_torque,
+        float(torque.max() - torque.min()),
+        _dominant_order(torque, period_deg),
+        float(mu.mean()),
+        base,
+        deviation,
+    )
     if not math.isfinite(result.factor):
         # the deviation itself vanished: beyond what a double resolves even this way
-        raise AnalysisError("makes the speed vary by less than a double resolves (its "
-                            "steadiness beyond 1e300); give a smaller one or a torque that "
-                            "varies more", "inertia_kgm2")
+        raise AnalysisError(
+            "makes the speed vary by less than a double resolves (its "
+            "steadiness beyond 1e300); give a smaller one or a torque that "
+            "varies more",
+            "inertia_kgm2",
+        )
     return result
 
 
@@ -277,8 +320,10 @@ def _real(value):
 
 def _period(period_deg):
     if not _real(period_deg) or float(period_deg) not in (360.0, 720.0):
-        raise AnalysisError(f"must be 360 (a two-stroke's cycle) or 720 (a four-stroke's), got "
-                            f"{period_deg!r}", "period_deg")
+        raise AnalysisError(
+            f"must be 360 (a two-stroke's cycle) or 720 (a four-stroke's), got {period_deg!r}",
+            "period_deg",
+        )
     return float(period_deg)
 
 
@@ -299,38 +344,43 @@ def _reduced_mass(values, n, period_deg):
         mu = np.tile(mu, 2)
     else:
         one = f" or {n // 2} (one revolution)" if turns == 2 and n % 2 == 0 else ""
-        raise AnalysisError(f"must have as many values as the torque, {n}{one}, got {len(mu)}",
-                            "reduced_mass_kgm2")
+        raise AnalysisError(
+            f"must have as many values as the torque, {n}{one}, got {len(mu)}", "reduced_mass_kgm2"
+        )
     if np.any(mu < 0):
-        raise AnalysisError("must not be negative: it is a kinetic energy's coefficient",
-                            "reduced_mass_kgm2")
+        raise AnalysisError(
+            "must not be negative: it is a kinetic energy's coefficient", "reduced_mass_kgm2"
+        )
     return mu
 
 
-def flywheel_for(target, torque_nm, period_deg, speed_rad_s, load="propeller",
-                 reduced_mass_kgm2=None) -> float:
+def flywheel_for(
+    target, torque_nm, period_deg, speed_rad_s, load="propeller", reduced_mass_kgm2=None
+) -> float:
     """The flywheel inertia I (kg·m²) at which the integrated steadiness is ``target`` (0 when
     the smallest inertia tried, 1e-9 kg·m², already reaches it)."""
     from scipy.optimize import brentq
 
     if not _real(target) or not 0.5 < target < math.inf:
-        raise AnalysisError(f"must be a steadiness above ½ (the least there is), got {target!r}",
-                            "target")
+        raise AnalysisError(
+            f"must be a steadiness above ½ (the least there is), got {target!r}", "target"
+        )
     target = float(target)
     # every other argument checked once, as steadiness checks it, before the root finder
     # turns an error about them into "the engine stops"
     try:
         steadiness(torque_nm, period_deg, 1.0, speed_rad_s, load, reduced_mass_kgm2)
     except AnalysisError as error:
-        if error.parameter != "inertia_kgm2":   # that one is the root finder's to vary
+        if error.parameter != "inertia_kgm2":  # that one is the root finder's to vary
             raise
 
     def factor_at(inertia):
         try:
-            factor = steadiness(torque_nm, period_deg, inertia, speed_rad_s, load,
-                                reduced_mass_kgm2).factor
+            factor = steadiness(
+                torque_nm, period_deg, inertia, speed_rad_s, load, reduced_mass_kgm2
+            ).factor
         except AnalysisError:
-            return None   # the engine stops within the cycle: far too little inertia
+            return None  # the engine stops within the cycle: far too little inertia
         return factor if math.isfinite(factor) else None
 
     def excess(inertia):
@@ -356,7 +406,10 @@ def flywheel_for(target, torque_nm, period_deg, speed_rad_s, load="propeller",
             if least is not None:
                 break
         about = f"about {least:.10g}" if least is not None else "unknown"
-        raise AnalysisError(f"{target:.10g} is below the least steadiness this torque and load "
-                            f"allow before the engine stops ({about}, with {found:.4g} kg·m²); "
-                            "ask for more", "target")
+        raise AnalysisError(
+            f"{target:.10g} is below the least steadiness this torque and load "
+            f"allow before the engine stops ({about}, with {found:.4g} kg·m²); "
+            "ask for more",
+            "target",
+        )
     return found

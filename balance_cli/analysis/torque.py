@@ -62,10 +62,16 @@ class CrankshaftTorque:
     main_bearings: "PinForce | None" = None
 
     def to_dict(self, max_order, floor_n) -> dict:
-        return {"crankshaft": self.number, "direction": self.direction,
-                "torque": self.torque.to_dict(),
-                "main_bearings": (None if self.main_bearings is None else
-                                  self.main_bearings.to_dict(max_order, floor_n))}
+        return {
+            "crankshaft": self.number,
+            "direction": self.direction,
+            "torque": self.torque.to_dict(),
+            "main_bearings": (
+                None
+                if self.main_bearings is None
+                else self.main_bearings.to_dict(max_order, floor_n)
+            ),
+        }
 
 
 @dataclass(frozen=True)
@@ -130,25 +136,33 @@ class TorqueResult:
         """This engine's entry of ``torque --format json`` (SI units; see the README)."""
         engine = self.engine
         return {
-            "name": engine.name, "config": engine.config_path, "cycle": engine.cycle,
+            "name": engine.name,
+            "config": engine.config_path,
+            "cycle": engine.cycle,
             "speed_rpm": rad_s_to_rpm(engine.speed_rad_s),
             "period_deg": self.period_deg,
             "reduced_mass": self.reduced_mass.to_dict(),
-            "inertia": self.inertia.to_dict(), "frame": self.frame.to_dict(),
+            "inertia": self.inertia.to_dict(),
+            "frame": self.frame.to_dict(),
             "tilting": self.tilting.to_dict(),
             "gas": None if self.gas is None else self.gas.to_dict(),
             "indicated_power_kW": self.indicated_power_kw,
             "total": self.total.to_dict(),
             "bearing": {
                 "crank_pins": [p.to_dict(self.max_order, engine.noise_floor_n) for p in self.pins],
-                "main_bearings": (None if self.main_bearings is None else
-                                  self.main_bearings.to_dict(self.max_order, engine.noise_floor_n)),
+                "main_bearings": (
+                    None
+                    if self.main_bearings is None
+                    else self.main_bearings.to_dict(self.max_order, engine.noise_floor_n)
+                ),
             },
-            "steadiness": None if self.steadiness is None else {
-                **self.steadiness.to_dict(), "flywheel_for_target_kgm2": self.flywheel_kgm2},
+            "steadiness": None
+            if self.steadiness is None
+            else {**self.steadiness.to_dict(), "flywheel_for_target_kgm2": self.flywheel_kgm2},
             "guide_force": None if self.guide is None else self.guide.to_dict(),
-            "crankshafts": [c.to_dict(self.max_order, engine.noise_floor_n)
-                            for c in self.crankshafts],
+            "crankshafts": [
+                c.to_dict(self.max_order, engine.noise_floor_n) for c in self.crankshafts
+            ],
         }
 
 
@@ -160,19 +174,35 @@ class TorqueSet:
 
     def __post_init__(self):
         # TorqueSet(()) failed later, in to_dict, with an IndexError
-        object.__setattr__(self, "results", tuple(items(self.results, TorqueResult, "results",
-                                                         what="engine's torques")))
+        object.__setattr__(
+            self,
+            "results",
+            tuple(items(self.results, TorqueResult, "results", what="engine's torques")),
+        )
 
     def to_dict(self) -> dict:
         """What ``torque --format json`` writes: one :meth:`TorqueResult.to_dict` per engine."""
         first = self.results[0]
-        return {"balance_version": DOCUMENT_VERSION, "samples": first.samples,
-                "max_order": first.max_order, "engines": [r.to_dict() for r in self.results]}
+        return {
+            "balance_version": DOCUMENT_VERSION,
+            "samples": first.samples,
+            "max_order": first.max_order,
+            "engines": [r.to_dict() for r in self.results],
+        }
 
 
-def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressure=None,
-           bore_m=None, inertia_kgm2=None, load="propeller", target=None,
-           bearings=True, guide=True) -> TorqueResult:
+def torque(
+    engine,
+    samples=DEFAULT_SAMPLES,
+    max_order=DEFAULT_MAX_ORDER,
+    pressure=None,
+    bore_m=None,
+    inertia_kgm2=None,
+    load="propeller",
+    target=None,
+    bearings=True,
+    guide=True,
+) -> TorqueResult:
     """Inertia, tilting, gas, total and frame torques and the reduced mass of ``engine`` at
     its speed.
 
@@ -218,8 +248,9 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
     if inertia_kgm2 is not None:
         inertia_kgm2 = positive(inertia_kgm2, "inertia_kgm2", "moment of inertia")
     if target is not None and (not is_real(target) or not 0.5 < target < math.inf):
-        raise AnalysisError(f"must be a steadiness above ½ (the least there is), got {target!r}",
-                            "target")
+        raise AnalysisError(
+            f"must be a steadiness above ½ (the least there is), got {target!r}", "target"
+        )
     if not isinstance(load, str) or load not in LOADS:
         raise AnalysisError(f"must be one of {', '.join(LOADS)}, got {load!r}", "load")
     state = kinematic_state(engine, samples)
@@ -232,7 +263,7 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
         return cycle_series(engine, np.real(values), max_order, unit)
 
     inertia = np.tile(-0.5 * omega**2 * periodic_derivative(mu).real, turns)
-    tilting = np.tile(-omega**2 * periodic_derivative(h).real, turns)
+    tilting = np.tile(-(omega**2) * periodic_derivative(h).real, turns)
     total = inertia
     net_pressure, area, gas = {}, 0.0, None
     if gas_on is not None:
@@ -243,19 +274,44 @@ def torque(engine, samples=DEFAULT_SAMPLES, max_order=DEFAULT_MAX_ORDER, pressur
         total = total + gas_curve
     several = engine.has_several_crankshafts
     # the guide-force couples are about one crank axis, as the project guides give them
-    guide = None if not guide or several else guide_forces(
-        engine, state, net_pressure, area, turns, max_order)
-    pins, bearing_loads = (_bearing_loads(engine, state, turns, net_pressure, area, max_order)
-                           if bearings else ((), [None] * len(engine.crankshafts)))
-    shafts = () if not several else tuple(
-        CrankshaftTorque(number, direction, curve, bearing_loads[number - 1])
-        for number, direction, curve in _crankshaft_torques(
-            engine, state, turns, net_pressure, area, max_order))
+    guide = (
+        None
+        if not guide or several
+        else guide_forces(engine, state, net_pressure, area, turns, max_order)
+    )
+    pins, bearing_loads = (
+        _bearing_loads(engine, state, turns, net_pressure, area, max_order)
+        if bearings
+        else ((), [None] * len(engine.crankshafts))
+    )
+    shafts = (
+        ()
+        if not several
+        else tuple(
+            CrankshaftTorque(number, direction, curve, bearing_loads[number - 1])
+            for number, direction, curve in _crankshaft_torques(
+                engine, state, turns, net_pressure, area, max_order
+            )
+        )
+    )
     speed, flywheel = _driven(engine, gas, mu, inertia_kgm2, target, load)
-    return TorqueResult(engine, samples, ReducedMass(np.degrees(state.angles_rad), mu.real),
-                        series(inertia), series(tilting), series(-total + tilting), gas,
-                        series(total), pins, None if several else bearing_loads[0], max_order,
-                        speed, flywheel, guide, shafts)
+    return TorqueResult(
+        engine,
+        samples,
+        ReducedMass(np.degrees(state.angles_rad), mu.real),
+        series(inertia),
+        series(tilting),
+        series(-total + tilting),
+        gas,
+        series(total),
+        pins,
+        None if several else bearing_loads[0],
+        max_order,
+        speed,
+        flywheel,
+        guide,
+        shafts,
+    )
 
 
 def _bearing_loads(engine, state, turns, net_pressure, area, max_order):
@@ -266,19 +322,29 @@ def _bearing_loads(engine, state, turns, net_pressure, area, max_order):
     pins = []
     for index, force in enumerate(forces):
         # the pin's direction: turning with θ on a crankshaft, fixed on a rotary's crank
-        along = np.exp(1j * pin_angle(engine, index, 0.0 if engine.is_rotary else np.radians(theta)))
+        along = np.exp(
+            1j * pin_angle(engine, index, 0.0 if engine.is_rotary else np.radians(theta))
+        )
         local = force * np.conj(along)
         # tangential: positive in the sense its own crankshaft turns
         sense = engine.crankshaft_of(index).direction
-        pins.append(PinForce(index + 1, engine.cycle_deg, theta, force,
-                             cycle_series(engine, local.real, max_order, "N"),
-                             cycle_series(engine, sense * local.imag, max_order, "N")))
+        pins.append(
+            PinForce(
+                index + 1,
+                engine.cycle_deg,
+                theta,
+                force,
+                cycle_series(engine, local.real, max_order, "N"),
+                cycle_series(engine, sense * local.imag, max_order, "N"),
+            )
+        )
     loads: list[PinForce | None] = [None] * len(engine.crankshafts)
     if not engine.is_rotary:
         for s_index in range(len(engine.crankshafts)):
             on_shaft = [f for f, t in zip(forces, engine.throws) if t.crankshaft_index == s_index]
-            loads[s_index] = PinForce(None, engine.cycle_deg, theta,
-                                      sum(on_shaft) + crank_inertia[s_index], None, None)
+            loads[s_index] = PinForce(
+                None, engine.cycle_deg, theta, sum(on_shaft) + crank_inertia[s_index], None, None
+            )
     return tuple(pins), loads
 
 
@@ -289,15 +355,25 @@ def _driven(engine, gas, mu, inertia_kgm2, target, load):
     if inertia_kgm2 is None and target is None:
         return None, None
     if gas is None:
-        raise AnalysisError("needs a gas torque to drive the engine: give a pressure curve "
-                            "or a [gas] table", "inertia_kgm2" if inertia_kgm2 else "target")
+        raise AnalysisError(
+            "needs a gas torque to drive the engine: give a pressure curve or a [gas] table",
+            "inertia_kgm2" if inertia_kgm2 else "target",
+        )
     if load == "propeller" and not gas.mean > 0:
-        raise AnalysisError(f"needs an engine that drives its propeller, but the gas torque's "
-                            f"mean is {gas.mean:.4g} N·m (a motored cycle?); give the [gas] "
-                            "table an imep", "inertia_kgm2" if inertia_kgm2 else "target")
+        raise AnalysisError(
+            f"needs an engine that drives its propeller, but the gas torque's "
+            f"mean is {gas.mean:.4g} N·m (a motored cycle?); give the [gas] "
+            "table an imep",
+            "inertia_kgm2" if inertia_kgm2 else "target",
+        )
     turns = int(round(engine.cycle_deg / 360.0))
-    drive = dict(torque_nm=gas.curve, period_deg=engine.cycle_deg, speed_rad_s=engine.speed_rad_s,
-                 load=load, reduced_mass_kgm2=np.tile(mu.real, turns))
+    drive = dict(
+        torque_nm=gas.curve,
+        period_deg=engine.cycle_deg,
+        speed_rad_s=engine.speed_rad_s,
+        load=load,
+        reduced_mass_kgm2=np.tile(mu.real, turns),
+    )
     speed, flywheel = None, None
     if target is not None:
         flywheel = flywheel_for(target, **drive)
@@ -327,6 +403,3 @@ def _crankshaft_torques(engine, state, turns, net_pressure, area, max_order):
                 curve = curve - net_pressure[number] * area * np.tile(rate, turns)
         out.append((index + 1, shaft.direction, cycle_series(engine, curve, max_order)))
     return out
-
-
-

@@ -11,8 +11,7 @@ few commands on the group when imported here.
 
 import sys
 
-from . import (compare, counterweight, inspect, pictures, regress, search,  # noqa: F401
-               sweep, torque, torsion)
+from . import compare, counterweight, inspect, pictures, regress, search, sweep, torque, torsion  # noqa: F401
 from .group import main
 
 __all__ = ["main"]

@@ -16,8 +16,7 @@ from ..errors import SamplingWarning
 from .group import reported
 from .options import quantity_option
 
-__all__ = ["progress", "run_each", "inputs", "load_all", "settings", "analyse_all",
-           "passed_over"]
+__all__ = ["progress", "run_each", "inputs", "load_all", "settings", "analyse_all", "passed_over"]
 
 
 def progress(items, label):
@@ -41,8 +40,11 @@ def run_each(items, label, work):
         finally:
             # warnings of the engines done before an error are still worth seeing
             for w in caught:
-                text = f"{w.message} (--samples)" if issubclass(w.category, SamplingWarning) \
+                text = (
+                    f"{w.message} (--samples)"
+                    if issubclass(w.category, SamplingWarning)
                     else w.message
+                )
                 click.echo(f"warning: {text}", err=True)
     return results
 

@@ -5,15 +5,25 @@ balance regress reads back.
 import click
 
 from ..analysis.results import compare as comparison_of
-from ..report.csvfile import compare_csv
-from ..units import Scale
 from ..report.compare import compare_tables
-from ..units import rad_s_to_rpm
+from ..report.csvfile import compare_csv
+from ..units import Scale, rad_s_to_rpm
 from .batch import analyse_all, inputs, load_all, settings
 from .dispatch import emit, guard
 from .group import main, reported
-from .options import (ABSOLUTE, FORMAT, INPUTS, MAX_ORDER, OUTPUT, SAMPLES, SPEED, UNITS,
-                      numbers_option, orders_option, quantity_option)
+from .options import (
+    ABSOLUTE,
+    FORMAT,
+    INPUTS,
+    MAX_ORDER,
+    OUTPUT,
+    SAMPLES,
+    SPEED,
+    UNITS,
+    numbers_option,
+    orders_option,
+    quantity_option,
+)
 
 __all__ = ["compare", "compare_document"]
 
@@ -25,21 +35,49 @@ __all__ = ["compare", "compare_document"]
 @ABSOLUTE
 @UNITS
 @SPEED
-@click.option("--reference", default=None, metavar="NAME",
-              help="Engine the percentages refer to (name or unique prefix); default the first.")
-@click.option("--power", default=None, metavar="POWER",
-              help="The engines' power at the speed analysed (e.g. '14 280 kW', '21 MW', "
-                   "'19 000 hp'), for the power related unbalance; default each file's power "
-                   "(or its [gas] cycle's indicated power).")
-@click.option("--pru-classes", default=None, metavar="A,B,C",
-              help="Bounds of the PRU classes not relevant / unlikely / likely / most likely, "
-                   "N·m/kW  [default: 60,120,220, the project guides'].")
-@click.option("--pru-orders", default=None, metavar="K[,K...]",
-              help="Orders whose moments the power related unbalance judges  [default: 1,2].")
+@click.option(
+    "--reference",
+    default=None,
+    metavar="NAME",
+    help="Engine the percentages refer to (name or unique prefix); default the first.",
+)
+@click.option(
+    "--power",
+    default=None,
+    metavar="POWER",
+    help="The engines' power at the speed analysed (e.g. '14 280 kW', '21 MW', "
+    "'19 000 hp'), for the power related unbalance; default each file's power "
+    "(or its [gas] cycle's indicated power).",
+)
+@click.option(
+    "--pru-classes",
+    default=None,
+    metavar="A,B,C",
+    help="Bounds of the PRU classes not relevant / unlikely / likely / most likely, "
+    "N·m/kW  [default: 60,120,220, the project guides'].",
+)
+@click.option(
+    "--pru-orders",
+    default=None,
+    metavar="K[,K...]",
+    help="Orders whose moments the power related unbalance judges  [default: 1,2].",
+)
 @FORMAT
 @OUTPUT
-def compare(paths, samples, max_order, absolute, units, speed, reference, power, pru_classes,
-            pru_orders, fmt, output):
+def compare(
+    paths,
+    samples,
+    max_order,
+    absolute,
+    units,
+    speed,
+    reference,
+    power,
+    pru_classes,
+    pru_orders,
+    fmt,
+    output,
+):
     """Compare engines order by order, in the style of Tanaka's Part III.
 
     FILE|DIR...: configuration files, or folders searched recursively for .toml files,
@@ -55,9 +93,13 @@ def compare(paths, samples, max_order, absolute, units, speed, reference, power,
     with reported(flags={"pru_classes": "--pru-classes", "pru_orders": "--pru-orders"}):
         comparison = comparison_of(results, reference, classes, orders)
     scale = Scale.of(absolute, units)
-    emit(output, fmt, json=lambda: compare_document(comparison, engines if speed else None),
-         csv=lambda: compare_csv(comparison, scale),
-         table=lambda: compare_tables(comparison, scale, fmt))
+    emit(
+        output,
+        fmt,
+        json=lambda: compare_document(comparison, engines if speed else None),
+        csv=lambda: compare_csv(comparison, scale),
+        table=lambda: compare_tables(comparison, scale, fmt),
+    )
 
 
 def compare_document(comparison, overridden=None):

@@ -17,12 +17,26 @@ __all__ = ["main", "reported", "message", "FLAGS"]
 
 #: library parameter -> command-line flag, for the library's messages
 FLAGS = {
-    "samples": "--samples", "max_order": "--max-order", "reference": "--reference",
-    "planes": "--planes", "radius_m": "--radius", "balance_factor": "--balance-factor",
-    "shaft_orders": "--shafts", "antivibrateur_radius_m": "--antivibrateur-radius",
-    "test_masses": "--test-masses", "path": "--output", "units": "--units", "rtol": "--rtol",
-    "order": "--order", "pressure": "--pressure", "inertia_kgm2": "--inertia", "target": "--target",
-    "speed_rad_s": "--speed", "load": "--load", "torque_nm": "--torque", "bore_m": "--bore",
+    "samples": "--samples",
+    "max_order": "--max-order",
+    "reference": "--reference",
+    "planes": "--planes",
+    "radius_m": "--radius",
+    "balance_factor": "--balance-factor",
+    "shaft_orders": "--shafts",
+    "antivibrateur_radius_m": "--antivibrateur-radius",
+    "test_masses": "--test-masses",
+    "path": "--output",
+    "units": "--units",
+    "rtol": "--rtol",
+    "order": "--order",
+    "pressure": "--pressure",
+    "inertia_kgm2": "--inertia",
+    "target": "--target",
+    "speed_rad_s": "--speed",
+    "load": "--load",
+    "torque_nm": "--torque",
+    "bore_m": "--bore",
 }
 
 

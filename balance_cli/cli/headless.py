@@ -26,8 +26,11 @@ def drawing():
         yield
     missing = [w for w in caught if "missing from font" in str(w.message)]
     if missing:
-        click.echo(f"warning: the pictures' font lacks {len(missing)} characters of the engine "
-                   "names; they are drawn as boxes", err=True)
+        click.echo(
+            f"warning: the pictures' font lacks {len(missing)} characters of the engine "
+            "names; they are drawn as boxes",
+            err=True,
+        )
     for w in caught:
         if w not in missing:
             warnings.showwarning(w.message, w.category, w.filename, w.lineno)

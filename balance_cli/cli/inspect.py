@@ -76,8 +76,12 @@ def list_(folder):
         groups.setdefault(where.parent.parts, []).append(engine)
     # folders sorted by their path parts: DIR's own files first, a folder before its subfolders
     if groups:
-        click.echo(list_tables((inside + "/".join(parts) if parts else folder, groups[parts])
-                               for parts in sorted(groups)))
+        click.echo(
+            list_tables(
+                (inside + "/".join(parts) if parts else folder, groups[parts])
+                for parts in sorted(groups)
+            )
+        )
     for error in errors:
         click.echo(f"invalid: {error}", err=True)
     if errors:

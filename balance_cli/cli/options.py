@@ -14,24 +14,67 @@ from ..analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, MAX_SAMPLES
 from ..errors import BalanceError
 from ..units import UNIT_SYSTEMS, parse_quantity, unit_system
 
-__all__ = ["INPUTS", "SAMPLES", "MAX_ORDER", "FORMAT", "OUTPUT", "ABSOLUTE", "Units",
-           "UNIT_CHOICE", "UNITS", "SPEED", "LOAD", "planes", "orders_option", "numbers_option",
-           "shaft_offsets_option", "length_option", "quantity_option", "speeds_option",
-           "counts_option", "firing_orders_option"]
+__all__ = [
+    "INPUTS",
+    "SAMPLES",
+    "MAX_ORDER",
+    "FORMAT",
+    "OUTPUT",
+    "ABSOLUTE",
+    "Units",
+    "UNIT_CHOICE",
+    "UNITS",
+    "SPEED",
+    "LOAD",
+    "planes",
+    "orders_option",
+    "numbers_option",
+    "shaft_offsets_option",
+    "length_option",
+    "quantity_option",
+    "speeds_option",
+    "counts_option",
+    "firing_orders_option",
+]
 
 
 INPUTS = click.argument("paths", nargs=-1, required=True, metavar="FILE|DIR...")
-SAMPLES = click.option("--samples", default=DEFAULT_SAMPLES, show_default=True, type=int,
-                       help=f"Crank angles per revolution for the Fourier analysis: any number "
-                            f"from 4 × --max-order + 1 to {MAX_SAMPLES}.")
-MAX_ORDER = click.option("--max-order", default=DEFAULT_MAX_ORDER, show_default=True, type=int,
-                         help="Highest order analysed and reported.")
-FORMAT = click.option("--format", "fmt", type=click.Choice(["table", "markdown", "csv", "json"]),
-                      default="table", show_default=True, help="Output format.")
-OUTPUT = click.option("--output", "-o", default="-", metavar="FILE", show_default=True,
-                      help="Write here (atomically) instead of standard output.")
-ABSOLUTE = click.option("--absolute", is_flag=True,
-                        help="Forces in newtons (or --units) instead of per cylinder (× m_rec·r·ω²·n).")
+SAMPLES = click.option(
+    "--samples",
+    default=DEFAULT_SAMPLES,
+    show_default=True,
+    type=int,
+    help=f"Crank angles per revolution for the Fourier analysis: any number "
+    f"from 4 × --max-order + 1 to {MAX_SAMPLES}.",
+)
+MAX_ORDER = click.option(
+    "--max-order",
+    default=DEFAULT_MAX_ORDER,
+    show_default=True,
+    type=int,
+    help="Highest order analysed and reported.",
+)
+FORMAT = click.option(
+    "--format",
+    "fmt",
+    type=click.Choice(["table", "markdown", "csv", "json"]),
+    default="table",
+    show_default=True,
+    help="Output format.",
+)
+OUTPUT = click.option(
+    "--output",
+    "-o",
+    default="-",
+    metavar="FILE",
+    show_default=True,
+    help="Write here (atomically) instead of standard output.",
+)
+ABSOLUTE = click.option(
+    "--absolute",
+    is_flag=True,
+    help="Forces in newtons (or --units) instead of per cylinder (× m_rec·r·ω²·n).",
+)
 
 
 class Units(click.ParamType):
@@ -56,18 +99,32 @@ class Units(click.ParamType):
 
 
 UNIT_CHOICE = Units()
-UNITS = click.option("--units", type=UNIT_CHOICE, default="N", show_default=True,
-                     help="Units of absolute forces and of moments, one system: N and N·m, kN and "
-                          "kN·m, MN and MN·m, kgf and kgf·m, lbf and lbf·ft; any but N implies "
-                          "--absolute. JSON stays SI.")
-SPEED = click.option("--speed", "speed", default=None, metavar="SPEED",
-                     help="Analyse at this speed instead of the files' (e.g. '3000 rpm').")
+UNITS = click.option(
+    "--units",
+    type=UNIT_CHOICE,
+    default="N",
+    show_default=True,
+    help="Units of absolute forces and of moments, one system: N and N·m, kN and "
+    "kN·m, MN and MN·m, kgf and kgf·m, lbf and lbf·ft; any but N implies "
+    "--absolute. JSON stays SI.",
+)
+SPEED = click.option(
+    "--speed",
+    "speed",
+    default=None,
+    metavar="SPEED",
+    help="Analyse at this speed instead of the files' (e.g. '3000 rpm').",
+)
 
 
-LOAD = click.option("--load", type=click.Choice(["propeller", "constant"]), default="propeller",
-                    show_default=True,
-                    help="What the engine drives: a propeller (torque ℓ·ω², ℓ = C_m/ω_m²) or a "
-                         "constant torque C_m.")
+LOAD = click.option(
+    "--load",
+    type=click.Choice(["propeller", "constant"]),
+    default="propeller",
+    show_default=True,
+    help="What the engine drives: a propeller (torque ℓ·ω², ℓ = C_m/ω_m²) or a "
+    "constant torque C_m.",
+)
 
 
 def planes(text):
@@ -85,7 +142,8 @@ def planes(text):
             if str(exc).startswith("cannot read"):
                 raise click.ClickException(
                     f"--planes: cannot read {token!r}: give throw numbers (1, 2, ...) or axial "
-                    "positions with a unit such as '120 mm'") from None
+                    "positions with a unit such as '120 mm'"
+                ) from None
             raise click.ClickException(f"--planes: {exc}") from None
     return planes
 
@@ -96,16 +154,18 @@ def orders_option(text, flag="--shafts"):
     try:
         return tuple(int(t) for t in text.split(","))
     except ValueError:
-        raise click.BadParameter(f"{text!r}: give orders as whole numbers, such as 1,2",
-                                 param_hint=flag) from None
+        raise click.BadParameter(
+            f"{text!r}: give orders as whole numbers, such as 1,2", param_hint=flag
+        ) from None
 
 
 def numbers_option(text, flag):
     try:
         return tuple(float(t.replace(" ", "")) for t in text.split(","))
     except ValueError:
-        raise click.BadParameter(f"{text!r}: give numbers such as 60,120,220",
-                                 param_hint=flag) from None
+        raise click.BadParameter(
+            f"{text!r}: give numbers such as 60,120,220", param_hint=flag
+        ) from None
 
 
 def shaft_offsets_option(texts):
@@ -119,13 +179,17 @@ def shaft_offsets_option(texts):
             try:
                 key = int(ratio)
             except ValueError:
-                raise click.BadParameter(f"{text!r}: the speed ratio before ':' must be a whole "
-                                         "number such as +2 or -2", param_hint="--shaft-offset") from None
+                raise click.BadParameter(
+                    f"{text!r}: the speed ratio before ':' must be a whole number such as +2 or -2",
+                    param_hint="--shaft-offset",
+                ) from None
         parts = lengths.split(",")
         if len(parts) != 2:
-            raise click.BadParameter(f"{text!r}: give LATERAL,VERTICAL such as '120 mm,-80 mm', "
-                                     "optionally after a speed ratio ('-2:120 mm,-80 mm')",
-                                     param_hint="--shaft-offset")
+            raise click.BadParameter(
+                f"{text!r}: give LATERAL,VERTICAL such as '120 mm,-80 mm', "
+                "optionally after a speed ratio ('-2:120 mm,-80 mm')",
+                param_hint="--shaft-offset",
+            )
         if key in offsets:
             which = "every shaft" if key is None else f"speed ratio {key:+d}"
             raise click.BadParameter(f"{which} is placed twice", param_hint="--shaft-offset")
@@ -164,23 +228,34 @@ def speeds_option(text):
     try:
         if ":" in text:
             start, stop, step = (float(t) for t in text.split(":"))
-            if not all(map(math.isfinite, (start, stop, step))) or not step > 0 \
-                    or not 0 < start <= stop or not 1e-3 <= start and stop <= 1e6:
+            if (
+                not all(map(math.isfinite, (start, stop, step)))
+                or not step > 0
+                or not 0 < start <= stop
+                or not 1e-3 <= start
+                and stop <= 1e6
+            ):
                 raise ValueError
             count = int(np.floor((stop - start) / step + 1e-9)) + 1
             if count > MAX_SPEEDS:
                 raise ValueError
             return start + step * np.arange(count)
         values = np.array([float(t) for t in text.split(",")])
-        if not np.all(np.isfinite(values)) or np.any(values < 1e-3) or np.any(values > 1e6) \
-                or values.size > MAX_SPEEDS:
+        if (
+            not np.all(np.isfinite(values))
+            or np.any(values < 1e-3)
+            or np.any(values > 1e6)
+            or values.size > MAX_SPEEDS
+        ):
             raise ValueError
         return values
     except (ValueError, OverflowError):
-        raise click.BadParameter(f"expected FROM:TO:STEP in rpm (0.001 <= FROM <= TO <= 1e6, "
-                                 f"STEP > 0, at most {MAX_SPEEDS} speeds) such as 600:2400:25, or "
-                                 f"a list such as 1000,1500, got {text!r}",
-                                 param_hint="--speeds") from None
+        raise click.BadParameter(
+            f"expected FROM:TO:STEP in rpm (0.001 <= FROM <= TO <= 1e6, "
+            f"STEP > 0, at most {MAX_SPEEDS} speeds) such as 600:2400:25, or "
+            f"a list such as 1000,1500, got {text!r}",
+            param_hint="--speeds",
+        ) from None
 
 
 def counts_option(text):
@@ -191,12 +266,16 @@ def counts_option(text):
             low, _, high = token.strip().partition("-")
             low, high = int(low), int(high or low)
             if high < low:
-                raise click.BadParameter(f"{token.strip()!r} runs backwards: write the smaller "
-                                         f"number first ({high}-{low})", param_hint="--cylinders")
+                raise click.BadParameter(
+                    f"{token.strip()!r} runs backwards: write the smaller "
+                    f"number first ({high}-{low})",
+                    param_hint="--cylinders",
+                )
             counts += range(low, high + 1)
     except ValueError:
-        raise click.BadParameter(f"{text!r}: give numbers of cylinders such as 5-12 or 6,7,8",
-                                 param_hint="--cylinders") from None
+        raise click.BadParameter(
+            f"{text!r}: give numbers of cylinders such as 5-12 or 6,7,8", param_hint="--cylinders"
+        ) from None
     return counts
 
 
@@ -209,10 +288,15 @@ def firing_orders_option(values):
             n = int(count)
             cylinders = [int(c) for c in order.replace(",", "-").split("-")]
         except ValueError:
-            raise click.BadParameter(f"{value!r}: write the number of cylinders and the order, "
-                                     "such as 6:1-5-3-4-2-6", param_hint="--firing-order") from None
+            raise click.BadParameter(
+                f"{value!r}: write the number of cylinders and the order, such as 6:1-5-3-4-2-6",
+                param_hint="--firing-order",
+            ) from None
         if n in orders:
-            raise click.BadParameter(f"{n} cylinders are given twice; give one firing order for "
-                                     "each number of cylinders", param_hint="--firing-order")
+            raise click.BadParameter(
+                f"{n} cylinders are given twice; give one firing order for "
+                "each number of cylinders",
+                param_hint="--firing-order",
+            )
         orders[n] = cylinders
     return orders

@@ -21,24 +21,45 @@ __all__ = ["plot", "report"]
 
 @main.command()
 @INPUTS
-@click.option("--kind", type=click.Choice(["locus", "spectrum", "star", "firing", "torque"]),
-              required=True,
-              help="locus: resultant force per cylinder (or free moment: --of moment) over a "
-                   "revolution (Tanaka's Fig. 9); spectrum: forward and backward parts by order; "
-                   "star: each cylinder's phasor of one order (of force or moment), chained; firing: firing angles on a dial; torque: inertia, gas "
-                   "(from a [gas] table) and total torque over a cycle, and the orders of the total.")
-@click.option("--output", "-o", required=True, metavar="PATH",
-              help="Picture file; its extension gives the format: .png, .svg, .svgz, .pdf, .eps, "
-                   ".ps, .jpg, .jpeg, .tif, .tiff, .webp. Folders are created.")
-@click.option("--order", type=click.IntRange(1), default=None,
-              help="locus: one order only (default all); star: the order drawn (default 2).")
-@click.option("--of", "quantity", type=click.Choice(["force", "moment"]), default=None,
-              help="locus and star: the resultant force (the default) or the free moment "
-                   "about the engine's mid-length, N·m.")
-@click.option("--units", type=Units(["per-cylinder"]), default=None,
-              help="spectrum: units of the forces, default per-cylinder (N, kN, MN, kgf or lbf also "
-                   "put moments in N·m, kN·m, MN·m, kgf·m or lbf·ft); torque: N (N·m, the "
-                   "default), kN, MN, kgf or lbf.")
+@click.option(
+    "--kind",
+    type=click.Choice(["locus", "spectrum", "star", "firing", "torque"]),
+    required=True,
+    help="locus: resultant force per cylinder (or free moment: --of moment) over a "
+    "revolution (Tanaka's Fig. 9); spectrum: forward and backward parts by order; "
+    "star: each cylinder's phasor of one order (of force or moment), chained; firing: firing angles on a dial; torque: inertia, gas "
+    "(from a [gas] table) and total torque over a cycle, and the orders of the total.",
+)
+@click.option(
+    "--output",
+    "-o",
+    required=True,
+    metavar="PATH",
+    help="Picture file; its extension gives the format: .png, .svg, .svgz, .pdf, .eps, "
+    ".ps, .jpg, .jpeg, .tif, .tiff, .webp. Folders are created.",
+)
+@click.option(
+    "--order",
+    type=click.IntRange(1),
+    default=None,
+    help="locus: one order only (default all); star: the order drawn (default 2).",
+)
+@click.option(
+    "--of",
+    "quantity",
+    type=click.Choice(["force", "moment"]),
+    default=None,
+    help="locus and star: the resultant force (the default) or the free moment "
+    "about the engine's mid-length, N·m.",
+)
+@click.option(
+    "--units",
+    type=Units(["per-cylinder"]),
+    default=None,
+    help="spectrum: units of the forces, default per-cylinder (N, kN, MN, kgf or lbf also "
+    "put moments in N·m, kN·m, MN·m, kgf·m or lbf·ft); torque: N (N·m, the "
+    "default), kN, MN, kgf or lbf.",
+)
 @SAMPLES
 @MAX_ORDER
 @SPEED
@@ -47,8 +68,10 @@ def plot(paths, kind, output, order, quantity, units, samples, max_order, speed)
     if units is not None and kind not in ("spectrum", "torque"):
         raise click.UsageError(f"--units applies to --kind spectrum and torque only, not {kind}")
     if units == "per-cylinder" and kind == "torque":
-        raise click.UsageError("--units per-cylinder applies to --kind spectrum only; torques "
-                               "are drawn in N·m (N) or kgf·m (kgf)")
+        raise click.UsageError(
+            "--units per-cylinder applies to --kind spectrum only; torques "
+            "are drawn in N·m (N) or kgf·m (kgf)"
+        )
     if order is not None and kind not in ("locus", "star"):
         raise click.UsageError(f"--order applies to --kind locus and star only, not {kind}")
     if quantity is not None and kind not in ("locus", "star"):
@@ -68,8 +91,11 @@ def plot(paths, kind, output, order, quantity, units, samples, max_order, speed)
         from ..analysis.torque import torque as torque_of
 
         # the picture draws the torques only
-        results = run_each(engines, "Torques", lambda e: torque_of(
-            e, samples, max_order, bearings=False, guide=False))
+        results = run_each(
+            engines,
+            "Torques",
+            lambda e: torque_of(e, samples, max_order, bearings=False, guide=False),
+        )
     else:
         results = analyse_all(engines, samples, max_order)
     with reported(), headless.drawing():
@@ -89,27 +115,70 @@ def plot(paths, kind, output, order, quantity, units, samples, max_order, speed)
 
 @main.command()
 @INPUTS
-@click.option("--output", "-o", required=True, metavar="DIR",
-              help="Folder for report.md and its pictures (created if needed).")
-@click.option("--html", "with_html", is_flag=True,
-              help="Also write report.html: one self-contained page, pictures inlined as SVG.")
-@click.option("--reference", default=None, metavar="NAME",
-              help="Engine the percentages refer to (name or unique prefix); default the first.")
-@click.option("--star-order", default=None, type=click.IntRange(1),
-              help="Order drawn in the star diagram  [default: 2, or 1 with --max-order 1].")
+@click.option(
+    "--output",
+    "-o",
+    required=True,
+    metavar="DIR",
+    help="Folder for report.md and its pictures (created if needed).",
+)
+@click.option(
+    "--html",
+    "with_html",
+    is_flag=True,
+    help="Also write report.html: one self-contained page, pictures inlined as SVG.",
+)
+@click.option(
+    "--reference",
+    default=None,
+    metavar="NAME",
+    help="Engine the percentages refer to (name or unique prefix); default the first.",
+)
+@click.option(
+    "--star-order",
+    default=None,
+    type=click.IntRange(1),
+    help="Order drawn in the star diagram  [default: 2, or 1 with --max-order 1].",
+)
 @SAMPLES
 @MAX_ORDER
-@click.option("--units", type=UNIT_CHOICE, default="N", show_default=True,
-              help="Units of moments and torques (and of forces other than the per-cylinder "
-                   "comparison): N, kN, MN, kgf or lbf with N·m, kN·m, MN·m, kgf·m or lbf·ft.")
+@click.option(
+    "--units",
+    type=UNIT_CHOICE,
+    default="N",
+    show_default=True,
+    help="Units of moments and torques (and of forces other than the per-cylinder "
+    "comparison): N, kN, MN, kgf or lbf with N·m, kN·m, MN·m, kgf·m or lbf·ft.",
+)
 @SPEED
-@click.option("--family", "family_path", default=None, metavar="FILE.toml",
-              help="Also a section with the project-guide table of this engine family (as "
-                   "balance family, with --family-cylinders).")
-@click.option("--family-cylinders", default="5-12", show_default=True, metavar="N-M",
-              help="The numbers of cylinders of --family.")
-def report(paths, output, with_html, reference, star_order, samples, max_order, units, speed,
-           family_path, family_cylinders):
+@click.option(
+    "--family",
+    "family_path",
+    default=None,
+    metavar="FILE.toml",
+    help="Also a section with the project-guide table of this engine family (as "
+    "balance family, with --family-cylinders).",
+)
+@click.option(
+    "--family-cylinders",
+    default="5-12",
+    show_default=True,
+    metavar="N-M",
+    help="The numbers of cylinders of --family.",
+)
+def report(
+    paths,
+    output,
+    with_html,
+    reference,
+    star_order,
+    samples,
+    max_order,
+    units,
+    speed,
+    family_path,
+    family_cylinders,
+):
     """Write a comparison report: tables, counterweights, torques and pictures (Markdown,
     optionally HTML).
 
@@ -121,7 +190,7 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
     from ..report.folder import REPORT_FILES, write_report
 
     with reported():
-        check_folder(output)   # the text given: Path("") would be the current folder
+        check_folder(output)  # the text given: Path("") would be the current folder
     target = Path(output)
     guard([target] + [target / name for name in REPORT_FILES], files)
     settings(samples, max_order)
@@ -132,21 +201,29 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
     with reported():
         comparison = comparison_of(results, reference)
     # counterweights are proposed for one crankshaft; the report names the engines left out
-    balances = run_each([r for r in results if not r.engine.has_several_crankshafts],
-                        "Balancing", counterweights)
+    balances = run_each(
+        [r for r in results if not r.engine.has_several_crankshafts], "Balancing", counterweights
+    )
     from ..analysis.torque import torque as torque_of
 
     # the report shows no bearing forces: leaving them out halves the work
-    torques = run_each([r.engine for r in results], "Torques",
-                       lambda e: torque_of(e, samples, max_order, bearings=False, guide=False))
+    torques = run_each(
+        [r.engine for r in results],
+        "Torques",
+        lambda e: torque_of(e, samples, max_order, bearings=False, guide=False),
+    )
     family_table = None
     if family_path is not None:
         from ..config import read_configuration
         from ..studies.family import family
 
         with reported(flags={"cylinders": "--family-cylinders", "template": family_path}):
-            family_table = family(read_configuration(family_path), counts_option(family_cylinders),
-                                  samples=samples, max_order=max_order)
+            family_table = family(
+                read_configuration(family_path),
+                counts_option(family_cylinders),
+                samples=samples,
+                max_order=max_order,
+            )
     torsion = None
     if any(r.engine.torsion is not None for r in results):
         from ..errors import TorsionUnavailable
@@ -158,10 +235,20 @@ def report(paths, output, with_html, reference, star_order, samples, max_order, 
         except TorsionUnavailable as exc:
             torsion = f"Not computed: {exc}."
         else:
-            torsion = run_each([r.engine for r in results if r.engine.torsion is not None],
-                               "Torsion", torsion_of)
+            torsion = run_each(
+                [r.engine for r in results if r.engine.torsion is not None], "Torsion", torsion_of
+            )
     with reported(), headless.drawing():
-        written = write_report(target, comparison, balances, star_order, with_html, torques,
-                               Scale.of(False, units), family_table, torsion)
+        written = write_report(
+            target,
+            comparison,
+            balances,
+            star_order,
+            with_html,
+            torques,
+            Scale.of(False, units),
+            family_table,
+            torsion,
+        )
     for path in written:
         click.echo(f"wrote {path}", err=True)

@@ -16,13 +16,35 @@ parts, gas, torsion), :mod:`.files` (files and folders to engines and configurat
 """
 
 from .builder import build
-from .files import (Configuration, as_template, find_configs, load, load_many, load_template,
-                    loads, read_configuration)
+from .files import (
+    Configuration,
+    as_template,
+    find_configs,
+    load,
+    load_many,
+    load_template,
+    loads,
+    read_configuration,
+)
 from .library import library_folder, resolve, templates_folder
 from .reader import parse_text, read_text
 from .write import arrangement_toml, as_built_toml
 
-__all__ = ["load", "loads", "build", "find_configs", "load_many", "load_template",
-           "Configuration", "read_configuration", "arrangement_toml", "as_built_toml",
-           "as_template", "read_text", "parse_text", "library_folder", "templates_folder",
-           "resolve"]
+__all__ = [
+    "load",
+    "loads",
+    "build",
+    "find_configs",
+    "load_many",
+    "load_template",
+    "Configuration",
+    "read_configuration",
+    "arrangement_toml",
+    "as_built_toml",
+    "as_template",
+    "read_text",
+    "parse_text",
+    "library_folder",
+    "templates_folder",
+    "resolve",
+]

@@ -15,8 +15,16 @@ from .builder import build
 from .library import resolve
 from .reader import parse_text, read_text
 
-__all__ = ["load", "loads", "Configuration", "read_configuration", "as_template", "load_template",
-           "find_configs", "load_many"]
+__all__ = [
+    "load",
+    "loads",
+    "Configuration",
+    "read_configuration",
+    "as_template",
+    "load_template",
+    "find_configs",
+    "load_many",
+]
 
 
 def load(path: "str | os.PathLike[str]") -> Engine:
@@ -52,9 +60,13 @@ class Configuration:
 
     def __post_init__(self):
         if not isinstance(self.data, dict):
-            raise ConfigError(str(self.path), "", f"data must be the parsed TOML of a "
-                                                  f"configuration (a dict), got "
-                                                  f"{type(self.data).__name__}")
+            raise ConfigError(
+                str(self.path),
+                "",
+                f"data must be the parsed TOML of a "
+                f"configuration (a dict), got "
+                f"{type(self.data).__name__}",
+            )
         if not isinstance(self.path, str):
             raise ConfigError("<config>", "", f"path must be text, got {type(self.path).__name__}")
         object.__setattr__(self, "data", copy.deepcopy(self.data))
@@ -97,8 +109,10 @@ def as_template(data: dict) -> dict:
     template of the same engine."""
     template = {k: v for k, v in data.items() if k != "firing_order"}
     if isinstance(template.get("throws"), list):
-        template["throws"] = [{k: v for k, v in t.items() if k != "phase"} if isinstance(t, dict)
-                              else t for t in template["throws"]]
+        template["throws"] = [
+            {k: v for k, v in t.items() if k != "phase"} if isinstance(t, dict) else t
+            for t in template["throws"]
+        ]
     return template
 
 
@@ -138,12 +152,15 @@ def find_configs(paths: "Iterable[str | os.PathLike[str]]") -> list[Path]:
     holds no .toml file, is a ConfigError.
     """
     if isinstance(paths, (str, os.PathLike)):
-        paths = [paths]   # one path, not the characters of one
+        paths = [paths]  # one path, not the characters of one
     try:
         paths = [resolve(checks.path(p, "paths")) for p in paths]
     except TypeError:
-        error = ConfigError("<paths>", "", f"paths must be a list of file or folder paths, got "
-                                           f"{type(paths).__name__}")
+        error = ConfigError(
+            "<paths>",
+            "",
+            f"paths must be a list of file or folder paths, got {type(paths).__name__}",
+        )
         error.parameter = "paths"
         raise error from None
     found = []
@@ -154,15 +171,21 @@ def find_configs(paths: "Iterable[str | os.PathLike[str]]") -> list[Path]:
         files = []
 
         def unreadable(exc, folder=p):
-            raise ConfigError(exc.filename or folder, "", f"cannot read the folder "
-                              f"({exc.strerror or exc}); check its permissions") from None
+            raise ConfigError(
+                exc.filename or folder,
+                "",
+                f"cannot read the folder ({exc.strerror or exc}); check its permissions",
+            ) from None
 
         if not os.access(p, os.R_OK | os.X_OK):
             unreadable(PermissionError(13, "Permission denied", str(p)))
         for folder, subfolders, names in os.walk(p, onerror=unreadable):
             subfolders.sort()
-            files += [Path(folder) / n for n in names
-                      if n.endswith(".toml") and (Path(folder) / n).is_file()]
+            files += [
+                Path(folder) / n
+                for n in names
+                if n.endswith(".toml") and (Path(folder) / n).is_file()
+            ]
         if not files:
             raise ConfigError(p, "", "no .toml configuration found in this folder")
         found += sorted(files)

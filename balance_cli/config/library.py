@@ -23,7 +23,7 @@ __all__ = ["LIBRARY", "TEMPLATE", "library_folder", "templates_folder", "resolve
 #: the prefixes of the names of shipped files and folders
 LIBRARY, TEMPLATE = "library:", "template:"
 
-_PACKAGE = Path(__file__).resolve().parent.parent   # balance_cli/
+_PACKAGE = Path(__file__).resolve().parent.parent  # balance_cli/
 _CHECKOUT = _PACKAGE.parent
 
 
@@ -42,8 +42,11 @@ def _shipped(installed: str, checkout: str, prefix: str) -> Path:
         return _PACKAGE / installed
     if (_CHECKOUT / "pyproject.toml").is_file() and (_CHECKOUT / checkout).is_dir():
         return _CHECKOUT / checkout
-    raise ConfigError(_PACKAGE / installed, "", f"missing from this copy of balance (what "
-                                                f"{prefix} names); reinstall {DISTRIBUTION}")
+    raise ConfigError(
+        _PACKAGE / installed,
+        "",
+        f"missing from this copy of balance (what {prefix} names); reinstall {DISTRIBUTION}",
+    )
 
 
 def resolve(path: "str | os.PathLike[str]") -> "str | os.PathLike[str]":
@@ -64,24 +67,33 @@ def resolve(path: "str | os.PathLike[str]") -> "str | os.PathLike[str]":
 
 
 def _find(name: str, prefix: str, root: Path, what: str) -> Path:
-    parts = [p for p in name[len(prefix):].strip().replace("\\", "/").split("/")
-             if p not in ("", ".")]
+    parts = [
+        p for p in name[len(prefix) :].strip().replace("\\", "/").split("/") if p not in ("", ".")
+    ]
     if ".." in parts:
-        raise ConfigError(name, "", f"'..' leads out of the shipped {what}; name a file or "
-                                    f"folder inside it ({prefix} is all of it)")
+        raise ConfigError(
+            name,
+            "",
+            f"'..' leads out of the shipped {what}; name a file or "
+            f"folder inside it ({prefix} is all of it)",
+        )
     target = root.joinpath(*parts)
     if target.exists():
         return target
     if parts and target.with_name(target.name + ".toml").is_file():
         return target.with_name(target.name + ".toml")
-    folder = root   # the deepest folder on the way that exists: what it holds is worth seeing
+    folder = root  # the deepest folder on the way that exists: what it holds is worth seeing
     for part in parts[:-1]:
         if not (folder / part).is_dir():
             break
         folder = folder / part
     where = prefix + "/".join(folder.relative_to(root).parts)
     entries = sorted(folder.iterdir(), key=lambda e: (not e.is_dir(), e.name))
-    held = [f"{e.name}/" if e.is_dir() else e.name for e in entries
-            if not e.name.startswith((".", "_")) and (e.is_dir() or e.suffix == ".toml")]
-    raise ConfigError(name, "", f"not in the shipped {what}; {where} holds "
-                                f"{', '.join(held) or 'nothing'}")
+    held = [
+        f"{e.name}/" if e.is_dir() else e.name
+        for e in entries
+        if not e.name.startswith((".", "_")) and (e.is_dir() or e.suffix == ".toml")
+    ]
+    raise ConfigError(
+        name, "", f"not in the shipped {what}; {where} holds {', '.join(held) or 'nothing'}"
+    )

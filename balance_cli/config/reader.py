@@ -10,24 +10,88 @@ from pathlib import Path
 from ..errors import ConfigError, UnitError
 from ..units import parse_quantity
 
-__all__ = ["Reader", "read_text", "parse_text",
-           "TOP_KEYS", "MASS_KEYS", "PART_KEYS", "GAS_KEYS", "TORSION_KEYS", "DISK_KEYS",
-           "BANK_KEYS", "THROW_KEYS", "CRANKSHAFT_KEYS", "LINK_KEYS", "COUNTERWEIGHT_KEYS",
-           "SHAFT_KEYS", "SHAFT_MASS_KEYS", "CYLINDER_KEYS"]
+__all__ = [
+    "Reader",
+    "read_text",
+    "parse_text",
+    "TOP_KEYS",
+    "MASS_KEYS",
+    "PART_KEYS",
+    "GAS_KEYS",
+    "TORSION_KEYS",
+    "DISK_KEYS",
+    "BANK_KEYS",
+    "THROW_KEYS",
+    "CRANKSHAFT_KEYS",
+    "LINK_KEYS",
+    "COUNTERWEIGHT_KEYS",
+    "SHAFT_KEYS",
+    "SHAFT_MASS_KEYS",
+    "CYLINDER_KEYS",
+]
 
 #: the keys each table of the format may have: any other is an error
 TOP_KEYS = {
-    "name", "source", "cycle", "speed", "crank_radius", "rod_length", "pin_offset", "frame",
-    "firing_order", "vertical", "power", "masses", "parts", "gas", "banks", "throws", "links", "cylinders",
-    "crankshafts", "counterweights", "shafts", "torsion",
+    "name",
+    "source",
+    "cycle",
+    "speed",
+    "crank_radius",
+    "rod_length",
+    "pin_offset",
+    "frame",
+    "firing_order",
+    "vertical",
+    "power",
+    "masses",
+    "parts",
+    "gas",
+    "banks",
+    "throws",
+    "links",
+    "cylinders",
+    "crankshafts",
+    "counterweights",
+    "shafts",
+    "torsion",
 }
 MASS_KEYS = {"reciprocating", "rotating", "knuckle", "crank"}
-PART_KEYS = {"piston", "rod_mass", "rod_cg", "rod_inertia", "link_mass", "link_cg", "link_inertia",
-             "crank", "crankshaft_inertia", "flywheel_inertia"}
-GAS_KEYS = {"bore", "compression_ratio", "imep", "intake_pressure", "crankcase_pressure",
-            "polytropic_exponent", "combustion_start", "combustion_duration", "wiebe_a", "wiebe_m"}
-TORSION_KEYS = {"throw_inertia", "web_inertia", "stiffness", "throw_damping", "loss_factor",
-                "shaft_diameter", "shaft_bore", "front", "flywheel", "load"}
+PART_KEYS = {
+    "piston",
+    "rod_mass",
+    "rod_cg",
+    "rod_inertia",
+    "link_mass",
+    "link_cg",
+    "link_inertia",
+    "crank",
+    "crankshaft_inertia",
+    "flywheel_inertia",
+}
+GAS_KEYS = {
+    "bore",
+    "compression_ratio",
+    "imep",
+    "intake_pressure",
+    "crankcase_pressure",
+    "polytropic_exponent",
+    "combustion_start",
+    "combustion_duration",
+    "wiebe_a",
+    "wiebe_m",
+}
+TORSION_KEYS = {
+    "throw_inertia",
+    "web_inertia",
+    "stiffness",
+    "throw_damping",
+    "loss_factor",
+    "shaft_diameter",
+    "shaft_bore",
+    "front",
+    "flywheel",
+    "load",
+}
 DISK_KEYS = {"name", "inertia", "stiffness", "damping"}
 BANK_KEYS = {"angle", "pin_offset"}
 THROW_KEYS = {"phase", "z", "crankshaft"}
@@ -37,8 +101,18 @@ COUNTERWEIGHT_KEYS = {"throw", "mass", "radius", "mass_radius", "angle", "z"}
 SHAFT_KEYS = {"ratio", "lateral", "vertical", "masses"}
 SHAFT_MASS_KEYS = {"mass", "eccentricity", "mass_radius", "angle", "z"}
 CYLINDER_KEYS = {
-    "number", "bank", "throw", "z", "reciprocating", "master", "link_length", "knuckle_radius",
-    "knuckle_angle", "pin_offset", "opposed_throw", "opposed_reciprocating",
+    "number",
+    "bank",
+    "throw",
+    "z",
+    "reciprocating",
+    "master",
+    "link_length",
+    "knuckle_radius",
+    "knuckle_angle",
+    "pin_offset",
+    "opposed_throw",
+    "opposed_reciprocating",
 }
 #: angles are plain numbers of degrees within one turn either way
 _ANGLE_LIMIT_DEG = 360.0
@@ -93,8 +167,11 @@ class Reader:
         if isinstance(raw, bool) or not isinstance(raw, (int, float)) or not math.isfinite(raw):
             raise self.error(key, f"expected a number of degrees such as 40 or -22.5, got {raw!r}")
         if abs(raw) > _ANGLE_LIMIT_DEG:
-            raise self.error(key, f"must be between -{_ANGLE_LIMIT_DEG:g} and "
-                                  f"{_ANGLE_LIMIT_DEG:g} degrees, got {raw!r}")
+            raise self.error(
+                key,
+                f"must be between -{_ANGLE_LIMIT_DEG:g} and "
+                f"{_ANGLE_LIMIT_DEG:g} degrees, got {raw!r}",
+            )
         return float(raw) + 0.0  # -0 reads as 0
 
     def real(self, key, required=True, default=None, low=None, high=None, what="a number"):
@@ -136,7 +213,7 @@ class Reader:
         if raw is None:
             return []
         if not isinstance(raw, list) or not raw or not all(isinstance(t, dict) for t in raw):
-            table = re.sub(r"\[\d+\]", "", self.prefix + key)   # shafts[2].masses: [[shafts.masses]]
+            table = re.sub(r"\[\d+\]", "", self.prefix + key)  # shafts[2].masses: [[shafts.masses]]
             raise self.error(key, f"expected one or more [[{table}]] tables")
         return raw
 
@@ -150,11 +227,13 @@ def read_text(path: Path) -> str:
     except FileNotFoundError:
         raise ConfigError(path, "", "no such file; check the path") from None
     except IsADirectoryError:
-        raise ConfigError(path, "", "is a folder; give a .toml file (or the folder where a "
-                                    "command takes folders)") from None
+        raise ConfigError(
+            path, "", "is a folder; give a .toml file (or the folder where a command takes folders)"
+        ) from None
     except PermissionError as exc:
-        raise ConfigError(path, "", f"cannot read the file ({exc.strerror}); check its "
-                                    "permissions") from None
+        raise ConfigError(
+            path, "", f"cannot read the file ({exc.strerror}); check its permissions"
+        ) from None
     except OSError as exc:
         raise ConfigError(path, "", f"cannot read the file ({exc.strerror or exc})") from None
     try:
@@ -162,8 +241,9 @@ def read_text(path: Path) -> str:
         # statement (line 1, column 1)"; CSV files already accepted it
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
-        raise ConfigError(path, "", f"not UTF-8 text ({exc.reason} at byte {exc.start}); save it "
-                                    "as UTF-8") from None
+        raise ConfigError(
+            path, "", f"not UTF-8 text ({exc.reason} at byte {exc.start}); save it as UTF-8"
+        ) from None
     return text
 
 

@@ -6,9 +6,13 @@ from collections.abc import Iterable
 __all__ = ["arrangement_toml", "as_built_toml"]
 
 
-def arrangement_toml(template: dict, phases_deg: "Iterable[float]",
-                     firing_order: "Iterable[int] | None",
-                     name: str, header: str = "") -> str:
+def arrangement_toml(
+    template: dict,
+    phases_deg: "Iterable[float]",
+    firing_order: "Iterable[int] | None",
+    name: str,
+    header: str = "",
+) -> str:
     """A complete configuration: the parsed ``template`` (see :func:`load_template`) with these
     throw phases (degrees, throw by throw), firing order (None: none, the most uniform one the
     crank allows is then found) and name; ``header`` becomes comment
@@ -16,8 +20,10 @@ def arrangement_toml(template: dict, phases_deg: "Iterable[float]",
     data = dict(template)
     data["name"] = name
     phases = list(phases_deg)
-    data["throws"] = [{"phase": p, **{k: v for k, v in t.items() if k != "phase"}}
-                      for t, p in zip(template["throws"], phases, strict=True)]
+    data["throws"] = [
+        {"phase": p, **{k: v for k, v in t.items() if k != "phase"}}
+        for t, p in zip(template["throws"], phases, strict=True)
+    ]
     data.pop("firing_order", None)
     if firing_order is not None:
         data["firing_order"] = list(firing_order)

@@ -52,6 +52,20 @@ from .objective import WEIGHT_RANGE, Term, coefficients, default_objective, pars
 from .results import Arrangement, SearchResult
 from .run import DEFAULT_LIMIT, DEFAULT_TOP, MAX_TOP, MAX_WORKERS, search
 
-__all__ = ["Term", "parse_objective", "default_objective", "coefficients", "Arrangement",
-           "SearchResult", "search", "DEFAULT_TOP", "DEFAULT_LIMIT", "MAX_TOP", "MAX_WORKERS",
-           "SCORE_TIE", "TIE_CAP", "WEIGHT_RANGE", "SYMMETRY_TOLERANCE"]
+__all__ = [
+    "Term",
+    "parse_objective",
+    "default_objective",
+    "coefficients",
+    "Arrangement",
+    "SearchResult",
+    "search",
+    "DEFAULT_TOP",
+    "DEFAULT_LIMIT",
+    "MAX_TOP",
+    "MAX_WORKERS",
+    "SCORE_TIE",
+    "TIE_CAP",
+    "WEIGHT_RANGE",
+    "SYMMETRY_TOLERANCE",
+]

@@ -13,8 +13,7 @@ from ..analysis.firing import firing_sequence
 from ..analysis.results import analyse
 from ..analysis.torque import torque
 from ..model import MAX_NAME_LENGTH
-from .firing import arrangement_engine, expand
-from .firing import crank_phases
+from .firing import arrangement_engine, crank_phases, expand
 from .kernel import SCORE_TIE
 from .objective import coefficients
 from .results import Arrangement
@@ -22,8 +21,22 @@ from .results import Arrangement
 __all__ = ["final"]
 
 
-def final(template, flat, problem, orbits, shift, terms, top, samples, max_order, units, pitch,
-           tick=None, couple_units=None, tv_orders=()):
+def final(
+    template,
+    flat,
+    problem,
+    orbits,
+    shift,
+    terms,
+    top,
+    samples,
+    max_order,
+    units,
+    pitch,
+    tick=None,
+    couple_units=None,
+    tv_orders=(),
+):
     """The listed arrangements: expanded to firing orders and mirror images, analysed exactly
     as ``compare`` would, ranked by score and then firing order."""
     members = expand(flat, problem, orbits, shift)
@@ -40,7 +53,7 @@ def final(template, flat, problem, orbits, shift, terms, top, samples, max_order
     listed = []
     rank_of: dict = {}
     for rank, (_, order, crank, phases, engine) in enumerate(rows[:top], 1):
-        if engine is None:   # built for the listed ones only: each costs a model check
+        if engine is None:  # built for the listed ones only: each costs a model check
             engine = arrangement_engine(template, phases, order, template.name)
         result = analyse(engine, samples, max_order)
         if tick:
@@ -48,7 +61,7 @@ def final(template, flat, problem, orbits, shift, terms, top, samples, max_order
         values = _coefficients_of(result, units, pitch, terms, couple_units, tv_orders)
         score = float(sum(t.weight * values[t.name] for t in terms))
         suffix = f", arrangement {rank}"
-        name = template.name[:MAX_NAME_LENGTH - len(suffix)].rstrip() + suffix
+        name = template.name[: MAX_NAME_LENGTH - len(suffix)].rstrip() + suffix
         engine = replace(result.engine, name=name)
         result = replace(result, engine=engine)
         mirror_of = None
@@ -76,9 +89,18 @@ def _coefficients_of(result, units, pitch, terms, couple_units=None, tv_orders=(
     engine = result.engine
     floors = (engine.noise_floor_n,) * 2 + (engine.noise_floor_nm,) * 2
     # the same noise floors as compare's: what it prints as zero is zero here too
-    parts = [np.array([z if abs(z) >= floor else 0.0 for z in values]) for values, floor in
-             zip(zip(*((o.force_forward, o.force_backward, o.moment_forward, o.moment_backward)
-                       for o in orders)), floors)]
+    parts = [
+        np.array([z if abs(z) >= floor else 0.0 for z in values])
+        for values, floor in zip(
+            zip(
+                *(
+                    (o.force_forward, o.force_backward, o.moment_forward, o.moment_backward)
+                    for o in orders
+                )
+            ),
+            floors,
+        )
+    ]
     c = coefficients(*parts, units, pitch)
     values = {}
     for k in range(1, len(orders) + 1):
@@ -101,8 +123,10 @@ def _coefficients_of(result, units, pitch, terms, couple_units=None, tv_orders=(
             if t.kind == "V":
                 values[t.name] = abs(phase_vector_sum(amplitudes, angles, t.order)) / unit
             if t.kind == "TV":
-                values[t.name] = max((abs(phase_vector_sum(amplitudes, angles, k)) / unit
-                                      for k in tv_orders), default=0.0)
+                values[t.name] = max(
+                    (abs(phase_vector_sum(amplitudes, angles, k)) / unit for k in tv_orders),
+                    default=0.0,
+                )
     if couple_units is not None and any(t.kind in ("H", "X") for t in terms):
         # the arrangement's own torques, not the template's phasors turned: a second method
         guide = torque(result.engine, result.samples, len(orders), bearings=False).guide
@@ -111,6 +135,7 @@ def _coefficients_of(result, units, pitch, terms, couple_units=None, tv_orders=(
                 unit = couple_units[t.order - 1]
                 series = guide.h_type if t.kind == "H" else guide.x_type
                 lever = 1.0 if t.kind == "H" else guide.lever_m / pitch
-                values[t.name] = (float(math.hypot(*series.order(t.order)) * lever / unit)
-                                  if unit > 0.0 else 0.0)
+                values[t.name] = (
+                    float(math.hypot(*series.order(t.order)) * lever / unit) if unit > 0.0 else 0.0
+                )
     return values

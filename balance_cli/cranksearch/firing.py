@@ -39,8 +39,11 @@ def firing_orders(template, problem, crank):
         points.setdefault((i - index[first]) % P, []).append(c)
     options = []
     for r, cyls in sorted(points.items()):
-        slots = [a for a in (r * s + 360.0 * t for t in range(template.cycle // 2))
-                 if abs(a / interval - round(a / interval)) < 1e-9]
+        slots = [
+            a
+            for a in (r * s + 360.0 * t for t in range(template.cycle // 2))
+            if abs(a / interval - round(a / interval)) < 1e-9
+        ]
         choices = []
         for perm in itertools.permutations(slots):
             assignment = dict(zip(sorted(cyls), perm))
@@ -74,13 +77,17 @@ def reversed_order(order, template, problem, shift):
 
 
 def crank_phases(problem, crank):
-    return tuple(round_degrees((problem.base_deg[j] + p * problem.step_deg) % 360.0, 9) % 360.0
-                 for j, p in enumerate(crank))
+    return tuple(
+        round_degrees((problem.base_deg[j] + p * problem.step_deg) % 360.0, 9) % 360.0
+        for j, p in enumerate(crank)
+    )
 
 
 def arrangement_engine(template, phases, order, name):
-    throws = tuple(Throw(math.radians(p if p <= 180.0 else p - 360.0), t.z_m)
-                   for p, t in zip(phases, template.throws))
+    throws = tuple(
+        Throw(math.radians(p if p <= 180.0 else p - 360.0), t.z_m)
+        for p, t in zip(phases, template.throws)
+    )
     return replace(template, throws=throws, firing_order=order, name=name)
 
 
@@ -101,8 +108,10 @@ def expand(template, problem, orbits, shift):
             for order in orders:
                 member = (crank, order)
                 if problem.reversal and order is not None:
-                    reverse = (tuple((-p) % problem.lattice for p in crank),
-                               reversed_order(order, template, problem, shift))
+                    reverse = (
+                        tuple((-p) % problem.lattice for p in crank),
+                        reversed_order(order, template, problem, shift),
+                    )
                     if reverse[1] < order:
                         member = reverse
                 elif problem.reversal and order is None:

@@ -55,8 +55,12 @@ def heuristic_search(problem, top, restarts, seed, progress):
     rng = np.random.default_rng(seed)
     n, P = problem.n_throws, problem.lattice
     pool = Pool(problem, top)
-    pairs = [(a, b) for a in range(1, n) for b in range(a + 1, n)
-             if sorted(problem.offsets[a]) == sorted(problem.offsets[b])]
+    pairs = [
+        (a, b)
+        for a in range(1, n)
+        for b in range(a + 1, n)
+        if sorted(problem.offsets[a]) == sorted(problem.offsets[b])
+    ]
     evaluated = 0
     for _ in range(restarts):
         crank = np.array(_random_crank(problem, rng))

@@ -55,7 +55,9 @@ class Pool:
         self.best[key] = score
         if len(self.best) >= self.recount:
             scores = np.fromiter(self.best.values(), float, len(self.best))
-            self.threshold = min(self.threshold, float(np.partition(scores, self.top - 1)[self.top - 1]))
+            self.threshold = min(
+                self.threshold, float(np.partition(scores, self.top - 1)[self.top - 1])
+            )
             self.best = {k: v for k, v in self.best.items() if v <= self.threshold + SCORE_TIE}
             self.recount = max(2 * len(self.best), self.top) + 64
 
@@ -72,7 +74,11 @@ def work_units(problem, target=_BLOCK):
     """(group, prefix start, prefix end) pieces of roughly ``target`` channel values each."""
     units = []
     C = max(problem.rotated.shape[2], 1)
-    starts = np.flatnonzero(np.diff(problem.prefix_group, prepend=-1)) if len(problem.prefix_group) else []
+    starts = (
+        np.flatnonzero(np.diff(problem.prefix_group, prepend=-1))
+        if len(problem.prefix_group)
+        else []
+    )
     ends = list(starts[1:]) + [len(problem.prefix_group)]
     for lo, hi in zip(starts, ends):
         g = int(problem.prefix_group[lo])
@@ -122,9 +128,9 @@ def evaluate(problem, units, top, threshold=math.inf, shared=None):
                 Qt = Qs[cols] if tie else Qs
                 step = max(1, _BLOCK // (len(Qt) * len(w) or 1))
                 for a in range(0, len(sel), step):
-                    block = sel[a:a + step]
+                    block = sel[a : a + step]
                     S = Pm[block][:, None, :] + Qt[None, :, :]
-                    score = problem.score(np.sqrt(S.real ** 2 + S.imag ** 2))
+                    score = problem.score(np.sqrt(S.real**2 + S.imag**2))
                     evaluated += score.size
                     hits = np.argwhere(score <= pool.threshold + SCORE_TIE)
                     if len(hits) > 4 * (top + 64):

@@ -27,19 +27,32 @@ def lattice(template, allow_uneven, step_deg):
     n_cyl = template.n_cylinders
     if allow_uneven:
         if step_deg is None:
-            raise AnalysisError("is needed with allow_uneven: the grid of throw phases to try, "
-                                "in degrees (such as 30)", "step_deg")
-        ok = (isinstance(step_deg, (int, float)) and not isinstance(step_deg, bool)
-              and math.isfinite(step_deg) and 0.1 - 1e-12 <= step_deg <= 180.0)
+            raise AnalysisError(
+                "is needed with allow_uneven: the grid of throw phases to try, "
+                "in degrees (such as 30)",
+                "step_deg",
+            )
+        ok = (
+            isinstance(step_deg, (int, float))
+            and not isinstance(step_deg, bool)
+            and math.isfinite(step_deg)
+            and 0.1 - 1e-12 <= step_deg <= 180.0
+        )
         P = round(360.0 / step_deg) if ok else 0
         if not ok or abs(P * step_deg - 360.0) > 1e-9:
-            raise AnalysisError(f"must divide 360° into equal steps of 0.1° to 180° (such as 30 "
-                                f"or 45), got {step_deg!r}", "step_deg")
+            raise AnalysisError(
+                f"must divide 360° into equal steps of 0.1° to 180° (such as 30 "
+                f"or 45), got {step_deg!r}",
+                "step_deg",
+            )
         n = len(template.throws)
         return P, 360.0 / P, 0, np.zeros(n), [[] for _ in range(n)]
     if step_deg is not None:
-        raise AnalysisError("applies only with allow_uneven: an even-firing search takes its "
-                            "phases from the firing interval", "step_deg")
+        raise AnalysisError(
+            "applies only with allow_uneven: an even-firing search takes its "
+            "phases from the firing interval",
+            "step_deg",
+        )
     if template.cycle == 2 or n_cyl % 2:
         s = 360.0 / n_cyl
     else:
@@ -52,7 +65,7 @@ def lattice(template, allow_uneven, step_deg):
     base = np.zeros(len(template.throws))
     offsets = []
     for j in range(len(template.throws)):
-        mine = sorted((c.number for c in template.cylinders if c.throw_index == j))
+        mine = sorted(c.number for c in template.cylinders if c.throw_index == j)
         if not mine:
             offsets.append([])
             continue
@@ -70,7 +83,9 @@ def lattice(template, allow_uneven, step_deg):
                     f"cannot fire evenly: cylinders {mine[0]} and {c} ride on throw {j + 1} with top dead centres "
                     f"{round_degrees((tdc[c] - tdc[mine[0]]) % 360.0, 3):g}° apart, not a multiple "
                     f"of the {s:g}° firing interval; "
-                    "search with allow_uneven and a step_deg", "template")
+                    "search with allow_uneven and a step_deg",
+                    "template",
+                )
             e.append(round(steps) % P)
         base[j] = base_j
         offsets.append(e)
@@ -118,7 +133,9 @@ def check_mirror(phasors, offsets, base, floor):
                 continue
             j = int(np.argmax(np.abs(row)))
             unit = row[n - 1 - j] / row[j]
-            if abs(abs(unit) - 1.0) > SYMMETRY_TOLERANCE or \
-                    np.abs(row[::-1] - unit * row).max() > SYMMETRY_TOLERANCE * big:
+            if (
+                abs(abs(unit) - 1.0) > SYMMETRY_TOLERANCE
+                or np.abs(row[::-1] - unit * row).max() > SYMMETRY_TOLERANCE * big
+            ):
                 return False
     return True

@@ -35,7 +35,7 @@ def _cluster_chunk(problem, units, top, threshold):
 
 def _chunks(units, n):
     size = max(1, len(units) // n)
-    return [units[i:i + size] for i in range(0, len(units), size)]
+    return [units[i : i + size] for i in range(0, len(units), size)]
 
 
 def _cores():
@@ -70,7 +70,7 @@ def run_local(problem, units, top, workers, threshold, progress):
     # forked workers ignore Ctrl-C from their first instruction (the initializer comes later)
     try:
         handler = signal.signal(signal.SIGINT, signal.SIG_IGN)
-    except ValueError:   # not the main thread: signals are not ours to change
+    except ValueError:  # not the main thread: signals are not ours to change
         handler = None
     try:
         pool = context.Pool(processes, _init_worker, (problem, top, shared))
@@ -93,8 +93,10 @@ def run_cluster(problem, units, top, threshold, scheduler, progress):
     try:
         from distributed import Client, as_completed
     except ImportError:
-        raise AnalysisError(f"needs the optional cluster support: {install_hint('cluster')} "
-                            "(dask distributed)", "scheduler") from None
+        raise AnalysisError(
+            f"needs the optional cluster support: {install_hint('cluster')} (dask distributed)",
+            "scheduler",
+        ) from None
     given = not isinstance(scheduler, str)  # a caller's Client: theirs to close
     client = scheduler if given else None
     try:
@@ -102,15 +104,21 @@ def run_cluster(problem, units, top, threshold, scheduler, progress):
             try:
                 client = Client(scheduler, timeout=f"{_CONNECT_S}s")
             except (OSError, TimeoutError) as exc:
-                raise AnalysisError(f"{scheduler!r} did not answer within {_CONNECT_S} s ({exc}); "
-                                    "check that the scheduler runs there", "scheduler") from None
+                raise AnalysisError(
+                    f"{scheduler!r} did not answer within {_CONNECT_S} s ({exc}); "
+                    "check that the scheduler runs there",
+                    "scheduler",
+                ) from None
             except (ValueError, TypeError):
-                raise AnalysisError(f"{scheduler!r} is not a scheduler address such as "
-                                    "tcp://host:8786", "scheduler") from None
+                raise AnalysisError(
+                    f"{scheduler!r} is not a scheduler address such as tcp://host:8786", "scheduler"
+                ) from None
         remote = client.scatter(problem, broadcast=True)
         pieces = _chunks(units, 16 * max(1, sum(client.nthreads().values())))
-        futures = [client.submit(_cluster_chunk, remote, piece, top, threshold, pure=False)
-                   for piece in pieces]
+        futures = [
+            client.submit(_cluster_chunk, remote, piece, top, threshold, pure=False)
+            for piece in pieces
+        ]
         sizes = {f.key: len(p) for f, p in zip(futures, pieces)}
         out = []
         for future in as_completed(futures):

@@ -16,8 +16,17 @@ from ..analysis.torque import torque
 from ..errors import AnalysisError
 from .objective import SCALAR_KINDS
 
-__all__ = ["Problem", "throw_phasors", "guide_phasors", "torsion_phasors", "minor_orders",
-           "guide_couple_units", "order_units", "mean_pitch", "objective_channels"]
+__all__ = [
+    "Problem",
+    "throw_phasors",
+    "guide_phasors",
+    "torsion_phasors",
+    "minor_orders",
+    "guide_couple_units",
+    "order_units",
+    "mean_pitch",
+    "objective_channels",
+]
 
 
 @dataclass
@@ -26,24 +35,24 @@ class Problem:
     channels and the prefix/suffix tables."""
 
     n_throws: int
-    lattice: int                  # P: phase indices 0..P−1
+    lattice: int  # P: phase indices 0..P−1
     step_deg: float
-    base_deg: np.ndarray          # (n_throws,) phase of index 0 for each throw
-    capacity: int                 # cylinders per lattice point (0: uneven, no constraint)
-    offsets: list                 # per throw: lattice offsets e_c of its cylinders
-    rotated: np.ndarray           # (n_throws, P, C) complex: channel phasor at each phase index
-    weights: np.ndarray           # (C,) score = Σ weights·|channel sum| (+ the TV1 part)
+    base_deg: np.ndarray  # (n_throws,) phase of index 0 for each throw
+    capacity: int  # cylinders per lattice point (0: uneven, no constraint)
+    offsets: list  # per throw: lattice offsets e_c of its cylinders
+    rotated: np.ndarray  # (n_throws, P, C) complex: channel phasor at each phase index
+    weights: np.ndarray  # (C,) score = Σ weights·|channel sum| (+ the TV1 part)
     reversal: bool
     mirror: bool
-    split: int                    # prefix throws are 1..split−1 (0-based: 1..split-1)
-    largest: Any = None           # (C,) TV1: score += max over channels of largest·|sum|
+    split: int  # prefix throws are 1..split−1 (0-based: 1..split-1)
+    largest: Any = None  # (C,) TV1: score += max over channels of largest·|sum|
     # filled by build_tables
-    prefix_rows: Any = None     # (n_pref, split−1) phase indices
-    prefix_group: Any = None    # (n_pref,) group index
-    prefix_tie: Any = None      # (n_pref,) prefix equals its reversal
-    suffix_rows: Any = None     # per group: (n_suf, n − split) rows
-    suffix_key: Any = None      # per group: mirror key (sorted), or None
-    suffix_leader: Any = None   # per group: suffix ≤ its reversal
+    prefix_rows: Any = None  # (n_pref, split−1) phase indices
+    prefix_group: Any = None  # (n_pref,) group index
+    prefix_tie: Any = None  # (n_pref,) prefix equals its reversal
+    suffix_rows: Any = None  # per group: (n_suf, n − split) rows
+    suffix_key: Any = None  # per group: mirror key (sorted), or None
+    suffix_leader: Any = None  # per group: suffix ≤ its reversal
 
     def score(self, magnitudes):
         """The score of channel magnitudes |sum| (..., C): the weighted sum, plus a TV1
@@ -103,7 +112,9 @@ def guide_phasors(template, samples, max_order):
         for k in range(1, max_order + 1):
             cos, sin = own.couple.order(k)
             out[0, cylinder.throw_index, k - 1] += complex(cos, -sin)
-            out[1, cylinder.throw_index, k - 1] += complex(cos, -sin) * (cylinder.z_m - guide.mean_z_m)
+            out[1, cylinder.throw_index, k - 1] += complex(cos, -sin) * (
+                cylinder.z_m - guide.mean_z_m
+            )
     return out
 
 
@@ -133,8 +144,9 @@ def minor_orders(template, allow_uneven, max_order):
     if allow_uneven:
         return tuple(range(1, max_order + 1))
     interval = template.cycle_deg / template.n_cylinders
-    return tuple(k for k in range(1, max_order + 1)
-                 if abs(math.remainder(k * interval, 360.0)) > 1e-9)
+    return tuple(
+        k for k in range(1, max_order + 1) if abs(math.remainder(k * interval, 360.0)) > 1e-9
+    )
 
 
 def guide_couple_units(guide, floor):
@@ -155,12 +167,17 @@ def mean_pitch(template):
     z = sorted(t.z_m for t in template.throws)
     pitch = (z[-1] - z[0]) / (len(z) - 1)
     if pitch <= 0.0:
-        raise AnalysisError("has every throw at the same axial position, so moments have no "
-                            "pitch to refer to; give each throw its z", "template")
+        raise AnalysisError(
+            "has every throw at the same axial position, so moments have no "
+            "pitch to refer to; give each throw its z",
+            "template",
+        )
     return pitch
 
 
-def objective_channels(objective, units, pitch, couple_units=None, torsion_units=None, tv_orders=()):
+def objective_channels(
+    objective, units, pitch, couple_units=None, torsion_units=None, tv_orders=()
+):
     """The complex sums the score needs, (kind 0..6, order index), and their weights, divided
     by the largest term weight (the search compares scores of order one; see SCORE_TIE); and
     for a TV1 term, which of them it takes the largest of (a mask) with their scales."""
@@ -175,18 +192,22 @@ def objective_channels(objective, units, pitch, couple_units=None, torsion_units
                     tv[(6, order - 1)] = term.weight / largest / torsion_units[order - 1]
             continue
         k = term.order - 1
-        unit = (couple_units[k] if term.kind in ("H", "X") else
-                torsion_units[k] if term.kind == "V" else units[k])
+        unit = (
+            couple_units[k]
+            if term.kind in ("H", "X")
+            else torsion_units[k]
+            if term.kind == "V"
+            else units[k]
+        )
         if unit == 0.0:
             continue
         scale = term.weight / largest / unit / (pitch if term.kind in ("M", "X") else 1.0)
         first = {"F": 0, "M": 2, "H": 4, "X": 5, "V": 6}[term.kind]
         parts = {"max": (0, 1), "forward": (0,), "backward": (1,)}[term.part]
         if term.kind in SCALAR_KINDS:
-            parts = (0,)   # a real torque: its forward phasor alone carries the amplitude
+            parts = (0,)  # a real torque: its forward phasor alone carries the amplitude
         for p in parts:
             key = (first + p, k)
             weights[key] = weights.get(key, 0.0) + scale
     keys = sorted(weights)
-    return (keys, np.array([weights[c] for c in keys]),
-            np.array([tv.get(c, 0.0) for c in keys]))
+    return (keys, np.array([weights[c] for c in keys]), np.array([tv.get(c, 0.0) for c in keys]))

@@ -7,8 +7,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..analysis.results import EngineResult
-from ..output import DOCUMENT_VERSION
 from ..model import Engine
+from ..output import DOCUMENT_VERSION
 
 __all__ = ["Arrangement", "SearchResult"]
 
@@ -53,12 +53,19 @@ class Arrangement:
     def to_dict(self) -> dict:
         """One entry of ``results`` in ``search --format json``."""
         full = self.result.to_dict()
-        return {"rank": self.rank, "score": self.score, "phases_deg": list(self.phases_deg),
-                "firing": {"order": list(self.result.firing.order),
-                           "intervals_deg": list(self.result.firing.intervals_deg),
-                           "uniform": self.result.firing.uniform},
-                "mirror_of": self.mirror_of,
-                "coefficients": dict(self.coefficients), "orders": full["orders"]}
+        return {
+            "rank": self.rank,
+            "score": self.score,
+            "phases_deg": list(self.phases_deg),
+            "firing": {
+                "order": list(self.result.firing.order),
+                "intervals_deg": list(self.result.firing.intervals_deg),
+                "uniform": self.result.firing.uniform,
+            },
+            "mirror_of": self.mirror_of,
+            "coefficients": dict(self.coefficients),
+            "orders": full["orders"],
+        }
 
 
 @dataclass(frozen=True)

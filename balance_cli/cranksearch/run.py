@@ -19,19 +19,26 @@ from ..kinematics.linkage import check_assembly
 from ..model import Engine, Throw
 from .final import final
 from .firing import firing_orders, reversed_order
+
+# under their former names: search has parameters and locals named as the functions are
+from .heuristic import heuristic_search
 from .kernel import SCORE_TIE, Pool, work_units
 from .lattice import check_mirror, check_reversal, lattice
 from .objective import Term, check_terms, parse_objective
 from .parallel import run_cluster, run_local
-from .problem import Problem, guide_phasors, minor_orders, throw_phasors, torsion_phasors
+from .problem import (
+    Problem,
+    guide_couple_units,
+    guide_phasors,
+    mean_pitch,
+    minor_orders,
+    objective_channels,
+    order_units,
+    throw_phasors,
+    torsion_phasors,
+)
 from .results import SearchResult
 from .tables import build_tables, count_cranks
-# under their former names: search has parameters and locals named as the functions are
-from .heuristic import heuristic_search
-from .problem import objective_channels
-from .problem import guide_couple_units
-from .problem import mean_pitch
-from .problem import order_units
 
 __all__ = ["search", "DEFAULT_TOP", "MAX_TOP", "DEFAULT_LIMIT", "MAX_WORKERS"]
 
@@ -47,12 +54,22 @@ DEFAULT_LIMIT = 2_000_000_000
 MAX_WORKERS = 1024
 
 
-def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
-           top: int = DEFAULT_TOP, allow_uneven: bool = False, step_deg: float | None = None,
-           workers: int | None = None, scheduler=None, heuristic: bool = False,
-           restarts: int = 200, seed: int = 0, limit: int = DEFAULT_LIMIT,
-           samples: int = DEFAULT_SAMPLES, max_order: int = DEFAULT_MAX_ORDER,
-           progress: Callable[[int, int], None] | None = None) -> SearchResult:
+def search(
+    template: Engine,
+    objective: str | Sequence[Term] | None = None,
+    top: int = DEFAULT_TOP,
+    allow_uneven: bool = False,
+    step_deg: float | None = None,
+    workers: int | None = None,
+    scheduler=None,
+    heuristic: bool = False,
+    restarts: int = 200,
+    seed: int = 0,
+    limit: int = DEFAULT_LIMIT,
+    samples: int = DEFAULT_SAMPLES,
+    max_order: int = DEFAULT_MAX_ORDER,
+    progress: Callable[[int, int], None] | None = None,
+) -> SearchResult:
     """The best crank arrangements and firing orders of ``template``.
 
     Parameters
@@ -88,21 +105,38 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     check_settings(samples, max_order)
     if workers is None:
         workers = os.cpu_count() or 1
-    for name, value, low, high in (("top", top, 1, MAX_TOP), ("restarts", restarts, 1, 1_000_000),
-                                   ("limit", limit, 1, 10**15), ("seed", seed, 0, 2**63 - 1),
-                                   ("workers", workers, 1, MAX_WORKERS)):
-        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) \
-                or not low <= value <= high:
-            raise AnalysisError(f"must be a whole number from {low:,} to {high:,}, got {value!r}",
-                                name)
+    for name, value, low, high in (
+        ("top", top, 1, MAX_TOP),
+        ("restarts", restarts, 1, 1_000_000),
+        ("limit", limit, 1, 10**15),
+        ("seed", seed, 0, 2**63 - 1),
+        ("workers", workers, 1, MAX_WORKERS),
+    ):
+        if (
+            isinstance(value, bool)
+            or not isinstance(value, (int, np.integer))
+            or not low <= value <= high
+        ):
+            raise AnalysisError(
+                f"must be a whole number from {low:,} to {high:,}, got {value!r}", name
+            )
     top, restarts, limit, seed, workers = map(int, (top, restarts, limit, seed, workers))
-    if scheduler is not None and not isinstance(scheduler, str) \
-            and not all(hasattr(scheduler, a) for a in ("scatter", "submit", "nthreads")):
-        raise AnalysisError(f"must be a scheduler address such as tcp://host:8786 or a "
-                            f"distributed.Client, got {scheduler!r}", "scheduler")
+    if (
+        scheduler is not None
+        and not isinstance(scheduler, str)
+        and not all(hasattr(scheduler, a) for a in ("scatter", "submit", "nthreads"))
+    ):
+        raise AnalysisError(
+            f"must be a scheduler address such as tcp://host:8786 or a "
+            f"distributed.Client, got {scheduler!r}",
+            "scheduler",
+        )
     if heuristic and scheduler is not None:
-        raise AnalysisError("applies to the exhaustive search, but the heuristic search runs in "
-                            "this process: leave out one of the two", "scheduler")
+        raise AnalysisError(
+            "applies to the exhaustive search, but the heuristic search runs in "
+            "this process: leave out one of the two",
+            "scheduler",
+        )
     if isinstance(objective, str) or objective is None:
         terms = parse_objective(objective, max_order)
     elif isinstance(objective, Term):
@@ -111,37 +145,54 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         try:
             terms = tuple(objective)
         except TypeError:
-            raise AnalysisError(f"must be a string such as 'M1,M2' or Terms, got {objective!r}",
-                                "objective") from None
+            raise AnalysisError(
+                f"must be a string such as 'M1,M2' or Terms, got {objective!r}", "objective"
+            ) from None
     check_terms(terms, max_order)
     if not isinstance(template, Engine):
-        raise AnalysisError(f"must be an Engine (balance.load_template gives one), got "
-                            f"{type(template).__name__}", "template")
+        raise AnalysisError(
+            f"must be an Engine (balance.load_template gives one), got {type(template).__name__}",
+            "template",
+        )
     if progress is not None and not callable(progress):
         raise AnalysisError(f"must be a callable(done, total), got {progress!r}", "progress")
     if template.is_rotary:
-        raise AnalysisError("is a rotary engine: its crank does not turn, so there are no throw "
-                            "phases to arrange; search a fixed-frame template", "template")
+        raise AnalysisError(
+            "is a rotary engine: its crank does not turn, so there are no throw "
+            "phases to arrange; search a fixed-frame template",
+            "template",
+        )
     if template.has_several_crankshafts:
-        raise AnalysisError(f"has {len(template.crankshafts)} crankshafts; the search arranges "
-                            "the throws of one crankshaft: give a template with one", "template")
+        raise AnalysisError(
+            f"has {len(template.crankshafts)} crankshafts; the search arranges "
+            "the throws of one crankshaft: give a template with one",
+            "template",
+        )
     if template.counterweights or template.balancer_shafts:
         # a counterweight is sized for one crank and a shaft's force does not turn with the
         # throws: the per-throw phasor sums would score a different engine than the one found
-        raise AnalysisError("has counterweights or balancer shafts as built; they belong to one "
-                            "arrangement, which the search is to choose: remove the "
-                            "[[counterweights]] and [[shafts]] tables from the template",
-                            "template")
+        raise AnalysisError(
+            "has counterweights or balancer shafts as built; they belong to one "
+            "arrangement, which the search is to choose: remove the "
+            "[[counterweights]] and [[shafts]] tables from the template",
+            "template",
+        )
     n = len(template.throws)
     if n < 2:
-        raise AnalysisError("has one throw: with throw 1 at 0° there is nothing to arrange; give "
-                            "the template two or more [[throws]]", "template")
+        raise AnalysisError(
+            "has one throw: with throw 1 at 0° there is nothing to arrange; give "
+            "the template two or more [[throws]]",
+            "template",
+        )
     if any(not any(c.throw_index == j for c in template.cylinders) for j in range(n)):
         empty = next(j for j in range(n) if not any(c.throw_index == j for c in template.cylinders))
-        raise AnalysisError(f"has no cylinder on throw {empty + 1}; remove the throw or give "
-                            "it a cylinder", "template")
-    flat = replace(template, throws=tuple(Throw(0.0, t.z_m) for t in template.throws),
-                   firing_order=None)
+        raise AnalysisError(
+            f"has no cylinder on throw {empty + 1}; remove the throw or give it a cylinder",
+            "template",
+        )
+    flat = replace(
+        template, throws=tuple(Throw(0.0, t.z_m) for t in template.throws), firing_order=None
+    )
     check_assembly(flat)
     phasors = throw_phasors(flat, samples, max_order)
     units = order_units(phasors, flat.noise_floor_n)
@@ -154,8 +205,9 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     tv_orders = ()
     if any(term.kind in ("V", "TV") for term in terms):
         if flat.torsion is None:
-            raise AnalysisError("has no [torsion] table: a V term needs the shaft line's first "
-                                "mode", "template")
+            raise AnalysisError(
+                "has no [torsion] table: a V term needs the shaft line's first mode", "template"
+            )
         if couple_units is None:
             phasors = np.concatenate([phasors, np.zeros((2,) + phasors.shape[1:], complex)])
         torsional, torsion_units = torsion_phasors(flat, samples, max_order)
@@ -163,20 +215,34 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         phasors = np.concatenate([phasors, torsional * units.max()])
         torsion_units = torsion_units * units.max()
         tv_orders = minor_orders(flat, allow_uneven, max_order)
-    channels, weights, largest = objective_channels(terms, units, pitch, couple_units, torsion_units,
-                                           tv_orders)
+    channels, weights, largest = objective_channels(
+        terms, units, pitch, couple_units, torsion_units, tv_orders
+    )
     P, s, capacity, base, offsets = lattice(flat, allow_uneven, step_deg)
     reversal, shift = check_reversal(phasors, offsets, base, P, flat.noise_floor_n)
     mirror = check_mirror(phasors, offsets, base, flat.noise_floor_n)
-    phase = base[:, None] + s * np.arange(P)[None, :]                 # (n, P) degrees
+    phase = base[:, None] + s * np.arange(P)[None, :]  # (n, P) degrees
     rotated = np.zeros((n, P, len(channels)), complex)
     for i, (kind, k) in enumerate(channels):
         sign = -1.0 if kind in (1, 3) else 1.0
         rotated[:, :, i] = phasors[kind, :, k][:, None] * np.exp(
-            1j * sign * (k + 1) * np.radians(phase))
+            1j * sign * (k + 1) * np.radians(phase)
+        )
     split = 1 + (n - 1) // 2
-    problem = Problem(n, P, s, base, capacity, offsets, rotated, weights, reversal, False, split,
-                       largest=largest if np.any(largest) else None)
+    problem = Problem(
+        n,
+        P,
+        s,
+        base,
+        capacity,
+        offsets,
+        rotated,
+        weights,
+        reversal,
+        False,
+        split,
+        largest=largest if np.any(largest) else None,
+    )
     # the mirror condition reads throws n−1 and n from the suffix
     problem.mirror = mirror and n - 2 >= split
     symmetries = ["turning the whole crank (throw 1 at 0°)"]
@@ -185,7 +251,7 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     if mirror:
         symmetries.append("mirror image, read from the other end (evaluated once, listed)")
     cranks = count_cranks(problem)
-    firing_per_crank = (math.factorial(capacity) ** P // capacity if capacity else 1)
+    firing_per_crank = math.factorial(capacity) ** P // capacity if capacity else 1
     expected = cranks if cranks is not None else P ** (n - 1)
     reduction = (2 if reversal else 1) * (2 if problem.mirror else 1)
     if not heuristic and expected // reduction > limit:
@@ -205,8 +271,7 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
         units_of_work = work_units(problem)
         tick = _ticker(progress, len(units_of_work) + top)
         if scheduler is not None:
-            chunks, workers = run_cluster(problem, units_of_work, top, math.inf, scheduler,
-                                           tick)
+            chunks, workers = run_cluster(problem, units_of_work, top, math.inf, scheduler, tick)
         else:
             chunks, workers = run_local(problem, units_of_work, top, workers, math.inf, tick)
     truncated = any(c.truncated for c in chunks)
@@ -219,26 +284,53 @@ def search(template: Engine, objective: "str | Sequence[Term] | None" = None,
     if len(orbits) >= top:
         cut = orbits[top - 1][0]
         orbits = [o for o in orbits if o[0] <= cut + SCORE_TIE]
-    arrangements = final(template, flat, problem, orbits, shift, terms, top, samples,
-                          max_order, units, pitch, tick, couple_units, tv_orders)
+    arrangements = final(
+        template,
+        flat,
+        problem,
+        orbits,
+        shift,
+        terms,
+        top,
+        samples,
+        max_order,
+        units,
+        pitch,
+        tick,
+        couple_units,
+        tv_orders,
+    )
     total = (total_cranks or 0) * firing_per_crank
     distinct = _distinct(flat, problem, total, shift) if reversal else total
     return SearchResult(
-        template=template, objective=terms, arrangements=tuple(arrangements),
-        arrangements_total=total, arrangements_distinct=distinct,
-        evaluated=sum(c.evaluated for c in chunks), pruned=sum(c.pruned for c in chunks),
-        exhaustive=not heuristic, method="heuristic" if heuristic else "exhaustive",
-        symmetries=tuple(symmetries), firing_orders_per_crank=firing_per_crank,
-        even=not allow_uneven, step_deg=s, ties_truncated=truncated,
-        elapsed_s=time.perf_counter() - started, workers=1 if heuristic else workers,
-        max_order=max_order, samples=samples)
+        template=template,
+        objective=terms,
+        arrangements=tuple(arrangements),
+        arrangements_total=total,
+        arrangements_distinct=distinct,
+        evaluated=sum(c.evaluated for c in chunks),
+        pruned=sum(c.pruned for c in chunks),
+        exhaustive=not heuristic,
+        method="heuristic" if heuristic else "exhaustive",
+        symmetries=tuple(symmetries),
+        firing_orders_per_crank=firing_per_crank,
+        even=not allow_uneven,
+        step_deg=s,
+        ties_truncated=truncated,
+        elapsed_s=time.perf_counter() - started,
+        workers=1 if heuristic else workers,
+        max_order=max_order,
+        samples=samples,
+    )
 
 
 def _refuse_limit(limit, cranks, about):
     raise AnalysisError(
         f"is {limit:,} (cranks to evaluate), but an exhaustive search of this template evaluates "
         f"{about}{cranks:,}; raise it (about 30 million a second on two cores), or use the "
-        "heuristic search (not proved optimal) or a cluster scheduler", "limit")
+        "heuristic search (not proved optimal) or a cluster scheduler",
+        "limit",
+    )
 
 
 def _planned(problem):
@@ -269,6 +361,7 @@ def _ticker(progress, total):
     def tick(k):
         done[0] += k
         progress(done[0], total)
+
     return tick
 
 
@@ -278,7 +371,7 @@ def _distinct(flat, problem, total, shift):
     if P % 2:
         return total // 2 if total % 2 == 0 else (total + 1) // 2
     if not problem.capacity:
-        return (total + 2 ** (n - 1)) // 2   # every crank of phases 0 and 180° is its own reversal
+        return (total + 2 ** (n - 1)) // 2  # every crank of phases 0 and 180° is its own reversal
     reach = {(e - p) % P for offsets in problem.offsets for e in offsets for p in (0, P // 2)}
     if len(reach) < P:
         # phases of 0 and 180° alone cannot fill the lattice: no crank is its own reversal (an

@@ -29,8 +29,9 @@ def _assignments(problem, throws, first_fixed=False):
         for p in range(P):
             for e in problem.offsets[j]:
                 occupancy[p, (e - p) % P] += 1
-        new_rows = np.concatenate([np.repeat(rows, P, axis=0),
-                                   np.tile(candidates, len(rows))[:, None]], axis=1)
+        new_rows = np.concatenate(
+            [np.repeat(rows, P, axis=0), np.tile(candidates, len(rows))[:, None]], axis=1
+        )
         new_counts = np.repeat(counts, P, axis=0) + np.tile(occupancy, (len(rows), 1))
         if cap:
             keep = (new_counts <= cap).all(axis=1)
@@ -99,13 +100,24 @@ def build_tables(problem):
             mkey = None
         suffix_rows.append(mine)
         suffix_key.append(mkey)
-        suffix_leader.append(_lex_sign(mine, P) <= 0 if problem.reversal and mine.shape[1]
-                             else np.ones(len(mine), bool))
+        suffix_leader.append(
+            _lex_sign(mine, P) <= 0
+            if problem.reversal and mine.shape[1]
+            else np.ones(len(mine), bool)
+        )
     # prefixes sorted by group, then by their second throw's phase (the mirror condition)
     second = rows[:, 0] if rows.shape[1] else np.zeros(len(rows), np.int16)
     sort = np.lexsort((second, group))
-    problem.prefix_rows, problem.prefix_group, problem.prefix_tie = rows[sort], group[sort], tie[sort]
-    problem.suffix_rows, problem.suffix_key, problem.suffix_leader = suffix_rows, suffix_key, suffix_leader
+    problem.prefix_rows, problem.prefix_group, problem.prefix_tie = (
+        rows[sort],
+        group[sort],
+        tie[sort],
+    )
+    problem.suffix_rows, problem.suffix_key, problem.suffix_leader = (
+        suffix_rows,
+        suffix_key,
+        suffix_leader,
+    )
     return total
 
 
@@ -134,7 +146,7 @@ def _count_by_occupancy(problem):
     count[0] = 1
     for j in range(n):
         new = np.zeros_like(count)
-        for p in ([0] if j == 0 else range(P)):
+        for p in [0] if j == 0 else range(P):
             occupancy = np.zeros(P, np.int64)
             for e in problem.offsets[j]:
                 occupancy[(e - p) % P] += 1

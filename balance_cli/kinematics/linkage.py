@@ -22,10 +22,27 @@ import numpy as np
 from ..errors import ModelError
 from ..units import round_degrees
 
-__all__ = ["MassSet", "RodSet", "Linkage", "LinkageState", "close_linkage", "linkage_state",
-           "pin_angle", "BIG_ENDS", "CRANK", "COUNTERWEIGHT", "BALANCER", "CRANKSHAFT_OWNERS",
-           "UNKNOWN_RADIUS_M", "counterweight_angle", "balancer_positions", "crank_angles_of",
-           "piston_travel", "check_assembly", "engine_angles"]
+__all__ = [
+    "MassSet",
+    "RodSet",
+    "Linkage",
+    "LinkageState",
+    "close_linkage",
+    "linkage_state",
+    "pin_angle",
+    "BIG_ENDS",
+    "CRANK",
+    "COUNTERWEIGHT",
+    "BALANCER",
+    "CRANKSHAFT_OWNERS",
+    "UNKNOWN_RADIUS_M",
+    "counterweight_angle",
+    "balancer_positions",
+    "crank_angles_of",
+    "piston_travel",
+    "check_assembly",
+    "engine_angles",
+]
 
 #: owner codes of MassSet.cylinder for masses of no cylinder: big ends at a pin, the
 #: crankshaft's own unbalance, counterweights as built, balancer-shaft masses
@@ -122,12 +139,17 @@ def _slider(point, axis_angle, length, offset, cylinder, crank_angles, centre=0j
 def _cannot_reach(cylinder, crank_angle):
     where = f"{round_degrees(np.degrees(crank_angle), 1):.1f}°"
     if cylinder.is_link:
-        raise ModelError(f"cylinder {cylinder.number}: its link rod cannot reach the cylinder axis "
-                         f"at crank angle {where}; make link_length_m longer or knuckle_radius_m "
-                         "smaller", cylinder=cylinder.number)
-    raise ModelError(f"cylinder {cylinder.number}: the rod cannot reach the cylinder axis at crank "
-                     f"angle {where}; rod_length_m must exceed crank_radius_m plus |pin_offset_m|",
-                     cylinder=cylinder.number)
+        raise ModelError(
+            f"cylinder {cylinder.number}: its link rod cannot reach the cylinder axis "
+            f"at crank angle {where}; make link_length_m longer or knuckle_radius_m "
+            "smaller",
+            cylinder=cylinder.number,
+        )
+    raise ModelError(
+        f"cylinder {cylinder.number}: the rod cannot reach the cylinder axis at crank "
+        f"angle {where}; rod_length_m must exceed crank_radius_m plus |pin_offset_m|",
+        cylinder=cylinder.number,
+    )
 
 
 class Linkage(NamedTuple):
@@ -171,8 +193,15 @@ def _counterweight_rows(engine, crank_angles):
         radius = UNKNOWN_RADIUS_M if weight.radius_m is None else weight.radius_m
         position = radius * np.exp(1j * counterweight_angle(engine, weight, crank_angles))
         centre = engine.crankshaft_of(weight.throw_index).centre
-        rows.append((position + centre if centre else position, weight.mass_radius_kgm / radius,
-                     engine.counterweight_z_m(weight), COUNTERWEIGHT, weight.throw_index))
+        rows.append(
+            (
+                position + centre if centre else position,
+                weight.mass_radius_kgm / radius,
+                engine.counterweight_z_m(weight),
+                COUNTERWEIGHT,
+                weight.throw_index,
+            )
+        )
     return rows
 
 
@@ -194,7 +223,9 @@ def _balancer_rows(engine, angles):
     for shaft in engine.balancer_shafts:
         for mass, position in zip(shaft.masses, balancer_positions(engine, shaft, angles)):
             e = UNKNOWN_RADIUS_M if mass.eccentricity_m is None else mass.eccentricity_m
-            rows.append((position, mass.mass_radius_kgm / e, engine.balancer_z_m(mass), BALANCER, -1))
+            rows.append(
+                (position, mass.mass_radius_kgm / e, engine.balancer_z_m(mass), BALANCER, -1)
+            )
     return rows
 
 
@@ -211,8 +242,11 @@ def close_linkage(engine, crank_angles, numbers=None, pin_shift=None):
     masters = {c.master for c in wanted if c.is_link}
     # only the pins the wanted cylinders ride on (None for the others): the TDC search asks
     # for one cylinder at a time
-    throws = {c.throw_index for c in wanted} | {c.opposed_throw_index for c in wanted if c.is_opposed} \
+    throws = (
+        {c.throw_index for c in wanted}
+        | {c.opposed_throw_index for c in wanted if c.is_opposed}
         | set(pin_shift or {})
+    )
     pins = [None] * len(engine.throws)
     for i in range(len(engine.throws)):
         if i in throws or numbers is None:
@@ -231,15 +265,29 @@ def close_linkage(engine, crank_angles, numbers=None, pin_shift=None):
         # the offset is towards the crankshaft's own direction of rotation
         offset = shaft.direction * engine.pin_offset_of(cyl)
         piston[cyl.number], travel[cyl.number] = _slider(
-            pins[cyl.throw_index], axis, engine.rod_length_m, offset, cyl, crank_angles, shaft.centre)
+            pins[cyl.throw_index],
+            axis,
+            engine.rod_length_m,
+            offset,
+            cyl,
+            crank_angles,
+            shaft.centre,
+        )
         if cyl.is_opposed:
             # the same bore line seen from the other end: the axis turned half a turn; the
             # offset from that end is the far crankshaft's (tiny) distance off the axis less
             # this end's offset
             far = engine.crankshaft_of(cyl.opposed_throw_index).centre
             span = (far - shaft.centre) * np.exp(-1j * axis)
-            position, own = _slider(pins[cyl.opposed_throw_index], axis + np.pi, engine.rod_length_m,
-                                    span.imag - offset, cyl, crank_angles, far)
+            position, own = _slider(
+                pins[cyl.opposed_throw_index],
+                axis + np.pi,
+                engine.rod_length_m,
+                span.imag - offset,
+                cyl,
+                crank_angles,
+                far,
+            )
             opposed[cyl.number] = (position, own)
             travel[cyl.number] = travel[cyl.number] + own
     for cyl in wanted:
@@ -255,8 +303,14 @@ def close_linkage(engine, crank_angles, numbers=None, pin_shift=None):
         axis = engine.bank_angles_rad[cyl.bank_index]
         shaft = engine.crankshaft_of(cyl.throw_index)
         piston[cyl.number], travel[cyl.number] = _slider(
-            knuckle[cyl.number], axis, cyl.link_length_m,
-            shaft.direction * engine.pin_offset_of(cyl), cyl, crank_angles, shaft.centre)
+            knuckle[cyl.number],
+            axis,
+            cyl.link_length_m,
+            shaft.direction * engine.pin_offset_of(cyl),
+            cyl,
+            crank_angles,
+            shaft.centre,
+        )
     return Linkage(piston, travel, knuckle, pins, opposed)
 
 
@@ -303,7 +357,9 @@ def _check_opposed_strokes(engine):
                 f"cylinder {n}: its two pistons move together (the bore's length changes by "
                 f"{sweep * 1000:.3g} mm, against {4 * engine.crank_radius_m * 1000:.3g} mm for "
                 "mirror images); a far throw at 180° in its crankshaft's own sense moves its "
-                "piston as the mirror image of the near one (180° ± the lead)", cylinder=n)
+                "piston as the mirror image of the near one (180° ± the lead)",
+                cylinder=n,
+            )
 
 
 def piston_travel(engine, crank_angles, numbers=None, pin_shift=None):
@@ -349,19 +405,34 @@ def linkage_state(engine, angles, pin_shift=None, throw_index=None) -> LinkageSt
     """
     check_assembly(engine)
     angles = np.asarray(angles, dtype=float)
-    chosen = engine.cylinders if throw_index is None else [
-        c for c in engine.cylinders if throw_index in (c.throw_index, c.opposed_throw_index)]
+    chosen = (
+        engine.cylinders
+        if throw_index is None
+        else [c for c in engine.cylinders if throw_index in (c.throw_index, c.opposed_throw_index)]
+    )
     piston, travel, knuckle, pins, opposed = close_linkage(
-        engine, crank_angles_of(engine, angles), None if throw_index is None else [c.number for c in chosen],
-        _case_shift(engine, angles, pin_shift))
+        engine,
+        crank_angles_of(engine, angles),
+        None if throw_index is None else [c.number for c in chosen],
+        _case_shift(engine, angles, pin_shift),
+    )
     rows = []  # (position, mass, z, owner, throw)
     for cyl in chosen:
-        rows.append((piston[cyl.number], cyl.reciprocating_kg, cyl.z_m, cyl.number, cyl.throw_index))
+        rows.append(
+            (piston[cyl.number], cyl.reciprocating_kg, cyl.z_m, cyl.number, cyl.throw_index)
+        )
         if cyl.is_link and cyl.knuckle_kg:
             rows.append((knuckle[cyl.number], cyl.knuckle_kg, cyl.z_m, cyl.number, cyl.throw_index))
         if cyl.is_opposed:
-            rows.append((opposed[cyl.number][0], cyl.opposed_reciprocating_kg, cyl.z_m, cyl.number,
-                         cyl.opposed_throw_index))
+            rows.append(
+                (
+                    opposed[cyl.number][0],
+                    cyl.opposed_reciprocating_kg,
+                    cyl.z_m,
+                    cyl.number,
+                    cyl.opposed_throw_index,
+                )
+            )
     for index, (crank, pin) in enumerate(zip(engine.throws, pins)):
         if throw_index is not None and index != throw_index:
             continue

@@ -81,12 +81,21 @@ class KinematicState:
         masses, rods = self.masses, self.rods
         return dataclasses.replace(
             self,
-            masses=dataclasses.replace(masses, **{
-                name: getattr(masses, name)[masses_kept]
-                for name in ("positions", "masses_kg", "z_m", "cylinder", "throw_index")}),
-            rods=dataclasses.replace(rods, **{
-                name: getattr(rods, name)[rods_kept]
-                for name in ("directions", "corrections_kgm2", "cylinder", "throw_index")}))
+            masses=dataclasses.replace(
+                masses,
+                **{
+                    name: getattr(masses, name)[masses_kept]
+                    for name in ("positions", "masses_kg", "z_m", "cylinder", "throw_index")
+                },
+            ),
+            rods=dataclasses.replace(
+                rods,
+                **{
+                    name: getattr(rods, name)[rods_kept]
+                    for name in ("directions", "corrections_kgm2", "cylinder", "throw_index")
+                },
+            ),
+        )
 
 
 def kinematic_state(engine, samples: int) -> KinematicState:
@@ -119,16 +128,26 @@ _LOCK = threading.Lock()
 
 
 def _bytes(state):
-    return (state.masses.positions.nbytes + state.rods.directions.nbytes
-            + sum(t.nbytes for t in state.travel.values()))
+    return (
+        state.masses.positions.nbytes
+        + state.rods.directions.nbytes
+        + sum(t.nbytes for t in state.travel.values())
+    )
 
 
 def _closed(engine, samples):
     check_assembly(engine)
     angles = engine_angles(samples)
     closed = linkage_state(engine, angles)
-    return KinematicState(samples, angles, closed.masses, closed.rods, closed.travel,
-                          closed.opposed_travel, _by_crankshaft(engine, closed))
+    return KinematicState(
+        samples,
+        angles,
+        closed.masses,
+        closed.rods,
+        closed.travel,
+        closed.opposed_travel,
+        _by_crankshaft(engine, closed),
+    )
 
 
 def _by_crankshaft(engine, closed):
@@ -139,7 +158,9 @@ def _by_crankshaft(engine, closed):
         travel = closed.travel[c.number]
         if c.is_opposed:
             own = closed.opposed_travel[c.number]
-            out.setdefault(engine.throws[c.opposed_throw_index].crankshaft_index, {})[c.number] = own
+            out.setdefault(engine.throws[c.opposed_throw_index].crankshaft_index, {})[c.number] = (
+                own
+            )
             travel = travel - own
         mine = out.setdefault(engine.throws[c.throw_index].crankshaft_index, {})
         mine[c.number] = mine.get(c.number, 0.0) + travel

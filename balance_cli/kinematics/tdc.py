@@ -41,8 +41,8 @@ def _tdc_angles(engine):
         # block's grids are closed together and the diagonal kept): memory stays linear in
         # the number of cylinders, and the Python loop short
         for start in range(0, len(numbers), _TDC_BLOCK):
-            block = numbers[start:start + _TDC_BLOCK]
-            local = best[start:start + len(block), None] + np.linspace(-step, step, 101)
+            block = numbers[start : start + _TDC_BLOCK]
+            local = best[start : start + len(block), None] + np.linspace(-step, step, 101)
             travel = piston_travel(engine, local, block)
             for i, n in enumerate(block):
                 best[start + i] = local[i, np.argmax(travel[n][i])]
@@ -76,6 +76,7 @@ def _as_engine_angles(engine, crank_rad):
     out = {}
     for c in engine.cylinders:
         angle = math.degrees(float(crank_rad[c.number]))
-        out[c.number] = wrap_degrees(-angle if engine.is_rotary else angle,
-                                     tolerance=TDC_PRECISION_DEG)
+        out[c.number] = wrap_degrees(
+            -angle if engine.is_rotary else angle, tolerance=TDC_PRECISION_DEG
+        )
     return out

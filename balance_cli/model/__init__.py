@@ -21,7 +21,21 @@ from .parts import GasCycle, Parts
 from .torsion import ShaftDisk, TorsionModel
 from .values import offset_position
 
-__all__ = ["Crankshaft", "Throw", "Cylinder", "Engine", "Parts", "GasCycle", "FRAMES",
-           "CounterweightMass", "BalancerMass", "BalancerShaftSpec", "MAX_SHAFT_RATIO",
-           "offset_position",
-           "ShaftDisk", "TorsionModel", "MAX_NAME_LENGTH", "REFERENCE_CRANKSHAFT"]
+__all__ = [
+    "Crankshaft",
+    "Throw",
+    "Cylinder",
+    "Engine",
+    "Parts",
+    "GasCycle",
+    "FRAMES",
+    "CounterweightMass",
+    "BalancerMass",
+    "BalancerShaftSpec",
+    "MAX_SHAFT_RATIO",
+    "offset_position",
+    "ShaftDisk",
+    "TorsionModel",
+    "MAX_NAME_LENGTH",
+    "REFERENCE_CRANKSHAFT",
+]

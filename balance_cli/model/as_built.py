@@ -41,8 +41,11 @@ class CounterweightMass:
     radius_m: float | None = None
 
     def __post_init__(self):
-        if isinstance(self.throw, bool) or not isinstance(self.throw, numbers.Integral) \
-                or self.throw < 1:
+        if (
+            isinstance(self.throw, bool)
+            or not isinstance(self.throw, numbers.Integral)
+            or self.throw < 1
+        ):
             raise ModelError(f"must be a throw number from 1, got {self.throw!r}", "throw")
         object.__setattr__(self, "throw", int(self.throw))
         check_quantity(self.mass_radius_kgm, "unbalance", "mass_radius_kgm")
@@ -126,16 +129,26 @@ class BalancerShaftSpec:
 
     def __post_init__(self):
         ratio = self.ratio
-        if isinstance(ratio, bool) or not isinstance(ratio, numbers.Integral) or ratio == 0 \
-                or abs(ratio) > MAX_SHAFT_RATIO:
-            raise ModelError(f"must be a nonzero whole number of turns per crank turn from "
-                             f"-{MAX_SHAFT_RATIO} to {MAX_SHAFT_RATIO} (+2 with the crank at "
-                             f"twice its speed, -2 against it), got {ratio!r}", "ratio")
+        if (
+            isinstance(ratio, bool)
+            or not isinstance(ratio, numbers.Integral)
+            or ratio == 0
+            or abs(ratio) > MAX_SHAFT_RATIO
+        ):
+            raise ModelError(
+                f"must be a nonzero whole number of turns per crank turn from "
+                f"-{MAX_SHAFT_RATIO} to {MAX_SHAFT_RATIO} (+2 with the crank at "
+                f"twice its speed, -2 against it), got {ratio!r}",
+                "ratio",
+            )
         object.__setattr__(self, "ratio", int(ratio))
         if isinstance(self.masses, list):
             object.__setattr__(self, "masses", tuple(self.masses))
-        if not isinstance(self.masses, tuple) or not self.masses \
-                or not all(isinstance(m, BalancerMass) for m in self.masses):
+        if (
+            not isinstance(self.masses, tuple)
+            or not self.masses
+            or not all(isinstance(m, BalancerMass) for m in self.masses)
+        ):
             raise ModelError("needs one or more BalancerMass objects", "masses")
         check_quantity(self.lateral_m, "length", "lateral_m", sign="any")
         check_quantity(self.vertical_m, "length", "vertical_m", sign="any")

@@ -37,10 +37,16 @@ class Crankshaft:
     def __post_init__(self):
         check_quantity(self.x_m, "length", "x_m", sign="any")
         check_quantity(self.y_m, "length", "y_m", sign="any")
-        if isinstance(self.direction, bool) or not isinstance(self.direction, numbers.Integral) \
-                or self.direction not in (1, -1):
-            raise ModelError(f"must be +1 (with the first crankshaft) or -1 (against it), got "
-                             f"{self.direction!r}", "direction")
+        if (
+            isinstance(self.direction, bool)
+            or not isinstance(self.direction, numbers.Integral)
+            or self.direction not in (1, -1)
+        ):
+            raise ModelError(
+                f"must be +1 (with the first crankshaft) or -1 (against it), got "
+                f"{self.direction!r}",
+                "direction",
+            )
         object.__setattr__(self, "direction", int(self.direction))
         check_angle(self.phase_rad, "phase_rad")
 
@@ -74,10 +80,14 @@ class Throw:
         # checked here too, not only in the Engine: a Throw of NaN once built without a word
         check_angle(self.phase_rad, "phase_rad")
         check_quantity(self.z_m, "length", "z_m", sign="any")
-        if isinstance(self.crankshaft, bool) or not isinstance(self.crankshaft, numbers.Integral) \
-                or self.crankshaft < 1:
-            raise ModelError(f"must be a crankshaft number from 1, got {self.crankshaft!r}",
-                             "crankshaft")
+        if (
+            isinstance(self.crankshaft, bool)
+            or not isinstance(self.crankshaft, numbers.Integral)
+            or self.crankshaft < 1
+        ):
+            raise ModelError(
+                f"must be a crankshaft number from 1, got {self.crankshaft!r}", "crankshaft"
+            )
         object.__setattr__(self, "crankshaft", int(self.crankshaft))
 
     @property

@@ -76,22 +76,31 @@ class Cylinder:
         n = self.number
         if not isinstance(n, numbers.Integral) or isinstance(n, bool) or n < 1:
             raise ModelError(f"must be a whole number from 1, got {n!r}", "number")
-        object.__setattr__(self, "number", int(n))   # numpy's whole numbers as Python's
+        object.__setattr__(self, "number", int(n))  # numpy's whole numbers as Python's
         for name in ("bank", "throw"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 1:
-                raise ModelError(f"cylinder {n}: {name} is a number from 1, got {value!r}",
-                                 cylinder=n)
+                raise ModelError(
+                    f"cylinder {n}: {name} is a number from 1, got {value!r}", cylinder=n
+                )
             object.__setattr__(self, name, int(value))
-        for name in ("z_m", "reciprocating_kg", "link_length_m", "knuckle_radius_m",
-                     "knuckle_angle_rad", "knuckle_kg", "rod_inertia_kgm2",
-                     "opposed_reciprocating_kg"):
+        for name in (
+            "z_m",
+            "reciprocating_kg",
+            "link_length_m",
+            "knuckle_radius_m",
+            "knuckle_angle_rad",
+            "knuckle_kg",
+            "rod_inertia_kgm2",
+            "opposed_reciprocating_kg",
+        ):
             value = getattr(self, name)
             if value is None and name == "opposed_reciprocating_kg":
                 continue
             if not is_real(value) or not math.isfinite(value):
-                raise ModelError(f"cylinder {n}: {name} must be a finite number, got {value!r}",
-                                 cylinder=n)
+                raise ModelError(
+                    f"cylinder {n}: {name} must be a finite number, got {value!r}", cylinder=n
+                )
         check_quantity(self.reciprocating_kg, "mass", "reciprocating_kg", cylinder=n)
         check_quantity(self.knuckle_kg, "mass", "knuckle_kg", sign="non-negative", cylinder=n)
         if self.pin_offset_m is not None:
@@ -99,21 +108,28 @@ class Cylinder:
         if self.opposed_throw is not None:
             far = self.opposed_throw
             if isinstance(far, bool) or not isinstance(far, numbers.Integral) or far < 1:
-                raise ModelError(f"cylinder {n}: opposed_throw is a throw number from 1, got "
-                                 f"{far!r}", cylinder=n)
+                raise ModelError(
+                    f"cylinder {n}: opposed_throw is a throw number from 1, got {far!r}", cylinder=n
+                )
             object.__setattr__(self, "opposed_throw", int(far))
             if self.master is not None:
-                raise ModelError(f"cylinder {n}: an opposed-piston cylinder has plain rods; it "
-                                 "cannot be a link-rod cylinder too", cylinder=n)
+                raise ModelError(
+                    f"cylinder {n}: an opposed-piston cylinder has plain rods; it "
+                    "cannot be a link-rod cylinder too",
+                    cylinder=n,
+                )
             if self.opposed_reciprocating_kg is None:
                 # the same piston at both ends unless told otherwise, as a file reads it
                 object.__setattr__(self, "opposed_reciprocating_kg", self.reciprocating_kg)
-            check_quantity(self.opposed_reciprocating_kg, "mass", "opposed_reciprocating_kg",
-                           cylinder=n)
+            check_quantity(
+                self.opposed_reciprocating_kg, "mass", "opposed_reciprocating_kg", cylinder=n
+            )
         elif self.opposed_reciprocating_kg is not None:
-            raise ModelError(f"cylinder {n}: opposed_reciprocating_kg belongs to an opposed-piston "
-                             "cylinder; give its opposed_throw too, or leave the mass out",
-                             cylinder=n)
+            raise ModelError(
+                f"cylinder {n}: opposed_reciprocating_kg belongs to an opposed-piston "
+                "cylinder; give its opposed_throw too, or leave the mass out",
+                cylinder=n,
+            )
 
     @property
     def is_link(self) -> bool:

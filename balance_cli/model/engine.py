@@ -109,16 +109,24 @@ class Engine:
 
     def __post_init__(self):
         # sequences given as lists become tuples: the engine stays immutable and hashable
-        for name in ("bank_angles_rad", "throws", "cylinders", "firing_order", "crankshafts",
-                     "counterweights", "balancer_shafts"):
+        for name in (
+            "bank_angles_rad",
+            "throws",
+            "cylinders",
+            "firing_order",
+            "crankshafts",
+            "counterweights",
+            "balancer_shafts",
+        ):
             value = getattr(self, name)
             if isinstance(value, list):
                 object.__setattr__(self, name, tuple(value))
             elif not isinstance(value, tuple) and (name != "firing_order" or value is not None):
                 # a number here failed later with "not iterable"
                 raise ModelError(f"must be a list or tuple, got {value!r}", name)
-        object.__setattr__(self, "_by_number", {c.number: c for c in self.cylinders
-                                                if isinstance(c, Cylinder)})
+        object.__setattr__(
+            self, "_by_number", {c.number: c for c in self.cylinders if isinstance(c, Cylinder)}
+        )
         if not self.crankshafts:
             # one way to say "one crankshaft": the reference, whether named or not
             object.__setattr__(self, "crankshafts", (REFERENCE_CRANKSHAFT,))
@@ -146,8 +154,10 @@ class Engine:
         names = [f.name for f in fields(self) if f.init]
         unknown = sorted(set(changes) - set(names))
         if unknown:
-            raise ModelError(f"Engine.replace: {', '.join(map(repr, unknown))} is not a field of "
-                             f"Engine; choose from {', '.join(names)}")
+            raise ModelError(
+                f"Engine.replace: {', '.join(map(repr, unknown))} is not a field of "
+                f"Engine; choose from {', '.join(names)}"
+            )
         return dataclasses.replace(self, **changes)
 
     def cylinder(self, number):
@@ -158,7 +168,7 @@ class Engine:
         return any(c.master == cylinder.number for c in self.cylinders)
 
     def rod_type(self, cylinder):
-        """"plain", "master", "link" or "opposed" (two plain rods, one from each end)."""
+        """ "plain", "master", "link" or "opposed" (two plain rods, one from each end)."""
         if cylinder.is_link:
             return "link"
         if cylinder.is_opposed:
@@ -231,8 +241,11 @@ class Engine:
     @property
     def power_at_speed_w(self) -> float | None:
         """``power_w`` when it is given at the speed the engine runs at, else None, W."""
-        if self.power_w is None or self.power_speed_rad_s is None or \
-                not math.isclose(self.power_speed_rad_s, self.speed_rad_s, rel_tol=1e-12):
+        if (
+            self.power_w is None
+            or self.power_speed_rad_s is None
+            or not math.isclose(self.power_speed_rad_s, self.speed_rad_s, rel_tol=1e-12)
+        ):
             return None
         return self.power_w
 

@@ -49,8 +49,9 @@ class Parts:
 
     def link_correction_kgm2(self, link_length_m):
         """c = j − m·h·(l − h) of a link rod of length ``link_length_m``."""
-        return (self.link_inertia_kgm2
-                - self.link_kg * self.link_cg_m * (link_length_m - self.link_cg_m))
+        return self.link_inertia_kgm2 - self.link_kg * self.link_cg_m * (
+            link_length_m - self.link_cg_m
+        )
 
 
 @dataclass(frozen=True)

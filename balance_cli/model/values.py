@@ -37,5 +37,8 @@ def check_quantity(value, dimension, parameter, sign="positive", cylinder=None):
 def check_angle(value, parameter, cylinder=None):
     if not is_real(value) or not math.isfinite(value) or abs(value) > 2 * math.pi:
         where = f"cylinder {cylinder}: {parameter} " if cylinder is not None else ""
-        raise ModelError(f"{where}must be a finite angle between -2π and 2π rad, got {value!r}",
-                         None if where else parameter, cylinder)
+        raise ModelError(
+            f"{where}must be a finite angle between -2π and 2π rad, got {value!r}",
+            None if where else parameter,
+            cylinder,
+        )

@@ -17,8 +17,19 @@ One module per picture: ``loci``, ``spectra``, ``stars`` (its labels placed by `
 ``firings``, ``torques``, ``torsion`` and ``sweep``; ``figure`` holds what they share.
 """
 
-from .figure import (CELL_IN, DPI, FORMATS, KINDS, MIN_WIDTH_IN, QUANTITIES, colours, format_of,
-                     grid_size, save, short)
+from .figure import (
+    CELL_IN,
+    DPI,
+    FORMATS,
+    KINDS,
+    MIN_WIDTH_IN,
+    QUANTITIES,
+    colours,
+    format_of,
+    grid_size,
+    save,
+    short,
+)
 from .firings import firing
 from .labels import STAR_LABEL_GAP_PT, STAR_LABEL_MIN_PT, STAR_LABEL_PT, place_labels
 from .loci import locus, locus_points
@@ -28,9 +39,38 @@ from .sweep import axis_values, sweep_figure
 from .torques import TORQUE_STYLES, TORQUE_UNITS, torque, torque_data
 from .torsion import campbell, mode_shapes, torque_speed
 
-__all__ = ["KINDS", "FORMATS", "QUANTITIES", "locus", "spectrum", "star", "firing", "torque", "save",
-           "format_of", "grid_size", "locus_points", "spectrum_data", "star_chains", "torque_data",
-           "colours", "short", "place_labels", "campbell", "mode_shapes", "torque_speed",
-           "sweep_figure", "axis_values", "CELL_IN", "MIN_WIDTH_IN", "DPI", "SPECTRUM_UNITS",
-           "TORQUE_UNITS", "TORQUE_STYLES", "STAR_LABEL_PT", "STAR_LABEL_GAP_PT",
-           "STAR_LABEL_MIN_PT", "STAR_TITLE_CHARS"]
+__all__ = [
+    "KINDS",
+    "FORMATS",
+    "QUANTITIES",
+    "locus",
+    "spectrum",
+    "star",
+    "firing",
+    "torque",
+    "save",
+    "format_of",
+    "grid_size",
+    "locus_points",
+    "spectrum_data",
+    "star_chains",
+    "torque_data",
+    "colours",
+    "short",
+    "place_labels",
+    "campbell",
+    "mode_shapes",
+    "torque_speed",
+    "sweep_figure",
+    "axis_values",
+    "CELL_IN",
+    "MIN_WIDTH_IN",
+    "DPI",
+    "SPECTRUM_UNITS",
+    "TORQUE_UNITS",
+    "TORQUE_STYLES",
+    "STAR_LABEL_PT",
+    "STAR_LABEL_GAP_PT",
+    "STAR_LABEL_MIN_PT",
+    "STAR_TITLE_CHARS",
+]

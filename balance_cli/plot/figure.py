@@ -20,9 +20,24 @@ if TYPE_CHECKING:
 
     from ..analysis.results import EngineResult
 
-__all__ = ["KINDS", "FORMATS", "QUANTITIES", "CELL_IN", "MIN_WIDTH_IN", "DPI", "new_figure",
-           "engine_results", "grid_size", "grid_figure", "cells", "short", "colours", "quantity",
-           "format_of", "save"]
+__all__ = [
+    "KINDS",
+    "FORMATS",
+    "QUANTITIES",
+    "CELL_IN",
+    "MIN_WIDTH_IN",
+    "DPI",
+    "new_figure",
+    "engine_results",
+    "grid_size",
+    "grid_figure",
+    "cells",
+    "short",
+    "colours",
+    "quantity",
+    "format_of",
+    "save",
+]
 
 KINDS = ("locus", "spectrum", "star", "firing", "torque")
 #: file formats :func:`save` writes (those of matplotlib's that need neither LaTeX nor a viewer
@@ -49,8 +64,11 @@ def engine_results(results, order=None) -> "list[EngineResult]":
     if order is not None:
         lowest = min(r.max_order for r in chosen)
         if isinstance(order, bool) or not isinstance(order, int) or not 1 <= order <= lowest:
-            raise PlotError(f"{order!r} is not among the orders analysed (1 to {lowest}: raise "
-                            "max_order or choose a lower order)", "order")
+            raise PlotError(
+                f"{order!r} is not among the orders analysed (1 to {lowest}: raise "
+                "max_order or choose a lower order)",
+                "order",
+            )
     return chosen
 
 
@@ -104,8 +122,11 @@ def format_of(path: "str | os.PathLike[str]") -> str:
     suffix = Path(path).suffix.lower().lstrip(".")
     if suffix not in FORMATS:
         shown = f"'.{suffix}'" if suffix else "no extension"
-        raise PlotError(f"{str(path)!r} has {shown}; end the file name in one of "
-                        f"{', '.join('.' + f for f in FORMATS)}", "path")
+        raise PlotError(
+            f"{str(path)!r} has {shown}; end the file name in one of "
+            f"{', '.join('.' + f for f in FORMATS)}",
+            "path",
+        )
     return suffix
 
 

@@ -16,6 +16,7 @@ if TYPE_CHECKING:
 
 __all__ = ["firing"]
 
+
 def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "Figure":
     """Firing angles on a dial of one working cycle (720° or 360°, clockwise from the top),
     cylinder numbers outside, intervals in red (one, in the centre, when they are all equal)."""
@@ -30,12 +31,15 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
     for ax, r in zip(axes, chosen):
         cycle = r.engine.cycle_deg
         fire = r.firing
-        where = lambda angle, radius: (radius * math.sin(2 * math.pi * angle / cycle),  # noqa: E731
-                                       radius * math.cos(2 * math.pi * angle / cycle))
+        where = lambda angle, radius: (
+            radius * math.sin(2 * math.pi * angle / cycle),  # noqa: E731
+            radius * math.cos(2 * math.pi * angle / cycle),
+        )
         ax.plot(np.sin(ring), np.cos(ring), color="0.7", linewidth=0.6)
         for tick in np.arange(0, cycle, cycle / 4):
-            ax.text(*where(tick, 1.32), f"{tick:g}°", ha="center", va="center", fontsize=6,
-                    color="0.5")
+            ax.text(
+                *where(tick, 1.32), f"{tick:g}°", ha="center", va="center", fontsize=6, color="0.5"
+            )
         # every spoke in one line broken at NaN: one artist, not one per cylinder
         xs, ys = [], []
         for angle, number in zip(fire.angles_deg, fire.order):
@@ -46,19 +50,36 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
         ax.plot(xs, ys, color="C0", linewidth=1.2)
         if fire.uniform:
             # one figure says it: a label in every gap of an even engine only repeats it
-            ax.text(0.0, 0.0, f"every\n{fire.intervals_deg[0]:.4g}°", ha="center", va="center",
-                    fontsize=6, color="C3")
+            ax.text(
+                0.0,
+                0.0,
+                f"every\n{fire.intervals_deg[0]:.4g}°",
+                ha="center",
+                va="center",
+                fontsize=6,
+                color="C3",
+            )
         else:
             for angle, gap in zip(fire.angles_deg, fire.intervals_deg):
-                ax.text(*where(angle + gap / 2, 0.65), f"{gap:.4g}°", ha="center", va="center",
-                        fontsize=6, color="C3")
+                ax.text(
+                    *where(angle + gap / 2, 0.65),
+                    f"{gap:.4g}°",
+                    ha="center",
+                    va="center",
+                    fontsize=6,
+                    color="C3",
+                )
         ax.set_xlim(-1.45, 1.45)
         ax.set_ylim(-1.45, 1.45)
         ax.set_aspect("equal")
         uniform = "uniform" if fire.uniform else f"±{fire.max_deviation_deg:.2f}° from uniform"
-        ax.set_title(f"{short(r.engine.name)}\n{r.engine.cycle}-stroke, {uniform}", fontsize=9, y=1.0)
-    fig.suptitle("Firing angles over one working cycle (crank degrees from the first firing)",
-                 fontsize=10)
-    fig.subplots_adjust(left=0.02, right=0.98, bottom=0.02, top=1 - 0.8 / (CELL_IN * rows),
-                        wspace=0.1, hspace=0.25)
+        ax.set_title(
+            f"{short(r.engine.name)}\n{r.engine.cycle}-stroke, {uniform}", fontsize=9, y=1.0
+        )
+    fig.suptitle(
+        "Firing angles over one working cycle (crank degrees from the first firing)", fontsize=10
+    )
+    fig.subplots_adjust(
+        left=0.02, right=0.98, bottom=0.02, top=1 - 0.8 / (CELL_IN * rows), wspace=0.1, hspace=0.25
+    )
     return fig

@@ -7,8 +7,13 @@ import math
 
 import numpy as np
 
-__all__ = ["STAR_LABEL_PT", "STAR_LABEL_GAP_PT", "STAR_LABEL_MIN_PT", "place_labels",
-           "label_arrows"]
+__all__ = [
+    "STAR_LABEL_PT",
+    "STAR_LABEL_GAP_PT",
+    "STAR_LABEL_MIN_PT",
+    "place_labels",
+    "label_arrows",
+]
 
 #: font size of the star's cylinder labels (points), and their gap from their arrow (points)
 STAR_LABEL_PT = 6.5
@@ -38,8 +43,10 @@ def _crosses(box, p, q):
     """Whether the segment ``p``–``q`` passes through ``box`` (x0, y0, x1, y1)."""
     # clip the segment's parameter range to the box on each axis (Liang–Barsky)
     low, high = 0.0, 1.0
-    for start, step, lower, upper in ((p[0], q[0] - p[0], box[0], box[2]),
-                                      (p[1], q[1] - p[1], box[1], box[3])):
+    for start, step, lower, upper in (
+        (p[0], q[0] - p[0], box[0], box[2]),
+        (p[1], q[1] - p[1], box[1], box[3]),
+    ):
         if step == 0:
             if not lower < start < upper:
                 return False
@@ -64,8 +71,8 @@ def place_labels(segments, sizes, gap=STAR_LABEL_GAP_PT, shortest=STAR_LABEL_MIN
     ones whose number matters least."""
     points = np.array([p for segment in segments for p in segment], float).reshape(-1, 2)
     centre = points.mean(axis=0) if len(points) else np.zeros(2)
-    placed: "list[tuple[float, float, float, float]]" = []
-    found: "list[tuple[float, float] | None]" = [None] * len(segments)
+    placed: list[tuple[float, float, float, float]] = []
+    found: list[tuple[float, float] | None] = [None] * len(segments)
     lengths = [math.dist(*segment) for segment in segments]
     for i in sorted(range(len(segments)), key=lambda i: -lengths[i]):
         if lengths[i] < shortest:
@@ -118,5 +125,13 @@ def label_arrows(ax, arrows):
         if centre is None:
             continue
         x, y = to_data.transform(np.array(centre) / to_pt)
-        ax.text(x, y, label, fontsize=STAR_LABEL_PT, color=colour, ha="center", va="center",
-                gid="cylinder label")
+        ax.text(
+            x,
+            y,
+            label,
+            fontsize=STAR_LABEL_PT,
+            color=colour,
+            ha="center",
+            va="center",
+            gid="cylinder label",
+        )

@@ -17,6 +17,7 @@ if TYPE_CHECKING:
 
 __all__ = ["locus", "locus_points"]
 
+
 def locus_points(result, order=None, of="force", counterweight=True):
     """What :func:`locus` draws of one engine, as x = across, y = along the reference axis:
     ``of="force"`` the resultant force per cylinder (× m_rec·r·ω² per cylinder, Tanaka's
@@ -46,8 +47,12 @@ def _legend_rows(names):
     return columns, math.ceil(len(names) / columns)
 
 
-def locus(results: "Iterable[EngineResult]", order: int | None = None, ax: "Axes | None" = None,
-          of: str = "force") -> "Figure":
+def locus(
+    results: "Iterable[EngineResult]",
+    order: int | None = None,
+    ax: "Axes | None" = None,
+    of: str = "force",
+) -> "Figure":
     """Locus over one revolution of the resultant shaking force per cylinder (``of="force"``,
     Tanaka's Fig. 9) or of the free moment in N·m (``of="moment"``), every engine on one set
     of equal-scaled axes; ``order`` draws one order only. See :func:`locus_points`.
@@ -58,16 +63,19 @@ def locus(results: "Iterable[EngineResult]", order: int | None = None, ax: "Axes
     chosen = engine_results(results, order)
     points = [locus_points(r, order, of) for r in chosen]
     # an engine with nothing left is a dot at the origin, hidden under the others
-    names = [short(r.engine.name) + ("" if x.any() or y.any() else f" (no free {of})")
-             for r, (x, y) in zip(chosen, points)]
+    names = [
+        short(r.engine.name) + ("" if x.any() or y.any() else f" (no free {of})")
+        for r, (x, y) in zip(chosen, points)
+    ]
     columns, rows = _legend_rows(names)
     own = ax is None
-    legend_in = 0.25 + 0.19 * rows      # a legend row of 8-point text, and the frame's padding
+    legend_in = 0.25 + 0.19 * rows  # a legend row of 8-point text, and the frame's padding
     if ax is None:
         height = 8.0 + legend_in
         # inches: title above, tick and axis labels then the legend below
-        ax = new_figure((8, height)).add_axes((0.11, (legend_in + 0.75) / height, 0.84,
-                                                1 - (legend_in + 0.75 + 0.85) / height))
+        ax = new_figure((8, height)).add_axes(
+            (0.11, (legend_in + 0.75) / height, 0.84, 1 - (legend_in + 0.75 + 0.85) / height)
+        )
     fig = cast("Figure", ax.figure)
     for (x, y), name, colour in zip(points, names, colours(len(chosen))):
         ax.plot(np.append(x, x[0]), np.append(y, y[0]), label=name, linewidth=1.6, color=colour)
@@ -90,8 +98,14 @@ def locus(results: "Iterable[EngineResult]", order: int | None = None, ax: "Axes
     # the counterweight turns at crank speed: it changes the first order only
     ax.set_title(title + (f",\n{counterweight}" if order in (None, 1) else ""))
     if own:
-        fig.legend(*ax.get_legend_handles_labels(), loc="upper center", ncol=columns, fontsize=8,
-                   frameon=False, bbox_to_anchor=(0.5, legend_in / (fig.bbox.height / fig.dpi)))
+        fig.legend(
+            *ax.get_legend_handles_labels(),
+            loc="upper center",
+            ncol=columns,
+            fontsize=8,
+            frameon=False,
+            bbox_to_anchor=(0.5, legend_in / (fig.bbox.height / fig.dpi)),
+        )
     else:
         ax.legend(fontsize=8, loc="upper right")
     ax.grid(True, linewidth=0.3)

@@ -32,17 +32,32 @@ def spectrum_data(results, units="per-cylinder"):
     if units not in SPECTRUM_UNITS:
         raise PlotError(f"must be one of {', '.join(SPECTRUM_UNITS)}, got {units!r}", "units")
     chosen = engine_results(results)
-    scale = Scale.of(absolute=units != "per-cylinder", units="N" if units == "per-cylinder" else units)
+    scale = Scale.of(
+        absolute=units != "per-cylinder", units="N" if units == "per-cylinder" else units
+    )
     engines = []
     for r in chosen:
         unit = r.per_cylinder_unit_n
-        engines.append({
-            "name": short(r.engine.name),
-            "force": np.array([[scale.force(abs(o.force_forward), unit),
-                                scale.force(abs(o.force_backward), unit)] for o in r.shaking.orders]),
-            "moment": np.array([[scale.moment(abs(o.moment_forward)),
-                                 scale.moment(abs(o.moment_backward))] for o in r.shaking.orders]),
-        })
+        engines.append(
+            {
+                "name": short(r.engine.name),
+                "force": np.array(
+                    [
+                        [
+                            scale.force(abs(o.force_forward), unit),
+                            scale.force(abs(o.force_backward), unit),
+                        ]
+                        for o in r.shaking.orders
+                    ]
+                ),
+                "moment": np.array(
+                    [
+                        [scale.moment(abs(o.moment_forward)), scale.moment(abs(o.moment_backward))]
+                        for o in r.shaking.orders
+                    ]
+                ),
+            }
+        )
     # the floors: SPECTRUM_FLOOR of the largest engine's m_rec·r·ω²·n (times one metre)
     largest = max(r.per_cylinder_unit_n for r in chosen)
     return {
@@ -52,13 +67,15 @@ def spectrum_data(results, units="per-cylinder"):
         "moment_floor": SPECTRUM_FLOOR * scale.moment(largest),
         "force_label": f"force ({scale.force_unit_text})",
         "moment_label": f"free moment ({scale.moment_label})",
-        "has_moments": any((e["moment"] > SPECTRUM_FLOOR * scale.moment(largest)).any()
-                           for e in engines),
+        "has_moments": any(
+            (e["moment"] > SPECTRUM_FLOOR * scale.moment(largest)).any() for e in engines
+        ),
     }
 
 
-def spectrum(results: "Iterable[EngineResult]", units: str = "per-cylinder",
-             fig: "Figure | None" = None) -> "Figure":
+def spectrum(
+    results: "Iterable[EngineResult]", units: str = "per-cylinder", fig: "Figure | None" = None
+) -> "Figure":
     """Forward (solid) and backward (hatched) amplitude of every order: forces, and free
     moments when any engine has one above the floor; grouped bars on a log axis."""
     from matplotlib.patches import Patch
@@ -88,11 +105,20 @@ def spectrum(results: "Iterable[EngineResult]", units: str = "per-cylinder",
             for part, shift, style in ((0, 0.0, {}), (1, width, {"alpha": 0.45, "hatch": "//"})):
                 heights = values[: len(orders), part]
                 shown = heights > floor
-                _bars(ax, orders[: len(heights)][shown] + offset + shift, heights[shown], floor,
-                      width, facecolor=colour, **style)
+                _bars(
+                    ax,
+                    orders[: len(heights)][shown] + offset + shift,
+                    heights[shown],
+                    floor,
+                    width,
+                    facecolor=colour,
+                    **style,
+                )
         handles.append(Patch(color=colour, label=engine["name"]))
-    handles += [Patch(facecolor="white", edgecolor="black", label="forward (turns with the crank)"),
-                Patch(facecolor="white", edgecolor="black", hatch="//", label="backward (against it)")]
+    handles += [
+        Patch(facecolor="white", edgecolor="black", label="forward (turns with the crank)"),
+        Patch(facecolor="white", edgecolor="black", hatch="//", label="backward (against it)"),
+    ]
     for ax, (quantity, floor, label) in zip(axes, quantities):
         ax.set_yscale("log")
         top = max((e[quantity].max() for e in data["engines"]), default=floor)
@@ -104,17 +130,30 @@ def spectrum(results: "Iterable[EngineResult]", units: str = "per-cylinder",
         ax.set_xticks(orders)
         ax.grid(True, axis="y", linewidth=0.3)
     axes[-1].set_xlabel("order")
-    title = (f"Forward and backward parts by order (parts below {SPECTRUM_FLOOR:g} of "
-             "m_rec·r·ω²·n not drawn)")
+    title = (
+        f"Forward and backward parts by order (parts below {SPECTRUM_FLOOR:g} of "
+        "m_rec·r·ω²·n not drawn)"
+    )
     if panels == 1:
         title += "\nno engine has a free moment above that floor"
     axes[0].set_title(title, y=1.0)
     height = fig.get_size_inches()[1]
-    fig.legend(handles=handles, loc="upper center", ncol=columns, fontsize=8, frameon=False,
-               bbox_to_anchor=(0.5, legend_in / height))
+    fig.legend(
+        handles=handles,
+        loc="upper center",
+        ncol=columns,
+        fontsize=8,
+        frameon=False,
+        bbox_to_anchor=(0.5, legend_in / height),
+    )
     # inches: the title above; tick labels and "order" below, then the legend
-    fig.subplots_adjust(left=0.07, right=0.98, top=1 - (0.56 if panels == 2 else 0.72) / height,
-                        bottom=(legend_in + 0.63) / height, hspace=0.08)
+    fig.subplots_adjust(
+        left=0.07,
+        right=0.98,
+        top=1 - (0.56 if panels == 2 else 0.72) / height,
+        bottom=(legend_in + 0.63) / height,
+        hspace=0.08,
+    )
     return fig
 
 
@@ -125,5 +164,7 @@ def _bars(ax, left, top, bottom, width, **style):
 
     if len(left) == 0:
         return
-    corners = [[(x, bottom), (x + width, bottom), (x + width, y), (x, y)] for x, y in zip(left, top)]
+    corners = [
+        [(x, bottom), (x + width, bottom), (x + width, y), (x, y)] for x, y in zip(left, top)
+    ]
     ax.add_collection(PolyCollection(corners, linewidth=0, **style), autolim=False)

@@ -9,8 +9,13 @@ from ..units import shown_unit, shown_value
 __all__ = ["sweep_figure", "axis_values"]
 
 #: kinds of quantity drawn on one axes each, in this order, and their axis titles
-_GROUPS = (("force", "Force"), ("moment", "Free moment"), ("torque", "Torque"),
-           ("steadiness", "Steadiness"), ("pru", "PRU (N·m/kW)"))
+_GROUPS = (
+    ("force", "Force"),
+    ("moment", "Free moment"),
+    ("torque", "Torque"),
+    ("steadiness", "Steadiness"),
+    ("pru", "PRU (N·m/kW)"),
+)
 _WRITTEN = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S.*?)\s*$", re.ASCII)
 
 
@@ -43,11 +48,12 @@ def sweep_figure(result, units="N", fig=None):
     """Each quantity against the parameter: one axes per kind (forces, free moments, torques,
     steadiness) sharing the parameter axis, one line per quantity. A matplotlib Figure (drawn
     into ``fig`` when given, else a new pyplot figure)."""
-    groups = [(kind, title, [q for q in result.quantities if q.kind == kind])
-              for kind, title in _GROUPS]
+    groups = [
+        (kind, title, [q for q in result.quantities if q.kind == kind]) for kind, title in _GROUPS
+    ]
     groups = [g for g in groups if g[2]]
     if fig is None:
-        import matplotlib.pyplot as plt   # only when the caller gives no figure of their own
+        import matplotlib.pyplot as plt  # only when the caller gives no figure of their own
 
         fig = plt.figure(figsize=(8.0, 1.0 + 2.8 * len(groups)), dpi=100)
     x, xlabel = axis_values(result)

@@ -46,11 +46,16 @@ def torque_data(result: "TorqueResult", units: str = "N") -> dict:
 
     total = result.total
     return {
-        "name": short(result.engine.name), "cycle": result.engine.cycle,
-        "speed_rpm": rad_s_to_rpm(result.engine.speed_rad_s), "period_deg": result.period_deg,
+        "name": short(result.engine.name),
+        "cycle": result.engine.cycle,
+        "speed_rpm": rad_s_to_rpm(result.engine.speed_rad_s),
+        "period_deg": result.period_deg,
         "theta_deg": np.append(total.theta_deg, result.period_deg),
-        "inertia": closed(result.inertia), "gas": closed(result.gas), "total": closed(total),
-        "mean": scale.moment(total.mean), "range": scale.moment(total.range),
+        "inertia": closed(result.inertia),
+        "gas": closed(result.gas),
+        "total": closed(total),
+        "mean": scale.moment(total.mean),
+        "range": scale.moment(total.range),
         "orders": np.array([k for k, _, _ in total.orders]),
         "amplitudes": np.array([scale.moment(math.hypot(c, s)) for _, c, s in total.orders]),
         "unit": scale.moment_label,
@@ -83,8 +88,11 @@ def _span(low, high, bins, floor=None):
     limits = (floor if floor is not None else low - margin, high + margin)
     ticks = MaxNLocator(nbins=bins, steps=[1, 2, 2.5, 5, 10]).tick_values(*limits)
     slack = 1e-9 * (limits[1] - limits[0])
-    return limits, [0.0 if abs(t) <= slack else float(t) for t in ticks
-                    if limits[0] - slack <= t <= limits[1] + slack]
+    return limits, [
+        0.0 if abs(t) <= slack else float(t)
+        for t in ticks
+        if limits[0] - slack <= t <= limits[1] + slack
+    ]
 
 
 class _Labels(Artist):
@@ -96,10 +104,10 @@ class _Labels(Artist):
     def __init__(self, fig, fontsize=7):
         super().__init__()
         self.set_transform(fig.transSubfigure)
-        self.set_zorder(3)      # as Text: above lines and frames
+        self.set_zorder(3)  # as Text: above lines and frames
         self.fontsize = fontsize
         self.colour = matplotlib.rcParams["text.color"]
-        self.items = []       # (x, y, text, ha, va, rotation)
+        self.items = []  # (x, y, text, ha, va, rotation)
 
     def add(self, x, y, text, ha="center", va="center", rotation=0):
         self.items.append((x, y, text, ha, va, rotation))
@@ -121,7 +129,7 @@ class _Labels(Artist):
                 metrics[text] = renderer.get_text_width_height_descent(text, prop, ismath=False)
             return metrics[text]
 
-        _, line_h, line_d = size("lp")     # a line's height and descent, as Text takes them
+        _, line_h, line_d = size("lp")  # a line's height and descent, as Text takes them
         _, canvas_h = renderer.get_canvas_width_height()
         gc = renderer.new_gc()
         gc.set_foreground(self.colour)
@@ -165,8 +173,9 @@ class _Panels:
     def label(self, x_in, y_in, text, **alignment):
         self.labels.add(*self.at(x_in, y_in), text, **alignment)
 
-    def panel(self, box_in, xlim, ylim, xticks, xlabels, yticks, ylabels, xlabel, ylabel,
-              xminor=()):
+    def panel(
+        self, box_in, xlim, ylim, xticks, xlabels, yticks, ylabels, xlabel, ylabel, xminor=()
+    ):
         """A panel (``box_in``: left, bottom, width, height, inches) showing ``xlim`` × ``ylim``,
         with grid lines at the ticks, their labels (none where a label is empty) and axis
         labels, and short tick marks below at ``xminor``; returns the transform from its data
@@ -175,8 +184,9 @@ class _Panels:
 
         left, bottom, width, height = box_in
         (x0, y0), (x1, y1) = self.at(left, bottom), self.at(left + width, bottom + height)
-        to_panel = BboxTransform(Bbox([[xlim[0], ylim[0]], [xlim[1], ylim[1]]]),
-                                 Bbox([[x0, y0], [x1, y1]]))
+        to_panel = BboxTransform(
+            Bbox([[xlim[0], ylim[0]], [xlim[1], ylim[1]]]), Bbox([[x0, y0], [x1, y1]])
+        )
         for x, label in zip(xticks, xlabels):
             fx = x0 + (x1 - x0) * (x - xlim[0]) / (xlim[1] - xlim[0])
             self.grid.append([(fx, y0), (fx, y1)])
@@ -189,8 +199,9 @@ class _Panels:
                 self.label(left - 0.04, fy * self.size[1], label, ha="right", va="center")
         self.frames.append([(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)])
         # ticks in the frame's path: inward from the bottom edge, long at labels
-        for x, length in [(x, 0.06) for x, label in zip(xticks, xlabels) if label] \
-                + [(x, 0.03) for x in xminor]:
+        for x, length in [(x, 0.06) for x, label in zip(xticks, xlabels) if label] + [
+            (x, 0.03) for x in xminor
+        ]:
             fx = x0 + (x1 - x0) * (x - xlim[0]) / (xlim[1] - xlim[0])
             self.frames.append([(fx, y0), (fx, y0 + length / self.size[1])])
         self.label(left + width / 2, bottom - 0.19, xlabel, ha="center", va="top")
@@ -202,8 +213,10 @@ class _Panels:
         longer to write)."""
         from matplotlib.patches import PathPatch
 
-        for lines, style in ((self.grid, {"edgecolor": "0.85", "linewidth": 0.5, "zorder": 0.5}),
-                             (self.frames, {"edgecolor": "0.3", "linewidth": 0.6, "zorder": 2.5})):
+        for lines, style in (
+            (self.grid, {"edgecolor": "0.85", "linewidth": 0.5, "zorder": 0.5}),
+            (self.frames, {"edgecolor": "0.3", "linewidth": 0.6, "zorder": 2.5}),
+        ):
             self.fig.add_artist(PathPatch(_compound(lines), fill=False, **style))
         self.fig.add_artist(self.labels)
 
@@ -215,11 +228,17 @@ def _compound(polylines, closed=False):
     vertices, codes = [], []
     for points in polylines:
         vertices += list(points) + ([points[0]] if closed else [])
-        codes += [Shape.MOVETO] + [Shape.LINETO] * (len(points) - 1) + ([Shape.CLOSEPOLY] if closed else [])
+        codes += (
+            [Shape.MOVETO]
+            + [Shape.LINETO] * (len(points) - 1)
+            + ([Shape.CLOSEPOLY] if closed else [])
+        )
     return Shape(vertices, codes)
 
 
-def torque(results: "Iterable[TorqueResult]", units: str = "N", fig: "Figure | None" = None) -> "Figure":
+def torque(
+    results: "Iterable[TorqueResult]", units: str = "N", fig: "Figure | None" = None
+) -> "Figure":
     """Torques of :func:`balance_cli.analysis.torque.torque`, one small picture per engine: above, the
     inertia, gas (when there is one) and total torque over one period (360°, or 720° for a
     four-stroke) against the crank angle of throw 1, and the mean total torque (dashed); below,
@@ -255,52 +274,110 @@ def torque(results: "Iterable[TorqueResult]", units: str = "N", fig: "Figure | N
         row, column = divmod(index, columns)
         x0, top = column * cell_w, height_in - _HEADER_IN - row * cell_h
         # without gas the total is the inertia torque, and hides it
-        panels.text(x0 + cell_w / 2, top - 0.03, f"{data['name']}\n{data['cycle']}-stroke, "
-                    f"{data['speed_rpm']:g} rpm{'' if data['gas'] is not None else ', no gas'}: "
-                    f"mean {data['mean']:.4g} {unit}, ΔC {data['range']:.4g} {unit}", fontsize=8,
-                    ha="center", va="top")
+        panels.text(
+            x0 + cell_w / 2,
+            top - 0.03,
+            f"{data['name']}\n{data['cycle']}-stroke, "
+            f"{data['speed_rpm']:g} rpm{'' if data['gas'] is not None else ', no gas'}: "
+            f"mean {data['mean']:.4g} {unit}, ΔC {data['range']:.4g} {unit}",
+            fontsize=8,
+            ha="center",
+            va="top",
+        )
         period = data["period_deg"]
         names = [n for n in ("inertia", "gas", "total") if data[n] is not None]
-        ylim, yticks = _span(min(data[n].min() for n in names), max(data[n].max() for n in names), 3)
-        xticks = np.arange(5) * period / 4        # labelled at 0, half and the whole period
-        curves = panels.panel((x0 + left, top - title - curve_h, cell_w - left - right, curve_h),
-                              (0.0, period), ylim, xticks,
-                              [f"{x:g}°" if i % 2 == 0 else "" for i, x in enumerate(xticks)], yticks,
-                              [_tick_text(y) for y in yticks], "crank angle of throw 1",
-                              f"torque ({unit})")
+        ylim, yticks = _span(
+            min(data[n].min() for n in names), max(data[n].max() for n in names), 3
+        )
+        xticks = np.arange(5) * period / 4  # labelled at 0, half and the whole period
+        curves = panels.panel(
+            (x0 + left, top - title - curve_h, cell_w - left - right, curve_h),
+            (0.0, period),
+            ylim,
+            xticks,
+            [f"{x:g}°" if i % 2 == 0 else "" for i, x in enumerate(xticks)],
+            yticks,
+            [_tick_text(y) for y in yticks],
+            "crank angle of throw 1",
+            f"torque ({unit})",
+        )
         for name in names:
-            fig.add_artist(Line2D(data["theta_deg"], data[name], transform=curves, label=name,
-                                  **TORQUE_STYLES[name]))
-        fig.add_artist(Line2D([0.0, period], [data["mean"]] * 2, transform=curves,
-                              label="mean total", **TORQUE_STYLES["mean total"]))
+            fig.add_artist(
+                Line2D(
+                    data["theta_deg"],
+                    data[name],
+                    transform=curves,
+                    label=name,
+                    **TORQUE_STYLES[name],
+                )
+            )
+        fig.add_artist(
+            Line2D(
+                [0.0, period],
+                [data["mean"]] * 2,
+                transform=curves,
+                label="mean total",
+                **TORQUE_STYLES["mean total"],
+            )
+        )
         orders, heights = data["orders"], data["amplitudes"]
-        step, highest = orders[0], orders[-1]      # step: ½ for a four-stroke, 1 for a two-stroke
+        step, highest = orders[0], orders[-1]  # step: ½ for a four-stroke, 1 for a two-stroke
         ylim, yticks = _span(0.0, float(heights.max()), 2, floor=0.0)
         if not heights.any():
             yticks = []
         # whole orders labelled, with a grid line, a round step apart (at most 10 labels);
         # the others, and a four-stroke's half orders, get a short tick only
-        every = next(n * 10 ** p for p in range(6) for n in (1, 2, 5) if highest / (n * 10 ** p) <= 10)
+        every = next(n * 10**p for p in range(6) for n in (1, 2, 5) if highest / (n * 10**p) <= 10)
         xticks = np.arange(every, highest + 0.5 * every, every)
         minor = [x for x in np.arange(step, highest + 0.5 * step, step) if x % every]
-        bars = panels.panel((x0 + left, top - cell_h + foot, cell_w - left - right, order_h),
-                            (0.0, highest + step), ylim, xticks, [f"{x:g}" for x in xticks], yticks,
-                            ["" if y == 0 else _tick_text(y) for y in yticks],   # bars stand on 0
-                            "order of the total torque", f"amplitude ({unit})", xminor=minor)
+        bars = panels.panel(
+            (x0 + left, top - cell_h + foot, cell_w - left - right, order_h),
+            (0.0, highest + step),
+            ylim,
+            xticks,
+            [f"{x:g}" for x in xticks],
+            yticks,
+            ["" if y == 0 else _tick_text(y) for y in yticks],  # bars stand on 0
+            "order of the total torque",
+            f"amplitude ({unit})",
+            xminor=minor,
+        )
         width = 0.7 * step
-        corners = [[(k - width / 2, 0.0), (k + width / 2, 0.0), (k + width / 2, h), (k - width / 2, h)]
-                   for k, h in zip(orders, heights) if h > 0]
+        corners = [
+            [(k - width / 2, 0.0), (k + width / 2, 0.0), (k + width / 2, h), (k - width / 2, h)]
+            for k, h in zip(orders, heights)
+            if h > 0
+        ]
         if corners:
-            fig.add_artist(PathPatch(_compound(corners, closed=True), facecolor="0.35", linewidth=0,
-                                     transform=bars, label="orders"))
+            fig.add_artist(
+                PathPatch(
+                    _compound(corners, closed=True),
+                    facecolor="0.35",
+                    linewidth=0,
+                    transform=bars,
+                    label="orders",
+                )
+            )
         else:
-            panels.label(x0 + left + (cell_w - left - right) / 2, top - cell_h + foot + order_h / 2,
-                         f"no order up to {highest:g}")
+            panels.label(
+                x0 + left + (cell_w - left - right) / 2,
+                top - cell_h + foot + order_h / 2,
+                f"no order up to {highest:g}",
+            )
     panels.finish()
     shown = [n for n in TORQUE_STYLES if n != "gas" or any(e["gas"] is not None for e in engines)]
-    fig.legend(handles=[Line2D([], [], label=n, **TORQUE_STYLES[n]) for n in shown],
-               loc="upper center", bbox_to_anchor=panels.at(width_in / 2, height_in - 0.36),
-               ncol=len(shown), fontsize=8, frameon=False)
-    fig.suptitle("Torque at constant speed over one cycle, and the amplitude of each order of "
-                 "the total torque", fontsize=10, y=1 - 0.08 / height_in)
+    fig.legend(
+        handles=[Line2D([], [], label=n, **TORQUE_STYLES[n]) for n in shown],
+        loc="upper center",
+        bbox_to_anchor=panels.at(width_in / 2, height_in - 0.36),
+        ncol=len(shown),
+        fontsize=8,
+        frameon=False,
+    )
+    fig.suptitle(
+        "Torque at constant speed over one cycle, and the amplitude of each order of "
+        "the total torque",
+        fontsize=10,
+        y=1 - 0.08 / height_in,
+    )
     return fig

@@ -7,6 +7,7 @@ from ..units import Scale
 
 __all__ = ["campbell", "mode_shapes", "torque_speed"]
 
+
 def _figure(fig, size):
     if fig is None:
         from matplotlib.figure import Figure
@@ -30,15 +31,30 @@ def campbell(result, fig=None):
     for m in result.modes:
         if m.frequency_hz <= top:
             ax.axhline(m.frequency_hz, color="C0", linewidth=1.0)
-            ax.annotate(f"mode {m.number}: {m.frequency_hz:.4g} Hz", (0, m.frequency_hz),
-                        fontsize=8, va="bottom")
+            ax.annotate(
+                f"mode {m.number}: {m.frequency_hz:.4g} Hz",
+                (0, m.frequency_hz),
+                fontsize=8,
+                va="bottom",
+            )
     for c in result.criticals:
         f = c.order * c.speed_rpm / 60.0
-        ax.plot(c.speed_rpm, f, "o", color="C3", markerfacecolor="C3" if c.major else "none",
-                markersize=5)
+        ax.plot(
+            c.speed_rpm,
+            f,
+            "o",
+            color="C3",
+            markerfacecolor="C3" if c.major else "none",
+            markersize=5,
+        )
     ax.axvspan(result.speeds_rpm.min(), result.speeds_rpm.max(), color="C2", alpha=0.07)
-    ax.set(xlim=(0, speeds[-1]), ylim=(0, top), xlabel="Engine speed (rpm)",
-           ylabel="Frequency (Hz)", title=f"{result.engine.name}: Campbell diagram")
+    ax.set(
+        xlim=(0, speeds[-1]),
+        ylim=(0, top),
+        xlabel="Engine speed (rpm)",
+        ylabel="Frequency (Hz)",
+        title=f"{result.engine.name}: Campbell diagram",
+    )
     return fig
 
 
@@ -64,14 +80,17 @@ def torque_speed(result, fig=None, scale=None):
     fig = _figure(fig, (8, 5))
     ax = fig.add_subplot()
     for s, name in enumerate(result.sections):
-        ax.plot(result.speeds_rpm, scale.moment(result.torque_nm[:, s]), label=name,
-                linewidth=1.0)
+        ax.plot(result.speeds_rpm, scale.moment(result.torque_nm[:, s]), label=name, linewidth=1.0)
     for c in result.criticals:
         if c.major:
             ax.axvline(c.speed_rpm, color="0.6", linestyle=":", linewidth=0.8)
-            ax.annotate(f"{c.order:g}/{c.mode}", (c.speed_rpm, ax.get_ylim()[1]), fontsize=7,
-                        va="top")
-    ax.set(xlabel="Engine speed (rpm)", ylabel=f"Vibratory torque ({scale.moment_label})",
-           title=f"{result.engine.name}: vibratory torque per section")
+            ax.annotate(
+                f"{c.order:g}/{c.mode}", (c.speed_rpm, ax.get_ylim()[1]), fontsize=7, va="top"
+            )
+    ax.set(
+        xlabel="Engine speed (rpm)",
+        ylabel=f"Vibratory torque ({scale.moment_label})",
+        title=f"{result.engine.name}: vibratory torque per section",
+    )
     ax.legend(fontsize=7, ncol=2)
     return fig

@@ -41,42 +41,77 @@ def compare_parts(comparison, scale):
     records = comparison.to_dict()["engines"]
     units = [r.per_cylinder_unit_n for r in comparison.results]
     entries = [(record["name"], record["orders"], unit_n) for record, unit_n in zip(records, units)]
-    firing = [[record["name"], str(record["cylinders"]), str(record["cycle"]), record["frame"],
-               "-".join(map(str, record["firing"]["order"])), intervals(record["firing"])]
-              for record in records]
+    firing = [
+        [
+            record["name"],
+            str(record["cylinders"]),
+            str(record["cycle"]),
+            record["frame"],
+            "-".join(map(str, record["firing"]["order"])),
+            intervals(record["firing"]),
+        ]
+        for record in records
+    ]
     # per cylinder beside per-cylinder figures (Tanaka's), in newtons beside absolute ones
     share = "percent_of_reference_absolute" if scale.absolute else "percent_of_reference"
     summary = []
     for record, unit_n in zip(records, units):
         force = lambda v, u=unit_n: scale.force(v, u)  # noqa: E731
-        summary.append([record["name"], figure(force(record["counterweighted_resultant_N"])),
-                        _share_text(record[share]),
-                        _main_text(record["main_force_order"], force,
-                                   record["counterweighted_resultant_N"]),
-                        figure(scale.moment(record["counterweighted_moment_Nm"])),
-                        _main_text(record["main_moment_order"], scale.moment,
-                                   record["counterweighted_moment_Nm"])])
-    notes = ["%: of the reference engine's largest force"
-             + (", in newtons." if scale.absolute else ", per cylinder (Tanaka's Part III)."),
-             "Largest: the resultant's largest magnitude over a revolution, all orders; main "
-             "order: the order with the largest ellipse, its max and direction (rotating: a "
-             "circle, turning with the crank (forward) or against it (backward)). A turning crank's ideal counterweight has taken the forward first order of "
-             "force and moment away (a rotary's crank does not turn), and where a crankshaft "
-             "turns against the first, its counterweights the backward first order too."]
+        summary.append(
+            [
+                record["name"],
+                figure(force(record["counterweighted_resultant_N"])),
+                _share_text(record[share]),
+                _main_text(
+                    record["main_force_order"], force, record["counterweighted_resultant_N"]
+                ),
+                figure(scale.moment(record["counterweighted_moment_Nm"])),
+                _main_text(
+                    record["main_moment_order"], scale.moment, record["counterweighted_moment_Nm"]
+                ),
+            ]
+        )
+    notes = [
+        "%: of the reference engine's largest force"
+        + (", in newtons." if scale.absolute else ", per cylinder (Tanaka's Part III)."),
+        "Largest: the resultant's largest magnitude over a revolution, all orders; main "
+        "order: the order with the largest ellipse, its max and direction (rotating: a "
+        "circle, turning with the crank (forward) or against it (backward)). A turning crank's ideal counterweight has taken the forward first order of "
+        "force and moment away (a rotary's crank does not turn), and where a crankshaft "
+        "turns against the first, its counterweights the backward first order too.",
+    ]
     if any(record[share] is None for record in records):
         notes.append("n/a: the reference engine has no resultant to compare with.")
     if any((record[share] or 0.0) > PERCENT_LIMIT for record in records):
-        notes.append(f"×: a multiple of the reference's resultant, where it is above "
-                     f"{PERCENT_LIMIT:.0f} %.")
+        notes.append(
+            f"×: a multiple of the reference's resultant, where it is above {PERCENT_LIMIT:.0f} %."
+        )
     fl, ml = scale.force_label, scale.moment_label
-    return order_parts(entries, scale, comparison.samples) + _pru_parts(records, scale) + [
-        ("Firing", ["Engine", "Cyl", "Cycle", "Frame", "Firing order", "Intervals (°)"], firing, ""),
-        ("Largest free force and moment (after an ideal crankshaft counterweight)",
-         ["Engine", f"Largest F ({fl})", f"% of {_shortened(comparison.reference.engine.name)}",
-          f"Main F order: max ({fl}), direction", f"Largest M ({ml})",
-          f"Main M order: max ({ml}), direction"],
-         summary, " ".join(notes)),
-    ]
+    return (
+        order_parts(entries, scale, comparison.samples)
+        + _pru_parts(records, scale)
+        + [
+            (
+                "Firing",
+                ["Engine", "Cyl", "Cycle", "Frame", "Firing order", "Intervals (°)"],
+                firing,
+                "",
+            ),
+            (
+                "Largest free force and moment (after an ideal crankshaft counterweight)",
+                [
+                    "Engine",
+                    f"Largest F ({fl})",
+                    f"% of {_shortened(comparison.reference.engine.name)}",
+                    f"Main F order: max ({fl}), direction",
+                    f"Largest M ({ml})",
+                    f"Main M order: max ({ml}), direction",
+                ],
+                summary,
+                " ".join(notes),
+            ),
+        ]
+    )
 
 
 def _pru_parts(records, scale):
@@ -87,8 +122,11 @@ def _pru_parts(records, scale):
     if not with_power:
         # a power given at another speed than analysed is worth a word; no power at all is not
         notes = sorted({r["pru_note"] for r in records if "given at" in (r["pru_note"] or "")})
-        return [("Power related unbalance", [], [], "Not computed: " + "; ".join(notes) + ".")] \
-            if notes else []
+        return (
+            [("Power related unbalance", [], [], "Not computed: " + "; ".join(notes) + ".")]
+            if notes
+            else []
+        )
     orders = [e["order"] for e in with_power[0]["pru"]["orders"]]
     headers = ["Engine", "Power (kW)"]
     for k in orders:
@@ -107,26 +145,39 @@ def _pru_parts(records, scale):
             row += [pru_text(entry, "vertical"), pru_text(entry, "horizontal")]
             if entry["order"] == 1:
                 balanced = pru["first_order_balanced"]
-                row += (["—", "—"] if balanced is None else
-                        [pru_text(balanced, "vertical"), pru_text(balanced, "horizontal")])
+                row += (
+                    ["—", "—"]
+                    if balanced is None
+                    else [pru_text(balanced, "vertical"), pru_text(balanced, "horizontal")]
+                )
         rows.append(row)
     classes = with_power[0]["pru"]["classes"]
     bounds = ", ".join(f"below {c['below_Nm_per_kW']:g} {c['class']}" for c in classes[:-1])
     bounds += f", above {classes[-2]['below_Nm_per_kW']:g} {classes[-1]['class']}"
     missing = [r["name"] for r in records if r["pru"] is None]
-    note = ("PRU = external moment / engine power (N·m/kW) at the speed analysed, and the need "
-            "for a moment compensator: " + bounds + ". MkV is the "
-            "pitching moment of order k, MkH the yawing one; M1 as the crank stands, and "
-            "'balanced' with counterweights for the rotating masses (balance factor 0)."
-            + (" —: " + "; ".join(sorted({r["pru_note"] for r in records if r["pru"] is None}))
-               + "." if missing else "")
-            + (" 'Balanced' is not given for a rotary (its crank does not turn) or an engine with "
-               "several crankshafts (each would need "
-               "its own counterweights)." if any(r["pru"] is not None and
-                                                 r["pru"]["first_order_balanced"] is None
-                                                 for r in records) else ""))
-    return [("Power related unbalance (N·m/kW, and the need for a compensator)", headers, rows,
-             note)]
+    note = (
+        "PRU = external moment / engine power (N·m/kW) at the speed analysed, and the need "
+        "for a moment compensator: " + bounds + ". MkV is the "
+        "pitching moment of order k, MkH the yawing one; M1 as the crank stands, and "
+        "'balanced' with counterweights for the rotating masses (balance factor 0)."
+        + (
+            " —: " + "; ".join(sorted({r["pru_note"] for r in records if r["pru"] is None})) + "."
+            if missing
+            else ""
+        )
+        + (
+            " 'Balanced' is not given for a rotary (its crank does not turn) or an engine with "
+            "several crankshafts (each would need "
+            "its own counterweights)."
+            if any(
+                r["pru"] is not None and r["pru"]["first_order_balanced"] is None for r in records
+            )
+            else ""
+        )
+    )
+    return [
+        ("Power related unbalance (N·m/kW, and the need for a compensator)", headers, rows, note)
+    ]
 
 
 def compare_tables(comparison, scale, fmt):

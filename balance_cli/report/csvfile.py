@@ -10,10 +10,22 @@ __all__ = ["compare_csv", "balance_csv", "torque_csv", "search_csv", "family_csv
 
 #: key suffix of an SI record -> unit written in the CSV
 _UNITS = (("_kgm", "kg·m"), ("_kg", "kg"), ("_deg", "deg"), ("_m", "m"))
-_ORDER_QUANTITIES = ("force_forward", "force_backward", "force_max", "force_min", "force_axis",
-                     "moment_forward", "moment_backward", "moment_max", "force_vertical",
-                     "force_horizontal", "moment_min", "moment_axis", "moment_vertical",
-                     "moment_horizontal")
+_ORDER_QUANTITIES = (
+    "force_forward",
+    "force_backward",
+    "force_max",
+    "force_min",
+    "force_axis",
+    "moment_forward",
+    "moment_backward",
+    "moment_max",
+    "force_vertical",
+    "force_horizontal",
+    "moment_min",
+    "moment_axis",
+    "moment_vertical",
+    "moment_horizontal",
+)
 
 
 def _quantity_and_unit(key):
@@ -35,14 +47,19 @@ def compare_csv(comparison, scale):
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     fl, ml = scale.column_force, scale.column_moment
-    writer.writerow(["engine", "config", "order"]
-                    + [f"{q}_{'deg' if q.endswith('_axis') else fl if q.startswith('force') else ml}"
-                       for q in _ORDER_QUANTITIES])
+    writer.writerow(
+        ["engine", "config", "order"]
+        + [
+            f"{q}_{'deg' if q.endswith('_axis') else fl if q.startswith('force') else ml}"
+            for q in _ORDER_QUANTITIES
+        ]
+    )
     for result, record in zip(comparison.results, comparison.to_dict()["engines"]):
         for order in record["orders"]:
-            writer.writerow([record["name"], record["config"], order["order"]]
-                            + [_value(x) for x in order_values(order, result.per_cylinder_unit_n,
-                                                               scale)])
+            writer.writerow(
+                [record["name"], record["config"], order["order"]]
+                + [_value(x) for x in order_values(order, result.per_cylinder_unit_n, scale)]
+            )
     return buffer.getvalue()
 
 
@@ -66,8 +83,9 @@ def _balancer_rows(item, shaft):
     yield item, "force", shaft["force_N"], "N"
     for j, mass in enumerate(shaft["masses"], 1):
         yield from _records(f"{item} mass {j}", mass)
-    yield from _rolling_rows(f"{item} rolling moment order {shaft['order']}",
-                             shaft["rolling_moment"])
+    yield from _rolling_rows(
+        f"{item} rolling moment order {shaft['order']}", shaft["rolling_moment"]
+    )
 
 
 def balance_csv(balances, scale):
@@ -77,8 +95,16 @@ def balance_csv(balances, scale):
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(["engine", "config", "item", "quantity", "value", "unit"])
-    units = [("deg" if q.endswith("_axis") else scale.column_force if q.startswith("force")
-              else scale.moment_label) for q in _ORDER_QUANTITIES]
+    units = [
+        (
+            "deg"
+            if q.endswith("_axis")
+            else scale.column_force
+            if q.startswith("force")
+            else scale.moment_label
+        )
+        for q in _ORDER_QUANTITIES
+    ]
     weight_keys = [key for key, _, _ in WEIGHT_COLUMNS]
     for b in balances:
         record = b.to_dict()
@@ -91,8 +117,10 @@ def balance_csv(balances, scale):
                 rows += _balancer_rows(f"built balancer shaft {i}", shaft)
             for order in built["orders"]:
                 values = order_values(order, b.engine.per_cylinder_unit_n, scale)
-                rows += [(f"as built order {order['order']}", name, value, unit)
-                         for name, value, unit in zip(_ORDER_QUANTITIES, values, units)]
+                rows += [
+                    (f"as built order {order['order']}", name, value, unit)
+                    for name, value, unit in zip(_ORDER_QUANTITIES, values, units)
+                ]
         for i, weight in enumerate(record["counterweights"], 1):
             rows += _records(f"counterweight {i}", weight, weight_keys)
         if record["antivibrateur"] is not None:
@@ -100,8 +128,10 @@ def balance_csv(balances, scale):
         for stage, key in (("residual", "residual"), ("after shafts", "after_shafts")):
             for order in record.get(key, {}).get("orders", []):
                 values = order_values(order, b.engine.per_cylinder_unit_n, scale)
-                rows += [(f"{stage} order {order['order']}", name, value, unit)
-                         for name, value, unit in zip(_ORDER_QUANTITIES, values, units)]
+                rows += [
+                    (f"{stage} order {order['order']}", name, value, unit)
+                    for name, value, unit in zip(_ORDER_QUANTITIES, values, units)
+                ]
         for i, shaft in enumerate(record.get("shafts", []), 1):
             rows += _records(f"shaft {i}", shaft)
         for i, shaft in enumerate(record.get("balancer_shafts", []), 1):
@@ -123,23 +153,49 @@ def torque_csv(results, scale):
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     ml = scale.column_moment
-    writer.writerow(["engine", "config", "torque", "order", f"cos_{ml}", f"sin_{ml}",
-                     f"amplitude_{ml}", "phase_deg"])
+    writer.writerow(
+        [
+            "engine",
+            "config",
+            "torque",
+            "order",
+            f"cos_{ml}",
+            f"sin_{ml}",
+            f"amplitude_{ml}",
+            "phase_deg",
+        ]
+    )
     for r in results:
-        named = [(name, getattr(r, name)) for name in ("inertia", "gas", "total", "tilting", "frame")]
+        named = [
+            (name, getattr(r, name)) for name in ("inertia", "gas", "total", "tilting", "frame")
+        ]
         # an engine with several crankshafts: each one's torque, in its own sense
         named += [(f"crankshaft {c.number}", c.torque) for c in r.crankshafts]
         for name, series in named:
             if series is None:
                 continue
             record = series.to_dict()
-            writer.writerow([r.engine.name, r.engine.config_path, name, 0.0,
-                             _value(scale.moment(record["mean_Nm"])), "", "", ""])
+            writer.writerow(
+                [
+                    r.engine.name,
+                    r.engine.config_path,
+                    name,
+                    0.0,
+                    _value(scale.moment(record["mean_Nm"])),
+                    "",
+                    "",
+                    "",
+                ]
+            )
             for order in record["orders"]:
-                writer.writerow([r.engine.name, r.engine.config_path, name, order["order"]]
-                                + [_value(scale.moment(order[f"{key}_Nm"]))
-                                   for key in ("cos", "sin", "amplitude")]
-                                + [_value(order["phase_deg"])])
+                writer.writerow(
+                    [r.engine.name, r.engine.config_path, name, order["order"]]
+                    + [
+                        _value(scale.moment(order[f"{key}_Nm"]))
+                        for key in ("cos", "sin", "amplitude")
+                    ]
+                    + [_value(order["phase_deg"])]
+                )
     return buffer.getvalue()
 
 
@@ -149,15 +205,22 @@ def search_csv(result):
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     names = list(result.arrangements[0].coefficients) if result.arrangements else []
-    writer.writerow(["rank", "score", "phases_deg", "firing_order", "intervals_deg", "mirror_of"]
-                    + names)
+    writer.writerow(
+        ["rank", "score", "phases_deg", "firing_order", "intervals_deg", "mirror_of"] + names
+    )
     for a in result.arrangements:
         record = a.to_dict()
-        writer.writerow([a.rank, _value(a.score), " ".join(repr(float(p)) for p in a.phases_deg),
-                         "-".join(map(str, record["firing"]["order"])),
-                         " ".join(repr(float(x)) for x in record["firing"]["intervals_deg"]),
-                         "" if a.mirror_of is None else a.mirror_of]
-                        + [_value(a.coefficients[n]) for n in names])
+        writer.writerow(
+            [
+                a.rank,
+                _value(a.score),
+                " ".join(repr(float(p)) for p in a.phases_deg),
+                "-".join(map(str, record["firing"]["order"])),
+                " ".join(repr(float(x)) for x in record["firing"]["intervals_deg"]),
+                "" if a.mirror_of is None else a.mirror_of,
+            ]
+            + [_value(a.coefficients[n]) for n in names]
+        )
     return buffer.getvalue()
 
 
@@ -165,26 +228,45 @@ def family_csv(result):
     """One row per number of cylinders, SI, full precision."""
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    moments = [f"M{k}{d}_Nm" for k in (1, 2) for d in "VH"] + ["M1V_balanced_Nm",
-                                                                "M1H_balanced_Nm"]
+    moments = [f"M{k}{d}_Nm" for k in (1, 2) for d in "VH"] + ["M1V_balanced_Nm", "M1H_balanced_Nm"]
     pru = [f"PRU_M{k}{d}_Nm_per_kW" for k in (1, 2) for d in "VH"] + [
-        "PRU_M1V_balanced_Nm_per_kW", "PRU_M1H_balanced_Nm_per_kW"]
-    writer.writerow(["cylinders", "firing_order", "method", "score"] + moments + ["power_kW"]
-                    + pru + ["h_type_order", "h_type_Nm", "x_type_order", "x_type_Nm",
-                             "second_order_compensator"])
+        "PRU_M1V_balanced_Nm_per_kW",
+        "PRU_M1H_balanced_Nm_per_kW",
+    ]
+    writer.writerow(
+        ["cylinders", "firing_order", "method", "score"]
+        + moments
+        + ["power_kW"]
+        + pru
+        + ["h_type_order", "h_type_Nm", "x_type_order", "x_type_Nm", "second_order_compensator"]
+    )
     for row in result.to_dict()["rows"]:
         entries = {} if row["pru"] is None else {e["order"]: e for e in row["pru"]["orders"]}
-        values = [entries[k][f"{side}_Nm_per_kW"] if k in entries else None
-                  for k in (1, 2) for side in ("vertical", "horizontal")]
+        values = [
+            entries[k][f"{side}_Nm_per_kW"] if k in entries else None
+            for k in (1, 2)
+            for side in ("vertical", "horizontal")
+        ]
         balanced = None if row["pru"] is None else row["pru"]["first_order_balanced"]
-        values += [None if balanced is None else balanced[f"{side}_Nm_per_kW"]
-                   for side in ("vertical", "horizontal")]
+        values += [
+            None if balanced is None else balanced[f"{side}_Nm_per_kW"]
+            for side in ("vertical", "horizontal")
+        ]
         guides = []
         for key in ("h_type", "x_type"):
             moment = row[key]
             guides += [None, None] if moment is None else [moment["order"], moment["amplitude_Nm"]]
-        writer.writerow([row["cylinders"], "-".join(map(str, row["firing_order"])), row["method"],
-                         _value(row["score"])] + [_value(row.get(m)) for m in moments]
-                        + [_value(row["power_kW"])] + [_value(v) for v in values]
-                        + [_value(v) for v in guides] + [row["second_order_compensator"]])
+        writer.writerow(
+            [
+                row["cylinders"],
+                "-".join(map(str, row["firing_order"])),
+                row["method"],
+                _value(row["score"]),
+            ]
+            + [_value(row.get(m)) for m in moments]
+            + [_value(row["power_kW"])]
+            + [_value(v) for v in values]
+            + [_value(v) for v in guides]
+            + [row["second_order_compensator"]]
+        )
     return buffer.getvalue()

@@ -17,11 +17,25 @@ def figure(value, digits=DIGITS):
 
 def plain_text(value):
     """One line of text for a table cell: line breaks and tabs become spaces."""
-    return " ".join(str(value).split()) if any(c in str(value) for c in "\r\n\t\v\f") else str(value)
+    return (
+        " ".join(str(value).split()) if any(c in str(value) for c in "\r\n\t\v\f") else str(value)
+    )
 
 
-_MARKDOWN = str.maketrans({"|": r"\|", "<": "&lt;", ">": "&gt;", "&": "&amp;", "`": r"\`",
-                           "*": r"\*", "_": r"\_", "[": r"\[", "]": r"\]", "\\": "\\\\"})
+_MARKDOWN = str.maketrans(
+    {
+        "|": r"\|",
+        "<": "&lt;",
+        ">": "&gt;",
+        "&": "&amp;",
+        "`": r"\`",
+        "*": r"\*",
+        "_": r"\_",
+        "[": r"\[",
+        "]": r"\]",
+        "\\": "\\\\",
+    }
+)
 
 
 def markdown_text(value):

@@ -13,14 +13,32 @@ def family_parts(result, scale):
     ``FamilyResult.to_dict``: one row per number of cylinders."""
     record = result.to_dict()
     ml = scale.moment_label
-    power = ("" if record["power_per_cylinder_kW"] is None else
-             f", {figure(record['power_per_cylinder_kW'])} kW a cylinder")
-    title = (f"{record['name']}: the family, objective {record['objective']}, pitch "
-             f"{m_to_mm(record['pitch_m']):g} mm{power}; guide-force moments from "
-             f"{record['guide_forces_from']}")
-    headers = ["Cyl", "Firing order", "Found", f"M1V* ({ml})", f"M1H* ({ml})", f"M2V ({ml})",
-               f"M2H ({ml})", "PRU M1V*", "PRU M1H*", "PRU M2V", "PRU M2H", "H-type (order)",
-               "X-type (order)", "2nd-order compensator"]
+    power = (
+        ""
+        if record["power_per_cylinder_kW"] is None
+        else f", {figure(record['power_per_cylinder_kW'])} kW a cylinder"
+    )
+    title = (
+        f"{record['name']}: the family, objective {record['objective']}, pitch "
+        f"{m_to_mm(record['pitch_m']):g} mm{power}; guide-force moments from "
+        f"{record['guide_forces_from']}"
+    )
+    headers = [
+        "Cyl",
+        "Firing order",
+        "Found",
+        f"M1V* ({ml})",
+        f"M1H* ({ml})",
+        f"M2V ({ml})",
+        f"M2H ({ml})",
+        "PRU M1V*",
+        "PRU M1H*",
+        "PRU M2V",
+        "PRU M2H",
+        "H-type (order)",
+        "X-type (order)",
+        "2nd-order compensator",
+    ]
     rows = []
     for row in record["rows"]:
         pru = row["pru"]
@@ -37,19 +55,24 @@ def family_parts(result, scale):
                 cells.append(pru_text(entries[k], side) if k in entries else "—")
         for key in ("h_type", "x_type"):
             moment = row[key]
-            cells.append("—" if moment is None else
-                         f"{figure(scale.moment(moment['amplitude_Nm']))} ({moment['order']:g})")
+            cells.append(
+                "—"
+                if moment is None
+                else f"{figure(scale.moment(moment['amplitude_Nm']))} ({moment['order']:g})"
+            )
         compensator = row["second_order_compensator"]
         cells.append("—" if compensator is None else "yes" if compensator else "no")
         rows.append(cells)
-    notes = ["Found: exhaustive (proved best for the objective), heuristic (the best found, not "
-             "proved) or given. M1*: the first-order couple with counterweights for the rotating "
-             "masses (balance factor 0), as the project guides give it; M2 as the crank stands; "
-             "PRU in N·m/kW with the need for a compensator; H-type and X-type: the largest "
-             f"guide-force moment ({record['guide_forces_from']}: a [gas] table adds the gas "
-             "forces) of the orders analysed (at least up to the number of cylinders) and its "
-             "order; a second-order compensator is indicated where M2's PRU "
-             "is likely or most likely to need one."]
+    notes = [
+        "Found: exhaustive (proved best for the objective), heuristic (the best found, not "
+        "proved) or given. M1*: the first-order couple with counterweights for the rotating "
+        "masses (balance factor 0), as the project guides give it; M2 as the crank stands; "
+        "PRU in N·m/kW with the need for a compensator; H-type and X-type: the largest "
+        f"guide-force moment ({record['guide_forces_from']}: a [gas] table adds the gas "
+        "forces) of the orders analysed (at least up to the number of cylinders) and its "
+        "order; a second-order compensator is indicated where M2's PRU "
+        "is likely or most likely to need one."
+    ]
     missing = sorted({row["pru_note"] for row in record["rows"] if row["pru"] is None})
     if missing:
         notes.append("PRU —: " + "; ".join(missing) + " (--power-per-cylinder gives it).")
@@ -60,5 +83,6 @@ def family_tables(result, scale, fmt):
     """``balance family`` as text or Markdown."""
     heading = "#### " if fmt == "markdown" else ""
     title, headers, rows, note = family_parts(result, scale)
-    return "\n".join([f"{heading}{safe_for(fmt)(title)}", "", render(headers, rows, fmt), "", note,
-                      ""])
+    return "\n".join(
+        [f"{heading}{safe_for(fmt)(title)}", "", render(headers, rows, fmt), "", note, ""]
+    )

@@ -11,8 +11,17 @@ __all__ = ["write_report", "REPORT_FILES"]
 REPORT_FILES = [file for file, *_ in PICTURES] + ["report.md", "report.html"]
 
 
-def write_report(target, comparison, balances, star_order, with_html, torques, scale=None,
-                 family=None, torsion=None):
+def write_report(
+    target,
+    comparison,
+    balances,
+    star_order,
+    with_html,
+    torques,
+    scale=None,
+    family=None,
+    torsion=None,
+):
     """Write the report of ``comparison`` (and its ``balances`` and ``torques``, one of each per
     engine) into the folder ``target``, its moments and torques in ``scale``'s units (a
     :class:`~balance_cli.units.Scale`, default N·m); nothing is left behind if any part

@@ -23,13 +23,17 @@ figcaption { font-size: 0.9em; color: #444; }
 def _inline_svg(path):
     """The <svg> element of a picture file, without its XML prologue."""
     text = Path(path).read_text(encoding="utf-8")
-    return text[text.index("<svg"):]
+    return text[text.index("<svg") :]
 
 
 def _table(headers, rows):
     # tabulate's "html" format escapes every cell
-    return tabulate([[plain_text(c) for c in row] for row in rows], headers=headers,
-                    tablefmt="html", disable_numparse=True)
+    return tabulate(
+        [[plain_text(c) for c in row] for row in rows],
+        headers=headers,
+        tablefmt="html",
+        disable_numparse=True,
+    )
 
 
 def page(blocks, folder):
@@ -45,9 +49,13 @@ def page(blocks, folder):
             body.append(_table(block[1], block[2]))
         else:
             _, file, title, caption = block
-            body.append(f"<figure id=\"{html.escape(file)}\"><h3>{html.escape(title)}</h3>"
-                        f"{_inline_svg(Path(folder) / file)}<figcaption>{html.escape(caption)}"
-                        "</figcaption></figure>")
-    return ("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-            "<title>Balance report</title>"
-            f"<style>{_CSS}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")
+            body.append(
+                f'<figure id="{html.escape(file)}"><h3>{html.escape(title)}</h3>'
+                f"{_inline_svg(Path(folder) / file)}<figcaption>{html.escape(caption)}"
+                "</figcaption></figure>"
+            )
+    return (
+        '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
+        "<title>Balance report</title>"
+        f"<style>{_CSS}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n"
+    )

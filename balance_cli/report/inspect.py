@@ -11,8 +11,10 @@ __all__ = ["list_table", "list_tables", "show_table"]
 
 
 def list_table(engines):
-    rows = [[e.config_path, e.name, str(e.n_cylinders), str(e.cycle), e.frame, e.source]
-            for e in engines]
+    rows = [
+        [e.config_path, e.name, str(e.n_cylinders), str(e.cycle), e.frame, e.source]
+        for e in engines
+    ]
     return render(["Config", "Name", "Cyl", "Cycle", "Frame", "Source"], rows, "table")
 
 
@@ -22,7 +24,9 @@ def list_tables(groups):
     blocks = []
     for heading, engines in groups:
         count = len(engines)
-        blocks.append(f"{heading} ({count} engine{'s' if count != 1 else ''})\n{list_table(engines)}")
+        blocks.append(
+            f"{heading} ({count} engine{'s' if count != 1 else ''})\n{list_table(engines)}"
+        )
     return "\n\n".join(blocks)
 
 
@@ -39,24 +43,38 @@ def _parts_lines(engine):
     lines = []
     parts = engine.parts
     if parts is not None:
-        lines.append(f"  parts:         piston {kg_to_g(parts.piston_kg):g} g; rod {kg_to_g(parts.rod_kg):g} g, "
-                     f"centre of gravity {_mm(parts.rod_cg_m)} from the big end, J {_inertia(parts.rod_inertia_kgm2)}"
-                     + (f"; link rod {kg_to_g(parts.link_kg):g} g, {_mm(parts.link_cg_m)}, "
-                        f"j {_inertia(parts.link_inertia_kgm2)}" if parts.link_kg else "")
-                     + f"; crank {kg_to_g(parts.crank_kg):g} g")
+        lines.append(
+            f"  parts:         piston {kg_to_g(parts.piston_kg):g} g; rod {kg_to_g(parts.rod_kg):g} g, "
+            f"centre of gravity {_mm(parts.rod_cg_m)} from the big end, J {_inertia(parts.rod_inertia_kgm2)}"
+            + (
+                f"; link rod {kg_to_g(parts.link_kg):g} g, {_mm(parts.link_cg_m)}, "
+                f"j {_inertia(parts.link_inertia_kgm2)}"
+                if parts.link_kg
+                else ""
+            )
+            + f"; crank {kg_to_g(parts.crank_kg):g} g"
+        )
     rods = sorted({c.rod_inertia_kgm2 for c in engine.cylinders if not c.is_link})
     links = sorted({c.rod_inertia_kgm2 for c in engine.cylinders if c.is_link})
     if any(rods) or any(links) or engine.shaft_inertia_kgm2:
-        lines.append("  rod inertia:   left out by the point masses: "
-                     + ("master rods" if links else "rods") + " C = J − M·H·(L − H) = "
-                     + ", ".join(_inertia(c) for c in rods)
-                     + (f"; link rods c = j − m·h·(l − h) = {', '.join(_inertia(c) for c in links)}"
-                        if links else "")
-                     + f"; crankshaft and flywheel {_inertia(engine.shaft_inertia_kgm2)}")
+        lines.append(
+            "  rod inertia:   left out by the point masses: "
+            + ("master rods" if links else "rods")
+            + " C = J − M·H·(L − H) = "
+            + ", ".join(_inertia(c) for c in rods)
+            + (
+                f"; link rods c = j − m·h·(l − h) = {', '.join(_inertia(c) for c in links)}"
+                if links
+                else ""
+            )
+            + f"; crankshaft and flywheel {_inertia(engine.shaft_inertia_kgm2)}"
+        )
     if engine.gas is not None:
         gas = engine.gas
-        lines.append(f"  gas:           bore {_mm(gas.bore_m)}, compression ratio {gas.compression_ratio:g}"
-                     + ("" if gas.imep_pa is None else f", imep {pa_to_bar(gas.imep_pa):g} bar"))
+        lines.append(
+            f"  gas:           bore {_mm(gas.bore_m)}, compression ratio {gas.compression_ratio:g}"
+            + ("" if gas.imep_pa is None else f", imep {pa_to_bar(gas.imep_pa):g} bar")
+        )
     return lines
 
 
@@ -67,9 +85,11 @@ def _crankshaft_lines(engine):
     lines = []
     for i, shaft in enumerate(engine.crankshafts, 1):
         turning = "with the first" if shaft.direction == 1 else "against the first"
-        lines.append(f"  crankshaft {i}:  at ({_mm(shaft.x_m)}, {_mm(shaft.y_m)}), turning "
-                     f"{turning}, phase {math.degrees(shaft.phase_rad):g}°"
-                     + (" (the reference)" if i == 1 else ""))
+        lines.append(
+            f"  crankshaft {i}:  at ({_mm(shaft.x_m)}, {_mm(shaft.y_m)}), turning "
+            f"{turning}, phase {math.degrees(shaft.phase_rad):g}°"
+            + (" (the reference)" if i == 1 else "")
+        )
     if engine.has_opposed_pistons:
         lines.append("  opposed:       TDC is the inner dead centre (the bore at its smallest)")
     return lines
@@ -79,14 +99,21 @@ def _as_built_show_lines(engine):
     """``balance show``'s lines for the counterweights and balancer shafts as built."""
     lines = []
     for weight in engine.counterweights:
-        lines.append(f"  counterweight: throw {weight.throw}, m·ρ {figure(weight.mass_radius_kgm)} "
-                     f"kg·m at {math.degrees(weight.angle_rad):g}° from its pin, z "
-                     f"{_mm(engine.counterweight_z_m(weight))}")
+        lines.append(
+            f"  counterweight: throw {weight.throw}, m·ρ {figure(weight.mass_radius_kgm)} "
+            f"kg·m at {math.degrees(weight.angle_rad):g}° from its pin, z "
+            f"{_mm(engine.counterweight_z_m(weight))}"
+        )
     for shaft in engine.balancer_shafts:
-        masses = "; ".join(f"m·e {figure(m.mass_radius_kgm)} kg·m at {math.degrees(m.angle_rad):g}°, "
-                           f"z {_mm(engine.balancer_z_m(m))}" for m in shaft.masses)
-        lines.append(f"  shaft:         ratio {shaft.ratio:+d}, axis lateral {_mm(shaft.lateral_m)}, "
-                     f"vertical {_mm(shaft.vertical_m)}; {masses}")
+        masses = "; ".join(
+            f"m·e {figure(m.mass_radius_kgm)} kg·m at {math.degrees(m.angle_rad):g}°, "
+            f"z {_mm(engine.balancer_z_m(m))}"
+            for m in shaft.masses
+        )
+        lines.append(
+            f"  shaft:         ratio {shaft.ratio:+d}, axis lateral {_mm(shaft.lateral_m)}, "
+            f"vertical {_mm(shaft.vertical_m)}; {masses}"
+        )
     return lines
 
 
@@ -115,26 +142,42 @@ def show_table(engine, firing):
         f"  intervals (°): {', '.join(f'{i:.2f}' for i in firing.intervals_deg)}",
         "",
     ]
-    offsets = any(c.pin_offset_m is not None and c.pin_offset_m != engine.pin_offset_m
-                  for c in engine.cylinders)
+    offsets = any(
+        c.pin_offset_m is not None and c.pin_offset_m != engine.pin_offset_m
+        for c in engine.cylinders
+    )
     several = engine.has_several_crankshafts
     rows = []
     for c in engine.cylinders:
         rod = engine.rod_type(c)
         if c.is_link:
-            rod = (f"link on {c.master} ({_mm(c.link_length_m)}, knuckle {_mm(c.knuckle_radius_m)} "
-                   f"at {math.degrees(c.knuckle_angle_rad):g}°)")
+            rod = (
+                f"link on {c.master} ({_mm(c.link_length_m)}, knuckle {_mm(c.knuckle_radius_m)} "
+                f"at {math.degrees(c.knuckle_angle_rad):g}°)"
+            )
         elif c.is_opposed:
             rod = f"opposed: throw {c.opposed_throw}, {kg_to_g(c.opposed_reciprocating_kg):g} g"
         bank = math.degrees(engine.bank_angles_rad[c.bank_index])
-        throw = str(c.throw) + (f" (shaft {engine.throws[c.throw_index].crankshaft})"
-                                    if several else "")
-        row = [str(c.number), f"{c.bank} ({bank:g}°)", throw,
-               f"{math.degrees(engine.throws[c.throw_index].phase_rad):g}", f"{m_to_mm(c.z_m):g}",
-               f"{kg_to_g(c.reciprocating_kg):g}", rod]
+        throw = str(c.throw) + (
+            f" (shaft {engine.throws[c.throw_index].crankshaft})" if several else ""
+        )
+        row = [
+            str(c.number),
+            f"{c.bank} ({bank:g}°)",
+            throw,
+            f"{math.degrees(engine.throws[c.throw_index].phase_rad):g}",
+            f"{m_to_mm(c.z_m):g}",
+            f"{kg_to_g(c.reciprocating_kg):g}",
+            rod,
+        ]
         if offsets:
             row.append(f"{m_to_mm(engine.pin_offset_of(c)):g}")
         rows.append(row + [f"{round_degrees(firing.tdc_deg[c.number], 2):.2f}"])
-    table = render(["Cyl", "Bank (angle)", "Throw", "Phase (°)", "z (mm)", "Recip. (g)", "Rod"]
-                   + (["Pin offset (mm)"] if offsets else []) + ["TDC (°)"], rows, "table")
+    table = render(
+        ["Cyl", "Bank (angle)", "Throw", "Phase (°)", "z (mm)", "Recip. (g)", "Rod"]
+        + (["Pin offset (mm)"] if offsets else [])
+        + ["TDC (°)"],
+        rows,
+        "table",
+    )
     return "\n".join(header) + table + "\n"

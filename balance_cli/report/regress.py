@@ -34,28 +34,59 @@ def regression_tables(regression, fmt, scale=None):
     safe = safe_for(fmt)
     checked = len(regression.checked)
     if not regression.moved:
-        return (f"{heading}balance regress: nothing moved beyond tolerance ({checked} engine"
-                f"{'s' if checked != 1 else ''} checked against {safe(regression.baseline_path)})\n")
+        return (
+            f"{heading}balance regress: nothing moved beyond tolerance ({checked} engine"
+            f"{'s' if checked != 1 else ''} checked against {safe(regression.baseline_path)})\n"
+        )
     moved_engines = len({row.engine for row in regression.rows})
-    out = [f"{heading}balance regress: {len(regression.rows)} quantities moved in {moved_engines} "
-           f"of {checked} engines; {len(regression.added)} added, {len(regression.removed)} "
-           f"removed (baseline {safe(regression.baseline_path)})", ""]
+    out = [
+        f"{heading}balance regress: {len(regression.rows)} quantities moved in {moved_engines} "
+        f"of {checked} engines; {len(regression.added)} added, {len(regression.removed)} "
+        f"removed (baseline {safe(regression.baseline_path)})",
+        "",
+    ]
     if regression.rows:
         rows = []
         for row in regression.rows:
             change, relative = row.change, row.relative_change
             shown = lambda v, q=row.quantity: _in_units(q, v, scale)  # noqa: E731
-            rows.append([row.engine, "-" if row.order is None else str(row.order), row.quantity,
-                         value_text(shown(row.baseline)), value_text(shown(row.now)),
-                         "-" if change is None else f"{shown(change):+.3g}",
-                         "-" if relative is None else f"{100 * relative:+.3g} %",
-                         "-" if row.tolerance is None else f"{shown(row.tolerance):.3g}"])
-        out += [render(["Engine", "Order", "Quantity", "Baseline", "Now", "Change", "Relative",
-                        "Tolerance"], rows, fmt), ""]
-    for title, names in (("Engines added (not in the baseline)", regression.added),
-                         ("Engines removed (in the baseline, not now)", regression.removed)):
+            rows.append(
+                [
+                    row.engine,
+                    "-" if row.order is None else str(row.order),
+                    row.quantity,
+                    value_text(shown(row.baseline)),
+                    value_text(shown(row.now)),
+                    "-" if change is None else f"{shown(change):+.3g}",
+                    "-" if relative is None else f"{100 * relative:+.3g} %",
+                    "-" if row.tolerance is None else f"{shown(row.tolerance):.3g}",
+                ]
+            )
+        out += [
+            render(
+                [
+                    "Engine",
+                    "Order",
+                    "Quantity",
+                    "Baseline",
+                    "Now",
+                    "Change",
+                    "Relative",
+                    "Tolerance",
+                ],
+                rows,
+                fmt,
+            ),
+            "",
+        ]
+    for title, names in (
+        ("Engines added (not in the baseline)", regression.added),
+        ("Engines removed (in the baseline, not now)", regression.removed),
+    ):
         if names:
             out += [f"{title}:", ""] + [f"- {safe(n)}" for n in names] + [""]
-    out.append(f"Units: {scale.units} for *_N and {scale.moment_label} for *_Nm, degrees for "
-               "*_deg; change is now − baseline. Update the baseline on purpose with --update.")
+    out.append(
+        f"Units: {scale.units} for *_N and {scale.moment_label} for *_Nm, degrees for "
+        "*_deg; change is now − baseline. Update the baseline on purpose with --update."
+    )
     return "\n".join(out) + "\n"

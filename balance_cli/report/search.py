@@ -19,8 +19,11 @@ def _coefficient_names(result):
 def search_summary(result):
     """What was searched, how much, and whether the list is proved: a few lines of text."""
     what = "even firing" if result.even else f"every crank on a {result.step_deg:g}° grid"
-    proof = ("exhaustive: no arrangement scores better than those listed" if result.exhaustive
-             else "HEURISTIC local search: the best found, NOT proved optimal")
+    proof = (
+        "exhaustive: no arrangement scores better than those listed"
+        if result.exhaustive
+        else "HEURISTIC local search: the best found, NOT proved optimal"
+    )
     lines = [
         f"{result.template.name} ({result.template.config_path or 'template'}): {what}; "
         f"objective {', '.join(str(t) for t in result.objective)}",
@@ -30,8 +33,13 @@ def search_summary(result):
         f"evaluated, {result.pruned:,} skipped by bound ({result.elapsed_s:.2f} s, "
         f"{result.workers} worker{'s' if result.workers != 1 else ''})",
         f"Symmetries: {'; '.join(result.symmetries)}",
-        proof + ("; more arrangements tie at the last score than were kept, so the tie-break "
-                 "by firing order saw only the first found" if result.ties_truncated else ""),
+        proof
+        + (
+            "; more arrangements tie at the last score than were kept, so the tie-break "
+            "by firing order saw only the first found"
+            if result.ties_truncated
+            else ""
+        ),
     ]
     return lines
 
@@ -48,14 +56,20 @@ def search_rows(result):
     rows = []
     for a in result.arrangements:
         record = a.to_dict()
-        rows.append([str(a.rank), _score_text(a.score),
-                     " ".join(f"{round_degrees(p, 3):g}" for p in a.phases_deg),
-                     "-".join(map(str, record["firing"]["order"])),
-                     intervals(record["firing"])]
-                    + [f"{a.coefficients[n]:.4f}" for n in names]
-                    + ["" if a.mirror_of is None else str(a.mirror_of)])
-    headers = (["Rank", "Score", "Phases (°)", "Firing order", "Intervals (°)"] + names
-               + ["Mirror of"])
+        rows.append(
+            [
+                str(a.rank),
+                _score_text(a.score),
+                " ".join(f"{round_degrees(p, 3):g}" for p in a.phases_deg),
+                "-".join(map(str, record["firing"]["order"])),
+                intervals(record["firing"]),
+            ]
+            + [f"{a.coefficients[n]:.4f}" for n in names]
+            + ["" if a.mirror_of is None else str(a.mirror_of)]
+        )
+    headers = (
+        ["Rank", "Score", "Phases (°)", "Firing order", "Intervals (°)"] + names + ["Mirror of"]
+    )
     return headers, rows
 
 
@@ -66,10 +80,15 @@ def search_tables(result, comparison, scale, fmt):
     safe = safe_for(fmt)
     out = [safe(line) + ("  " if fmt == "markdown" else "") for line in search_summary(result)]
     headers, rows = search_rows(result)
-    out += ["", f"{heading}Best arrangements (coefficients: F_k in one throw's largest order-k "
-            "force, M_k in that force × the mean throw pitch; H_k and X_k in one throw's order-k "
-            "guide-force couple, X_k also per mean throw pitch)", "", render(headers, rows, fmt),
-            ""]
+    out += [
+        "",
+        f"{heading}Best arrangements (coefficients: F_k in one throw's largest order-k "
+        "force, M_k in that force × the mean throw pitch; H_k and X_k in one throw's order-k "
+        "guide-force couple, X_k also per mean throw pitch)",
+        "",
+        render(headers, rows, fmt),
+        "",
+    ]
     if _coefficient_names(result)[1]:
         out += ["The objective's other coefficients are 0 in every arrangement listed.", ""]
     if comparison is not None:

@@ -30,22 +30,30 @@ def sweep_tables(result, fmt, units="N"):
     safe = markdown_text if fmt == "markdown" else plain_text
     shown = ", ".join(q.name for q in result.quantities)
     at = "" if result.speed_rpm is None else f" at {result.speed_rpm:g} rpm"
-    title = (f"{heading}{safe(result.name)}{at}: {shown} against {safe(result.parameter.key)} "
-             f"({safe(result.config)}, {len(result.points)} point{'s' if len(result.points) != 1 else ''}, "
-             f"{result.samples} samples)")
+    title = (
+        f"{heading}{safe(result.name)}{at}: {shown} against {safe(result.parameter.key)} "
+        f"({safe(result.config)}, {len(result.points)} point{'s' if len(result.points) != 1 else ''}, "
+        f"{result.samples} samples)"
+    )
     headers = [_parameter_heading(result.parameter)] + [
         f"{q.name} ({shown_unit(q, units)})" if shown_unit(q, units) else q.name
-        for q in result.quantities]
-    rows = [[_value_text(p["value"])] + [figure(shown_value(q, p[q.column], units))
-                                         for q in result.quantities]
-            for p in result.points]
+        for q in result.quantities
+    ]
+    rows = [
+        [_value_text(p["value"])]
+        + [figure(shown_value(q, p[q.column], units)) for q in result.quantities]
+        for p in result.points
+    ]
     notes = [f"- {q.name}: {q.meaning}" for q in result.quantities]
     if result.inertia_kgm2 is not None:
-        notes.append(f"- with a flywheel of {result.inertia_kgm2:g} kg·m² driving a "
-                     f"{result.load} load")
+        notes.append(
+            f"- with a flywheel of {result.inertia_kgm2:g} kg·m² driving a {result.load} load"
+        )
     if result.parameter.kind == "fraction":
-        notes.append("- each point after classic per-throw counterweights of that balance factor "
-                     "(rotating masses plus the factor times the reciprocating ones)")
+        notes.append(
+            "- each point after classic per-throw counterweights of that balance factor "
+            "(rotating masses plus the factor times the reciprocating ones)"
+        )
     return "\n".join([title, "", render(headers, rows, fmt), ""] + notes) + "\n"
 
 
@@ -62,7 +70,13 @@ def sweep_csv(result):
     columns = [q.column for q in result.quantities]
     writer.writerow(["parameter", "value", "value_SI", "unit_SI"] + columns)
     for point in result.points:
-        writer.writerow([result.parameter.key, _csv_value(point["value"]),
-                         _csv_value(point["value_SI"]), result.parameter.unit_si]
-                        + [_csv_value(point[c]) for c in columns])
+        writer.writerow(
+            [
+                result.parameter.key,
+                _csv_value(point["value"]),
+                _csv_value(point["value_SI"]),
+                result.parameter.unit_si,
+            ]
+            + [_csv_value(point[c]) for c in columns]
+        )
     return buffer.getvalue()

@@ -11,8 +11,16 @@ from tabulate import tabulate
 from ..units import round_degrees
 from .display import figure, markdown_text, plain_text
 
-__all__ = ["safe_for", "render", "order_values", "part_headers", "part_rows", "order_parts",
-           "intervals", "pru_text"]
+__all__ = [
+    "safe_for",
+    "render",
+    "order_values",
+    "part_headers",
+    "part_rows",
+    "order_parts",
+    "intervals",
+    "pru_text",
+]
 
 
 _TABLEFMT = {"table": "simple", "markdown": "pipe"}
@@ -25,8 +33,12 @@ def safe_for(fmt):
 def render(headers, rows, fmt):
     """One table as text ("table") or Markdown ("markdown"); cells must already be text."""
     safe = safe_for(fmt)
-    return tabulate([[safe(c) for c in row] for row in rows], headers=[safe(h) for h in headers],
-                    tablefmt=_TABLEFMT[fmt], disable_numparse=True)
+    return tabulate(
+        [[safe(c) for c in row] for row in rows],
+        headers=[safe(h) for h in headers],
+        tablefmt=_TABLEFMT[fmt],
+        disable_numparse=True,
+    )
 
 
 def _axis_text(axis_deg):
@@ -41,18 +53,41 @@ def order_values(record, unit_n, scale):
     moment min, axis, vertical (pitch) and horizontal (yaw)."""
     f, m = record["force"], record["moment"]
     force = lambda key: scale.force(f[key], unit_n)  # noqa: E731
-    return ([force(k) for k in ("forward_N", "backward_N", "max_N", "min_N")] + [f["axis_deg"]]
-            + [scale.moment(m[k]) for k in ("forward_Nm", "backward_Nm", "max_Nm")]
-            + [force("vertical_N"), force("horizontal_N"), scale.moment(m["min_Nm"]),
-               m["axis_deg"], scale.moment(m["vertical_Nm"]), scale.moment(m["horizontal_Nm"])])
+    return (
+        [force(k) for k in ("forward_N", "backward_N", "max_N", "min_N")]
+        + [f["axis_deg"]]
+        + [scale.moment(m[k]) for k in ("forward_Nm", "backward_Nm", "max_Nm")]
+        + [
+            force("vertical_N"),
+            force("horizontal_N"),
+            scale.moment(m["min_Nm"]),
+            m["axis_deg"],
+            scale.moment(m["vertical_Nm"]),
+            scale.moment(m["horizontal_Nm"]),
+        ]
+    )
 
 
 #: the columns of a part's table: (record key without unit, heading)
 _PART_COLUMNS = {
-    "force": ("F", ("forward", "fwd"), ("backward", "bwd"), ("max", "max"), ("min", "min"),
-              ("vertical", "vertical"), ("horizontal", "horizontal")),
-    "moment": ("M", ("forward", "fwd"), ("backward", "bwd"), ("max", "max"), ("min", "min"),
-               ("vertical", "V (pitch)"), ("horizontal", "H (yaw)")),
+    "force": (
+        "F",
+        ("forward", "fwd"),
+        ("backward", "bwd"),
+        ("max", "max"),
+        ("min", "min"),
+        ("vertical", "vertical"),
+        ("horizontal", "horizontal"),
+    ),
+    "moment": (
+        "M",
+        ("forward", "fwd"),
+        ("backward", "bwd"),
+        ("max", "max"),
+        ("min", "min"),
+        ("vertical", "V (pitch)"),
+        ("horizontal", "H (yaw)"),
+    ),
 }
 
 
@@ -76,33 +111,50 @@ def part_rows(name, records, unit_n, scale, part):
         if values[f"max_{unit}"] == 0.0:
             continue
         cells = [figure(shown(values[f"{key}_{unit}"])) for key, _ in columns]
-        rows.append([name, str(record["order"])] + cells[:4] + [_axis_text(values["axis_deg"])]
-                    + cells[4:])
+        rows.append(
+            [name, str(record["order"])] + cells[:4] + [_axis_text(values["axis_deg"])] + cells[4:]
+        )
     return rows
 
 
 def order_parts(entries, scale, samples):
     """The force and moment tables of the orders, as (title, headers, rows, note), for
     ``entries`` of (name, order records, m_rec·r·ω²·n)."""
-    unit = ("per cylinder, in units of m_rec·r·ω²·n" if not scale.absolute
-            else f"in {scale.units}")
-    forces = [row for name, records, unit_n in entries
-              for row in part_rows(name, records, unit_n, scale, "force")]
-    moments = [row for name, records, unit_n in entries
-               for row in part_rows(name, records, unit_n, scale, "moment")]
+    unit = "per cylinder, in units of m_rec·r·ω²·n" if not scale.absolute else f"in {scale.units}"
+    forces = [
+        row
+        for name, records, unit_n in entries
+        for row in part_rows(name, records, unit_n, scale, "force")
+    ]
+    moments = [
+        row
+        for name, records, unit_n in entries
+        for row in part_rows(name, records, unit_n, scale, "moment")
+    ]
     top = entries and len(entries[0][1])
     return [
-        (f"Free forces by order ({unit})", part_headers(scale, "force"), forces,
-         f"No free force in any order up to {top}." if not forces else
-         "Orders not listed are zero. fwd turns with the crank, bwd against it; max and min are "
-         "the semi-axes of the order's ellipse, axis the direction of max from the reference axis "
-         "(— where the ellipse is a circle); vertical and horizontal are the amplitudes of the "
-         f"components along the engine's vertical and across it ({samples} samples a "
-         "revolution)."),
-        (f"Free moments by order (in {scale.moment_label})", part_headers(scale, "moment"), moments,
-         "V (pitch) is the moment of the vertical forces, about the horizontal axis across the "
-         "crankshaft (marine M1V, M2V); H (yaw) the moment of the horizontal forces, about the "
-         "vertical (M1H, M2H)." if moments else f"No free moment in any order up to {top}."),
+        (
+            f"Free forces by order ({unit})",
+            part_headers(scale, "force"),
+            forces,
+            f"No free force in any order up to {top}."
+            if not forces
+            else "Orders not listed are zero. fwd turns with the crank, bwd against it; max and min are "
+            "the semi-axes of the order's ellipse, axis the direction of max from the reference axis "
+            "(— where the ellipse is a circle); vertical and horizontal are the amplitudes of the "
+            f"components along the engine's vertical and across it ({samples} samples a "
+            "revolution).",
+        ),
+        (
+            f"Free moments by order (in {scale.moment_label})",
+            part_headers(scale, "moment"),
+            moments,
+            "V (pitch) is the moment of the vertical forces, about the horizontal axis across the "
+            "crankshaft (marine M1V, M2V); H (yaw) the moment of the horizontal forces, about the "
+            "vertical (M1H, M2H)."
+            if moments
+            else f"No free moment in any order up to {top}.",
+        ),
     ]
 
 

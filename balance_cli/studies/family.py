@@ -16,13 +16,13 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..analysis.results import analyse
-from ..output import DOCUMENT_VERSION
+from ..analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES
+from ..analysis.torque import torque
 from ..checks import instance, positive, whole
 from ..config import Configuration, build, read_configuration
 from ..cranksearch import DEFAULT_LIMIT, search
 from ..errors import AnalysisError, BalanceError
-from ..analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES
-from ..analysis.torque import torque
+from ..output import DOCUMENT_VERSION
 
 __all__ = ["FamilyRow", "FamilyResult", "family", "default_objective"]
 
@@ -49,25 +49,34 @@ class FamilyRow:
     def to_dict(self) -> dict:
         record = self.result.to_dict()
         orders = record["orders"]
-        moments = {f"M{k}{d}_Nm": orders[k - 1]["moment"][f"{w}_Nm"]
-                   for k in (1, 2) for d, w in (("V", "vertical"), ("H", "horizontal"))}
+        moments = {
+            f"M{k}{d}_Nm": orders[k - 1]["moment"][f"{w}_Nm"]
+            for k in (1, 2)
+            for d, w in (("V", "vertical"), ("H", "horizontal"))
+        }
         pru = record["pru"]
         balanced = None if pru is None else pru["first_order_balanced"]
         if balanced is not None:
-            moments.update(M1V_balanced_Nm=balanced["vertical_Nm"],
-                           M1H_balanced_Nm=balanced["horizontal_Nm"])
-        second = None if pru is None else next(
-            (e for e in pru["orders"] if e["order"] == 2), None)
+            moments.update(
+                M1V_balanced_Nm=balanced["vertical_Nm"], M1H_balanced_Nm=balanced["horizontal_Nm"]
+            )
+        second = None if pru is None else next((e for e in pru["orders"] if e["order"] == 2), None)
         return {
-            "cylinders": self.cylinders, "method": self.method, "score": self.score,
+            "cylinders": self.cylinders,
+            "method": self.method,
+            "score": self.score,
             "firing_order": record["firing"]["order"],
             "phases_deg": [math.degrees(t.phase_rad) % 360.0 for t in self.result.engine.throws],
             **moments,
-            "power_kW": record["power_kW"], "pru": pru, "pru_note": record["pru_note"],
+            "power_kW": record["power_kW"],
+            "pru": pru,
+            "pru_note": record["pru_note"],
             "h_type": _largest(self.guide.h_type) if self.guide else None,
             "x_type": _largest(self.guide.x_type) if self.guide else None,
-            "second_order_compensator": None if second is None else
-            second["vertical_class"] in _COMPENSATOR or second["horizontal_class"] in _COMPENSATOR,
+            "second_order_compensator": None
+            if second is None
+            else second["vertical_class"] in _COMPENSATOR
+            or second["horizontal_class"] in _COMPENSATOR,
         }
 
 
@@ -100,20 +109,28 @@ class FamilyResult:
 
     def to_dict(self) -> dict:
         """What ``balance family --format json`` writes (SI; see the README)."""
-        return {"balance_version": DOCUMENT_VERSION, "name": self.name, "config": self.config,
-                "objective": self.objective, "pitch_m": self.pitch_m,
-                "guide_forces_from": "gas and inertia" if self.has_gas else "inertia only",
-                "power_per_cylinder_kW": None if self.power_per_cylinder_w is None
-                else self.power_per_cylinder_w / 1e3,
-                "samples": self.samples, "max_order": self.max_order,
-                "rows": [r.to_dict() for r in self.rows]}
+        return {
+            "balance_version": DOCUMENT_VERSION,
+            "name": self.name,
+            "config": self.config,
+            "objective": self.objective,
+            "pitch_m": self.pitch_m,
+            "guide_forces_from": "gas and inertia" if self.has_gas else "inertia only",
+            "power_per_cylinder_kW": None
+            if self.power_per_cylinder_w is None
+            else self.power_per_cylinder_w / 1e3,
+            "samples": self.samples,
+            "max_order": self.max_order,
+            "rows": [r.to_dict() for r in self.rows],
+        }
 
 
 def _counts(cylinders):
     counts = list(cylinders) if isinstance(cylinders, (list, tuple, range)) else None
     if not counts:
-        raise AnalysisError(f"must be numbers of cylinders from 2 to 24, got {cylinders!r}",
-                            "cylinders")
+        raise AnalysisError(
+            f"must be numbers of cylinders from 2 to 24, got {cylinders!r}", "cylinders"
+        )
     return sorted({whole(n, "cylinders", 2, 24) for n in counts})
 
 
@@ -140,12 +157,19 @@ def _even_phases(order, n):
     return [(-fired[c]) % 360.0 for c in range(1, n + 1)]
 
 
-def family(configuration, cylinders: Sequence[int], objective: str | None = None,
-           pitch_m: float | None = None, power_per_cylinder_w: float | None = None,
-           firing_orders: Mapping[int, Sequence[int]] | None = None,
-           samples: int = DEFAULT_SAMPLES, max_order: int = DEFAULT_MAX_ORDER,
-           workers: int | None = None, limit: int | None = None,
-           progress: Callable[[int, int], None] | None = None) -> FamilyResult:
+def family(
+    configuration,
+    cylinders: Sequence[int],
+    objective: str | None = None,
+    pitch_m: float | None = None,
+    power_per_cylinder_w: float | None = None,
+    firing_orders: Mapping[int, Sequence[int]] | None = None,
+    samples: int = DEFAULT_SAMPLES,
+    max_order: int = DEFAULT_MAX_ORDER,
+    workers: int | None = None,
+    limit: int | None = None,
+    progress: Callable[[int, int], None] | None = None,
+) -> FamilyResult:
     """The family table of an in-line engine: its one cylinder at every number of cylinders.
 
     Parameters
@@ -178,25 +202,41 @@ def family(configuration, cylinders: Sequence[int], objective: str | None = None
     counts = _counts(cylinders)
     if isinstance(configuration, (str, os.PathLike)):
         configuration = read_configuration(configuration)
-    instance(configuration, Configuration, "configuration",
-             hint=" (balance.read_configuration(path), or a file's path)")
+    instance(
+        configuration,
+        Configuration,
+        "configuration",
+        hint=" (balance.read_configuration(path), or a file's path)",
+    )
     path = configuration.path
     if power_per_cylinder_w is not None:
         power_per_cylinder_w = positive(power_per_cylinder_w, "power_per_cylinder_w", "power")
-    instance(firing_orders, (dict, type(None)), "firing_orders",
-             hint=" of cylinder counts to firing orders")
+    instance(
+        firing_orders,
+        (dict, type(None)),
+        "firing_orders",
+        hint=" of cylinder counts to firing orders",
+    )
     data = configuration.as_template().data
     template = build(data, path, template=True)
-    if template.is_rotary or len(template.bank_angles_rad) != 1 or "cylinders" in data \
-            or template.has_several_crankshafts:
-        raise AnalysisError("must be an in-line template (one bank, one crankshaft, no "
-                            "[[cylinders]] list): a family is the same cylinder repeated at a "
-                            "pitch", "template")
+    if (
+        template.is_rotary
+        or len(template.bank_angles_rad) != 1
+        or "cylinders" in data
+        or template.has_several_crankshafts
+    ):
+        raise AnalysisError(
+            "must be an in-line template (one bank, one crankshaft, no "
+            "[[cylinders]] list): a family is the same cylinder repeated at a "
+            "pitch",
+            "template",
+        )
     zs = sorted(t.z_m for t in template.throws)
     if pitch_m is None:
         if len(zs) < 2 or zs[-1] == zs[0]:
-            raise AnalysisError("has no pitch to repeat: give two or more throws apart, or "
-                                "the pitch", "pitch_m")
+            raise AnalysisError(
+                "has no pitch to repeat: give two or more throws apart, or the pitch", "pitch_m"
+            )
         pitch_m = (zs[-1] - zs[0]) / (len(zs) - 1)
     pitch_m = positive(pitch_m, "pitch_m", "length")
     if power_per_cylinder_w is None and template.power_w is not None:
@@ -204,14 +244,23 @@ def family(configuration, cylinders: Sequence[int], objective: str | None = None
     firing_orders = dict(firing_orders or {})
     for n, order in firing_orders.items():
         if n not in counts:
-            raise AnalysisError(f"gives {n} cylinders, which are not among the numbers asked "
-                                f"({', '.join(map(str, counts))})", "firing_orders")
+            raise AnalysisError(
+                f"gives {n} cylinders, which are not among the numbers asked "
+                f"({', '.join(map(str, counts))})",
+                "firing_orders",
+            )
         if sorted(order) != list(range(1, n + 1)):
-            raise AnalysisError(f"{n}: {list(order)} is not a firing order of {n} cylinders: "
-                                f"name each of 1 to {n} once", "firing_orders")
+            raise AnalysisError(
+                f"{n}: {list(order)} is not a firing order of {n} cylinders: "
+                f"name each of 1 to {n} once",
+                "firing_orders",
+            )
         if template.cycle != 2:
-            raise AnalysisError("fit a two-stroke only (its firing order at even intervals "
-                                "fixes the crank; a four-stroke's does not)", "firing_orders")
+            raise AnalysisError(
+                "fit a two-stroke only (its firing order at even intervals "
+                "fixes the crank; a four-stroke's does not)",
+                "firing_orders",
+            )
     objective = objective or default_objective(data, path, samples, max_order)
     rows = []
     for done, n in enumerate(counts):
@@ -229,13 +278,21 @@ def family(configuration, cylinders: Sequence[int], objective: str | None = None
         else:
             engine = build(case, path, template=True)
             try:
-                found = search(engine, objective, top=1, workers=workers,
-                               limit=limit or DEFAULT_LIMIT, samples=samples, max_order=max_order)
+                found = search(
+                    engine,
+                    objective,
+                    top=1,
+                    workers=workers,
+                    limit=limit or DEFAULT_LIMIT,
+                    samples=samples,
+                    max_order=max_order,
+                )
             except BalanceError as exc:
                 if getattr(exc, "parameter", None) != "limit":
                     raise
-                found = search(engine, objective, top=1, heuristic=True, samples=samples,
-                               max_order=max_order)
+                found = search(
+                    engine, objective, top=1, heuristic=True, samples=samples, max_order=max_order
+                )
             best = found.arrangements[0]
             result, method, score = best.result, found.method, best.score
         # an n-cylinder's H-type moment lives at order n: analyse the torques that far
@@ -244,6 +301,14 @@ def family(configuration, cylinders: Sequence[int], objective: str | None = None
         rows.append(FamilyRow(n, method, score, result, guide))
         if progress is not None:
             progress(done + 1, len(counts))
-    return FamilyResult(data.get("name", ""), path, objective, pitch_m, power_per_cylinder_w,
-                        tuple(rows), samples, max_order, template.gas is not None)
-
+    return FamilyResult(
+        data.get("name", ""),
+        path,
+        objective,
+        pitch_m,
+        power_per_cylinder_w,
+        tuple(rows),
+        samples,
+        max_order,
+        template.gas is not None,
+    )

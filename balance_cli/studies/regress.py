@@ -21,14 +21,22 @@ from pathlib import Path
 from typing import Any
 
 from ..analysis.results import Comparison, analyse, compare
-from ..output import DOCUMENT_VERSION, READABLE_VERSIONS
-from ..errors import AnalysisError, BalanceError, RegressError
 from ..analysis.shaking import check_settings
+from ..errors import AnalysisError, RegressError
+from ..output import DOCUMENT_VERSION, READABLE_VERSIONS
 from ..tolerances import FIRING_CHANGE_DEG, NOISE_FLOOR, PHASE_CHANGE_DEG, PHASE_FLOOR
 from ..units import angle_change
 
-__all__ = ["Moved", "Regression", "regression", "check_baseline", "check_rtol",
-           "baseline_configs", "compared_like", "reanalyse"]
+__all__ = [
+    "Moved",
+    "Regression",
+    "regression",
+    "check_baseline",
+    "check_rtol",
+    "baseline_configs",
+    "compared_like",
+    "reanalyse",
+]
 
 #: what a quantity is: a value compared by size, a phase (period 360°) or an axis (period 180°)
 _PERIODS = {"value": None, "phase": 360.0, "axis": 180.0}
@@ -67,9 +75,16 @@ class Moved:
         return change / abs(self.baseline)
 
     def to_dict(self) -> dict:
-        return {"engine": self.engine, "order": self.order, "quantity": self.quantity,
-                "baseline": self.baseline, "now": self.now, "change": self.change,
-                "relative_change": self.relative_change, "tolerance": self.tolerance}
+        return {
+            "engine": self.engine,
+            "order": self.order,
+            "quantity": self.quantity,
+            "baseline": self.baseline,
+            "now": self.now,
+            "change": self.change,
+            "relative_change": self.relative_change,
+            "tolerance": self.tolerance,
+        }
 
 
 @dataclass(frozen=True)
@@ -96,10 +111,16 @@ class Regression:
         return [row for row in self.rows if row.engine == engine]
 
     def to_dict(self) -> dict:
-        return {"balance_version": DOCUMENT_VERSION, "baseline": self.baseline_path,
-                "rtol": self.rtol, "moved": self.moved, "engines_checked": list(self.checked),
-                "rows": [row.to_dict() for row in self.rows], "added": list(self.added),
-                "removed": list(self.removed)}
+        return {
+            "balance_version": DOCUMENT_VERSION,
+            "baseline": self.baseline_path,
+            "rtol": self.rtol,
+            "moved": self.moved,
+            "engines_checked": list(self.checked),
+            "rows": [row.to_dict() for row in self.rows],
+            "added": list(self.added),
+            "removed": list(self.removed),
+        }
 
 
 def _number(value):
@@ -107,8 +128,10 @@ def _number(value):
 
 
 def _fail(where, problem):
-    raise RegressError(f"{where}: {problem}; write the baseline again with balance compare "
-                       "FILE|DIR --format json -o BASELINE.json")
+    raise RegressError(
+        f"{where}: {problem}; write the baseline again with balance compare "
+        "FILE|DIR --format json -o BASELINE.json"
+    )
 
 
 def check_baseline(document, path="<baseline>"):
@@ -119,9 +142,11 @@ def check_baseline(document, path="<baseline>"):
             _fail(path, f"not a `balance compare --format json` document (no {key!r})")
     version = document["balance_version"]
     if type(version) is not int or version not in READABLE_VERSIONS:
-        raise RegressError(f"{path}: written by balance_version {version!r}, but this balance "
-                           f"reads versions {', '.join(map(str, READABLE_VERSIONS))}; write the "
-                           "baseline again with this version")
+        raise RegressError(
+            f"{path}: written by balance_version {version!r}, but this balance "
+            f"reads versions {', '.join(map(str, READABLE_VERSIONS))}; write the "
+            "baseline again with this version"
+        )
     for key in ("samples", "max_order"):
         if isinstance(document.get(key), bool) or not isinstance(document.get(key), int):
             _fail(path, f"has no whole number {key!r}")
@@ -140,38 +165,57 @@ def check_baseline(document, path="<baseline>"):
         where = f"{path}: engines[{i}]"
         if not isinstance(engine, dict):
             _fail(where, "is not an object")
-        missing = sorted({"name", "config", "cylinders", "unit_force_N", "firing", "orders"}
-                         - set(engine))
+        missing = sorted(
+            {"name", "config", "cylinders", "unit_force_N", "firing", "orders"} - set(engine)
+        )
         if missing:
             _fail(where, f"lacks {', '.join(missing)}")
         if not isinstance(engine["name"], str) or not isinstance(engine["config"], str):
             _fail(where, "has a name or config that is not text")
-        if not _number(engine["unit_force_N"]) or not _number(engine["cylinders"]) \
-                or engine["unit_force_N"] <= 0 or engine["cylinders"] <= 0:
+        if (
+            not _number(engine["unit_force_N"])
+            or not _number(engine["cylinders"])
+            or engine["unit_force_N"] <= 0
+            or engine["cylinders"] <= 0
+        ):
             _fail(where, "has no positive unit_force_N and cylinders")
         firing = engine["firing"]
-        if not isinstance(firing, dict) or not isinstance(firing.get("order"), list) \
-                or not all(_number(a) for a in firing.get("angles_deg", [])):
+        if (
+            not isinstance(firing, dict)
+            or not isinstance(firing.get("order"), list)
+            or not all(_number(a) for a in firing.get("angles_deg", []))
+        ):
             _fail(where, "has no firing order and angles")
         orders = engine["orders"]
         if not isinstance(orders, list):
             _fail(where, "has no list of orders")
         for o in orders:
             parts = [o.get(part) for part in ("force", "moment")] if isinstance(o, dict) else []
-            if not isinstance(o, dict) or not _number(o.get("order")) \
-                    or not all(isinstance(p, dict) and all(_number(v) or k == "axis_deg" and v is None
-                                                           for k, v in p.items())
-                               for p in parts) or len(parts) != 2:
-                _fail(where, "has an order that is not {order, force: {...}, moment: {...}} of "
-                             "finite numbers (an axis may be null)")
+            if (
+                not isinstance(o, dict)
+                or not _number(o.get("order"))
+                or not all(
+                    isinstance(p, dict)
+                    and all(_number(v) or k == "axis_deg" and v is None for k, v in p.items())
+                    for p in parts
+                )
+                or len(parts) != 2
+            ):
+                _fail(
+                    where,
+                    "has an order that is not {order, force: {...}, moment: {...}} of "
+                    "finite numbers (an axis may be null)",
+                )
         listed = [o["order"] for o in orders]
         if len(set(listed)) != len(listed):
             _fail(where, "lists an order twice")
         names.append(engine["name"])
     twice = sorted({n for n in names if names.count(n) > 1})
     if twice:
-        raise RegressError(f"{path}: names {twice[0]!r} twice; engines are matched by name, so "
-                           "give each configuration its own name")
+        raise RegressError(
+            f"{path}: names {twice[0]!r} twice; engines are matched by name, so "
+            "give each configuration its own name"
+        )
 
 
 def baseline_configs(document, path):
@@ -187,9 +231,11 @@ def baseline_configs(document, path):
                 files.append(candidate)
                 break
         else:
-            raise RegressError(f"{path}: names the configuration {engine['config']!r} of "
-                               f"{engine['name']!r}, which no longer exists; restore it, or give "
-                               "the files to check (and update the baseline to record the change)")
+            raise RegressError(
+                f"{path}: names the configuration {engine['config']!r} of "
+                f"{engine['name']!r}, which no longer exists; restore it, or give "
+                "the files to check (and update the baseline to record the change)"
+            )
     return files
 
 
@@ -202,8 +248,9 @@ def compared_like(document, results) -> Comparison:
 
 def reanalyse(document, engines) -> Comparison:
     """``engines`` analysed with the baseline's samples and orders and compared like it."""
-    return compared_like(document, [analyse(e, document["samples"], document["max_order"])
-                                    for e in engines])
+    return compared_like(
+        document, [analyse(e, document["samples"], document["max_order"]) for e in engines]
+    )
 
 
 def check_rtol(rtol):
@@ -234,22 +281,31 @@ def regression(baseline, current, rtol=0.0, baseline_path="<baseline>") -> Regre
     check_rtol(rtol)
     now = current.to_dict() if isinstance(current, Comparison) else current
     if not isinstance(now, dict):
-        raise RegressError(f"current must be a Comparison or its to_dict(), got "
-                           f"{type(current).__name__}")
+        raise RegressError(
+            f"current must be a Comparison or its to_dict(), got {type(current).__name__}"
+        )
     for key in ("samples", "max_order"):
         if now.get(key) != baseline[key]:
-            raise RegressError(f"the engines were analysed with {key} = {now.get(key)!r}, the "
-                               f"baseline with {baseline[key]!r}; analyse them alike "
-                               "(regress.reanalyse does)")
+            raise RegressError(
+                f"the engines were analysed with {key} = {now.get(key)!r}, the "
+                f"baseline with {baseline[key]!r}; analyse them alike "
+                "(regress.reanalyse does)"
+            )
     old = {e["name"]: e for e in baseline["engines"]}
     new = {e["name"]: e for e in now["engines"]}
     rows = []
     for name in [n for n in new if n in old]:
         rows += _engine_rows(name, old[name], new[name], rtol)
     configs = {n: e["config"] for n, e in old.items()} | {n: e["config"] for n, e in new.items()}
-    return Regression(baseline_path, float(rtol), tuple(rows),
-                      tuple(n for n in new if n not in old), tuple(n for n in old if n not in new),
-                      tuple(n for n in new if n in old), configs)
+    return Regression(
+        baseline_path,
+        float(rtol),
+        tuple(rows),
+        tuple(n for n in new if n not in old),
+        tuple(n for n in old if n not in new),
+        tuple(n for n in new if n in old),
+        configs,
+    )
 
 
 def _engine_rows(name, a, b, rtol):
@@ -278,8 +334,12 @@ def _engine_rows(name, a, b, rtol):
 
     for key in ("cylinders", "cycle", "frame"):
         same(key, a.get(key), b.get(key))
-    number("speed_rpm", a.get("speed_rpm"), b.get("speed_rpm"),
-           NOISE_FLOOR * abs(a.get("speed_rpm") or 0.0))
+    number(
+        "speed_rpm",
+        a.get("speed_rpm"),
+        b.get("speed_rpm"),
+        NOISE_FLOOR * abs(a.get("speed_rpm") or 0.0),
+    )
     number("unit_force_N", a["unit_force_N"], b["unit_force_N"], NOISE_FLOOR * scale)
     for key in ("largest_resultant_N", "counterweighted_resultant_N"):
         number(key, a.get(key), b.get(key), NOISE_FLOOR * scale)
@@ -300,8 +360,16 @@ def _engine_rows(name, a, b, rtol):
     orders_b = {o["order"]: o for o in b["orders"]}
     for k in sorted(set(orders_a) | set(orders_b)):
         if k not in orders_a or k not in orders_b:
-            rows.append(Moved(name, k, "order", "listed" if k in orders_a else "absent",
-                              "listed" if k in orders_b else "absent", None))
+            rows.append(
+                Moved(
+                    name,
+                    k,
+                    "order",
+                    "listed" if k in orders_a else "absent",
+                    "listed" if k in orders_b else "absent",
+                    None,
+                )
+            )
             continue
         for part, unit in (("force", "N"), ("moment", "Nm")):
             x, y = orders_a[k][part], orders_b[k][part]
@@ -311,17 +379,32 @@ def _engine_rows(name, a, b, rtol):
                 if key in x and key in y:
                     number(f"{part}.{key}", x[key], y[key], NOISE_FLOOR * scale, order=k)
             for key in ("forward", "backward", "vertical", "horizontal"):
-                if key in ("vertical", "horizontal") and (f"{key}_{unit}" not in x
-                                                          or f"{key}_{unit}" not in y):
+                if key in ("vertical", "horizontal") and (
+                    f"{key}_{unit}" not in x or f"{key}_{unit}" not in y
+                ):
                     continue
                 size = max(x.get(f"{key}_{unit}", 0.0), y.get(f"{key}_{unit}", 0.0))
                 if size >= PHASE_FLOOR * scale:
-                    number(f"{part}.{key}_deg", x.get(f"{key}_deg"), y.get(f"{key}_deg"),
-                           PHASE_CHANGE_DEG, "phase", k)
+                    number(
+                        f"{part}.{key}_deg",
+                        x.get(f"{key}_deg"),
+                        y.get(f"{key}_deg"),
+                        PHASE_CHANGE_DEG,
+                        "phase",
+                        k,
+                    )
             # an axis exists where the ellipse is not a circle: max − min above the floor
-            size = min(x.get(f"max_{unit}", 0.0) - x.get(f"min_{unit}", 0.0),
-                       y.get(f"max_{unit}", 0.0) - y.get(f"min_{unit}", 0.0))
+            size = min(
+                x.get(f"max_{unit}", 0.0) - x.get(f"min_{unit}", 0.0),
+                y.get(f"max_{unit}", 0.0) - y.get(f"min_{unit}", 0.0),
+            )
             if size >= PHASE_FLOOR * scale:
-                number(f"{part}.axis_deg", x.get("axis_deg"), y.get("axis_deg"), PHASE_CHANGE_DEG,
-                       "axis", k)
+                number(
+                    f"{part}.axis_deg",
+                    x.get("axis_deg"),
+                    y.get("axis_deg"),
+                    PHASE_CHANGE_DEG,
+                    "axis",
+                    k,
+                )
     return rows

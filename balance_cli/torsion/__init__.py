@@ -5,10 +5,28 @@ forced response (:mod:`.response`)."""
 from .adapter import natural_frequencies, require_opentorsion
 from .excitation import phase_vector_sum
 from .line import throw_inertias
-from .response import (DEFAULT_MAX_ORDER, MAX_SPEEDS, Critical, Mode, TorsionResult,
-                       default_speeds_rpm, first_mode_amplitudes, torsional_vibration)
+from .response import (
+    DEFAULT_MAX_ORDER,
+    MAX_SPEEDS,
+    Critical,
+    Mode,
+    TorsionResult,
+    default_speeds_rpm,
+    first_mode_amplitudes,
+    torsional_vibration,
+)
 
-__all__ = ["require_opentorsion", "first_mode_amplitudes", "Mode", "Critical", "TorsionResult",
-           "torsional_vibration", "throw_inertias", "phase_vector_sum", "natural_frequencies",
-           "default_speeds_rpm", "DEFAULT_MAX_ORDER", "MAX_SPEEDS"]
-
+__all__ = [
+    "require_opentorsion",
+    "first_mode_amplitudes",
+    "Mode",
+    "Critical",
+    "TorsionResult",
+    "torsional_vibration",
+    "throw_inertias",
+    "phase_vector_sum",
+    "natural_frequencies",
+    "default_speeds_rpm",
+    "DEFAULT_MAX_ORDER",
+    "MAX_SPEEDS",
+]

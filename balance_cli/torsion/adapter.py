@@ -6,8 +6,8 @@ every torsional analysis stops with one line naming the extra to install.
 
 import numpy as np
 
-from ..errors import AnalysisError, TorsionUnavailable
 from ..about import install_hint
+from ..errors import AnalysisError, TorsionUnavailable
 
 __all__ = ["require_opentorsion", "assembly_of", "natural_frequencies"]
 
@@ -20,21 +20,29 @@ def require_opentorsion():
     try:
         import opentorsion
     except ImportError:
-        raise TorsionUnavailable(f"balance torsion needs openTorsion: {install_hint('torsion')}") \
-            from None
+        raise TorsionUnavailable(
+            f"balance torsion needs openTorsion: {install_hint('torsion')}"
+        ) from None
     return opentorsion
 
 
 def assembly_of(line):
     """openTorsion's Assembly of ``line``: one Disk per node, one massless Shaft per section."""
     ot = require_opentorsion()
-    disks = [ot.Disk(i, float(j), c=float(c)) for i, (j, c) in
-             enumerate(zip(line.inertia, line.node_damping))]
-    shafts = [ot.Shaft(i, i + 1, None, None, k=float(k), I=0.0, c=float(c))
-              for i, (k, c) in enumerate(zip(line.stiffness, line.section_damping))]
+    disks = [
+        ot.Disk(i, float(j), c=float(c))
+        for i, (j, c) in enumerate(zip(line.inertia, line.node_damping))
+    ]
+    shafts = [
+        ot.Shaft(i, i + 1, None, None, k=float(k), I=0.0, c=float(c))
+        for i, (k, c) in enumerate(zip(line.stiffness, line.section_damping))
+    ]
     if not shafts:
-        raise AnalysisError("its shaft line has a single inertia: nothing can twist (give more "
-                            "throws, a front end or a flywheel)", "engine")
+        raise AnalysisError(
+            "its shaft line has a single inertia: nothing can twist (give more "
+            "throws, a front end or a flywheel)",
+            "engine",
+        )
     return ot.Assembly(shafts, disk_elements=disks)
 
 

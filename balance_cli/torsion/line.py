@@ -23,39 +23,54 @@ def torsion_model(engine):
     instance(engine, Engine, "engine", hint=" (balance.load gives one)")
     model = engine.torsion
     if model is None:
-        raise AnalysisError(f"{engine.name!r} has no [torsion] table: give its shaft line's "
-                            "inertias and stiffnesses (see the README, Torsional vibration)",
-                            "engine")
+        raise AnalysisError(
+            f"{engine.name!r} has no [torsion] table: give its shaft line's "
+            "inertias and stiffnesses (see the README, Torsional vibration)",
+            "engine",
+        )
     if engine.is_rotary:
         raise AnalysisError("is a rotary: its crankshaft does not turn", "engine")
     n = len(engine.throws)
     check_values(model)
-    if len(model.stiffness_nm_rad) != n - 1 or len(model.throw_damping_nms_rad) != n or (
-            model.throw_inertia_kgm2 is not None and len(model.throw_inertia_kgm2) != n):
-        raise AnalysisError(f"its [torsion] table must give one inertia and damping per throw "
-                            f"({n}) and one stiffness per section between throws ({n - 1})",
-                            "engine")
+    if (
+        len(model.stiffness_nm_rad) != n - 1
+        or len(model.throw_damping_nms_rad) != n
+        or (model.throw_inertia_kgm2 is not None and len(model.throw_inertia_kgm2) != n)
+    ):
+        raise AnalysisError(
+            f"its [torsion] table must give one inertia and damping per throw "
+            f"({n}) and one stiffness per section between throws ({n - 1})",
+            "engine",
+        )
     return model
 
 
 def check_values(model):
     """A model built in code is checked as the configuration's reader checks a file's."""
     disks = list(model.front) + [d for d in (model.flywheel, model.load) if d is not None]
-    groups = [("throw_inertia_kgm2", model.throw_inertia_kgm2 or (), False),
-              ("web_inertia_kgm2", (model.web_inertia_kgm2,), True),
-              ("stiffness_nm_rad", model.stiffness_nm_rad, False),
-              ("throw_damping_nms_rad", model.throw_damping_nms_rad, True),
-              ("loss_factor", (model.loss_factor,), True),
-              ("front, flywheel and load inertias", [d.inertia_kgm2 for d in disks], False),
-              ("front, flywheel and load stiffnesses", [d.stiffness_nm_rad for d in disks], False),
-              ("front, flywheel and load damping", [d.damping_nms_rad for d in disks], True)]
+    groups = [
+        ("throw_inertia_kgm2", model.throw_inertia_kgm2 or (), False),
+        ("web_inertia_kgm2", (model.web_inertia_kgm2,), True),
+        ("stiffness_nm_rad", model.stiffness_nm_rad, False),
+        ("throw_damping_nms_rad", model.throw_damping_nms_rad, True),
+        ("loss_factor", (model.loss_factor,), True),
+        ("front, flywheel and load inertias", [d.inertia_kgm2 for d in disks], False),
+        ("front, flywheel and load stiffnesses", [d.stiffness_nm_rad for d in disks], False),
+        ("front, flywheel and load damping", [d.damping_nms_rad for d in disks], True),
+    ]
     for name, values, zero_ok in groups:
         for value in values:
-            if not (isinstance(value, (int, float, np.floating)) and math.isfinite(value)
-                    and (value >= 0 if zero_ok else value > 0)):
-                raise AnalysisError(f"of the [torsion] model must be finite and "
-                                    f"{'not negative' if zero_ok else 'above zero'}, got "
-                                    f"{value!r}", name)
+            if not (
+                isinstance(value, (int, float, np.floating))
+                and math.isfinite(value)
+                and (value >= 0 if zero_ok else value > 0)
+            ):
+                raise AnalysisError(
+                    f"of the [torsion] model must be finite and "
+                    f"{'not negative' if zero_ok else 'above zero'}, got "
+                    f"{value!r}",
+                    name,
+                )
 
 
 def throw_inertias(engine, samples=DEFAULT_SAMPLES) -> np.ndarray:
@@ -70,8 +85,9 @@ def throw_inertias(engine, samples=DEFAULT_SAMPLES) -> np.ndarray:
     out = []
     for index in range(len(engine.throws)):
         # the rows riding on this throw: μ is a sum over the parts
-        mu, _ = reduced_mass_and_momentum(engine, state.parts(masses.throw_index == index,
-                                                              rods.throw_index == index))
+        mu, _ = reduced_mass_and_momentum(
+            engine, state.parts(masses.throw_index == index, rods.throw_index == index)
+        )
         # the shaft's own inertia is the user's, in the webs
         out.append(float(np.mean(mu.real)) - engine.shaft_inertia_kgm2 + model.web_inertia_kgm2)
     return np.array(out)
@@ -82,11 +98,11 @@ class ShaftLine:
     """The shaft line, free end first: names, inertias, section stiffnesses and damping."""
 
     names: tuple
-    inertia: np.ndarray         # kg·m², per node
-    stiffness: np.ndarray       # N·m/rad, per section (node i to i + 1)
+    inertia: np.ndarray  # kg·m², per node
+    stiffness: np.ndarray  # N·m/rad, per section (node i to i + 1)
     section_damping: np.ndarray  # N·m·s/rad, per section
-    node_damping: np.ndarray    # N·m·s/rad, per node
-    throw_nodes: tuple          # node of throw j (index j)
+    node_damping: np.ndarray  # N·m·s/rad, per node
+    throw_nodes: tuple  # node of throw j (index j)
 
 
 def shaft_line(engine, samples) -> ShaftLine:
@@ -117,5 +133,11 @@ def shaft_line(engine, samples) -> ShaftLine:
             node_c.append(0.0)
             stiffness.append(disk.stiffness_nm_rad)
             section_c.append(disk.damping_nms_rad)
-    return ShaftLine(tuple(names), np.array(inertia), np.array(stiffness), np.array(section_c),
-                 np.array(node_c), tuple(range(first, first + len(throws))))
+    return ShaftLine(
+        tuple(names),
+        np.array(inertia),
+        np.array(stiffness),
+        np.array(section_c),
+        np.array(node_c),
+        tuple(range(first, first + len(throws))),
+    )

@@ -29,8 +29,16 @@ from .adapter import assembly_of, natural_frequencies, require_opentorsion
 from .excitation import excitation, phase_vector_sum
 from .line import shaft_line, torsion_model
 
-__all__ = ["Mode", "Critical", "TorsionResult", "torsional_vibration", "first_mode_amplitudes",
-           "default_speeds_rpm", "DEFAULT_MAX_ORDER", "MAX_SPEEDS"]
+__all__ = [
+    "Mode",
+    "Critical",
+    "TorsionResult",
+    "torsional_vibration",
+    "first_mode_amplitudes",
+    "default_speeds_rpm",
+    "DEFAULT_MAX_ORDER",
+    "MAX_SPEEDS",
+]
 
 #: the default speed range, as fractions of the engine's own speed, and its number of speeds
 DEFAULT_SPEED_RANGE = (0.2, 1.2)
@@ -52,18 +60,21 @@ class Mode:
 
     number: int
     frequency_hz: float
-    shape: np.ndarray        # per node
+    shape: np.ndarray  # per node
     throw_amplitudes: np.ndarray
     phase_vector_sums: dict  # order -> |Σ β e^{ikφ}|
 
     def to_dict(self, names) -> dict:
-        return {"mode": self.number, "frequency_Hz": self.frequency_hz,
-                "frequency_cpm": 60.0 * self.frequency_hz,
-                "shape": [{"node": name, "amplitude": float(a)}
-                          for name, a in zip(names, self.shape)],
-                "throw_amplitudes": [float(a) for a in self.throw_amplitudes],
-                "phase_vector_sums": [{"order": k, "sum": v}
-                                      for k, v in self.phase_vector_sums.items()]}
+        return {
+            "mode": self.number,
+            "frequency_Hz": self.frequency_hz,
+            "frequency_cpm": 60.0 * self.frequency_hz,
+            "shape": [{"node": name, "amplitude": float(a)} for name, a in zip(names, self.shape)],
+            "throw_amplitudes": [float(a) for a in self.throw_amplitudes],
+            "phase_vector_sums": [
+                {"order": k, "sum": v} for k, v in self.phase_vector_sums.items()
+            ],
+        }
 
 
 @dataclass(frozen=True)
@@ -78,8 +89,13 @@ class Critical:
     major: bool
 
     def to_dict(self) -> dict:
-        return {"mode": self.mode, "order": self.order, "speed_rpm": self.speed_rpm,
-                "phase_vector_sum": self.phase_vector_sum, "major": self.major}
+        return {
+            "mode": self.mode,
+            "order": self.order,
+            "speed_rpm": self.speed_rpm,
+            "phase_vector_sum": self.phase_vector_sum,
+            "major": self.major,
+        }
 
 
 @dataclass(frozen=True)
@@ -146,40 +162,73 @@ class TorsionResult:
         out = []
         for s, name in enumerate(self.sections):
             i = int(np.argmax(self.torque_nm[:, s]))
-            out.append((name, float(self.torque_nm[i, s]), float(self.speeds_rpm[i]),
-                        None if self.stress_pa is None else float(self.stress_pa[i, s])))
+            out.append(
+                (
+                    name,
+                    float(self.torque_nm[i, s]),
+                    float(self.speeds_rpm[i]),
+                    None if self.stress_pa is None else float(self.stress_pa[i, s]),
+                )
+            )
         return out
 
     def to_dict(self) -> dict:
         """This engine's entry of ``torsion --format json`` (SI units; see the README)."""
         engine = self.engine
         return {
-            "name": engine.name, "config": engine.config_path, "cycle": engine.cycle,
+            "name": engine.name,
+            "config": engine.config_path,
+            "cycle": engine.cycle,
             "excitation": "gas and inertia" if self.with_gas else "inertia",
-            "nodes": [{"node": n, "inertia_kgm2": float(j)}
-                      for n, j in zip(self.nodes, self.inertia_kgm2)],
-            "sections": [{"section": n, "stiffness_Nm_per_rad": float(k)}
-                         for n, k in zip(self.sections, self.stiffness_nm_rad)],
+            "nodes": [
+                {"node": n, "inertia_kgm2": float(j)} for n, j in zip(self.nodes, self.inertia_kgm2)
+            ],
+            "sections": [
+                {"section": n, "stiffness_Nm_per_rad": float(k)}
+                for n, k in zip(self.sections, self.stiffness_nm_rad)
+            ],
             "modes": [m.to_dict(self.nodes) for m in self.modes],
             "criticals": [c.to_dict() for c in self.criticals],
-            "largest": [{"section": n, "torque_Nm": t, "speed_rpm": v, "stress_Pa": s}
-                        for n, t, v, s in self.largest()],
-            "response": [{
-                "speed_rpm": float(v),
-                "criticals": [{"mode": c.mode, "order": c.order} for c in self.near(v)],
-                "free_end_deg": float(self.free_end_deg[i]),
-                "free_end_orders": ([] if self.free_end_order_deg is None else
-                                    [{"order": float(k),
-                                      "amplitude_deg": float(self.free_end_order_deg[i, o])}
-                                     for o, k in enumerate(self.orders)]),
-                "sections": [{"section": name, "torque_Nm": float(self.torque_nm[i, s]),
-                              "stress_Pa": (None if self.stress_pa is None
-                                            else float(self.stress_pa[i, s])),
-                              "orders": [{"order": float(k),
-                                          "torque_Nm": float(self.order_torque_nm[i, s, o])}
-                                         for o, k in enumerate(self.orders)]}
-                             for s, name in enumerate(self.sections)]}
-                for i, v in enumerate(self.speeds_rpm)],
+            "largest": [
+                {"section": n, "torque_Nm": t, "speed_rpm": v, "stress_Pa": s}
+                for n, t, v, s in self.largest()
+            ],
+            "response": [
+                {
+                    "speed_rpm": float(v),
+                    "criticals": [{"mode": c.mode, "order": c.order} for c in self.near(v)],
+                    "free_end_deg": float(self.free_end_deg[i]),
+                    "free_end_orders": (
+                        []
+                        if self.free_end_order_deg is None
+                        else [
+                            {
+                                "order": float(k),
+                                "amplitude_deg": float(self.free_end_order_deg[i, o]),
+                            }
+                            for o, k in enumerate(self.orders)
+                        ]
+                    ),
+                    "sections": [
+                        {
+                            "section": name,
+                            "torque_Nm": float(self.torque_nm[i, s]),
+                            "stress_Pa": (
+                                None if self.stress_pa is None else float(self.stress_pa[i, s])
+                            ),
+                            "orders": [
+                                {
+                                    "order": float(k),
+                                    "torque_Nm": float(self.order_torque_nm[i, s, o]),
+                                }
+                                for o, k in enumerate(self.orders)
+                            ],
+                        }
+                        for s, name in enumerate(self.sections)
+                    ],
+                }
+                for i, v in enumerate(self.speeds_rpm)
+            ],
         }
 
 
@@ -192,8 +241,14 @@ def default_speeds_rpm(engine) -> np.ndarray:
     return np.linspace(low * rpm, high * rpm, DEFAULT_SPEED_COUNT)
 
 
-def torsional_vibration(engine, speeds_rpm=None, max_order=DEFAULT_MAX_ORDER,
-            samples=DEFAULT_SAMPLES, pressure=None, bore_m=None) -> TorsionResult:
+def torsional_vibration(
+    engine,
+    speeds_rpm=None,
+    max_order=DEFAULT_MAX_ORDER,
+    samples=DEFAULT_SAMPLES,
+    pressure=None,
+    bore_m=None,
+) -> TorsionResult:
     """Modes, phase-vector sums, criticals and forced response of ``engine``'s [torsion]
     model over ``speeds_rpm`` (rpm; default :func:`default_speeds_rpm`), for orders up to
     ``max_order`` (½ orders too for a four-stroke).
@@ -216,19 +271,31 @@ def torsional_vibration(engine, speeds_rpm=None, max_order=DEFAULT_MAX_ORDER,
     except (TypeError, ValueError):
         raise AnalysisError(f"must be speeds in rpm, got {speeds_rpm!r}", "speeds_rpm") from None
     low_limit, high_limit = _SPEED_LIMITS_RPM
-    if speeds.size == 0 or speeds.size > MAX_SPEEDS or not np.all(np.isfinite(speeds)) \
-            or np.any(speeds < low_limit) or np.any(speeds > high_limit):
-        raise AnalysisError(f"must be 1 to {MAX_SPEEDS} speeds from {low_limit:g} to "
-                            f"{high_limit:g} rpm, got {speeds.size} from {np.min(speeds):g} to "
-                            f"{np.max(speeds):g}" if speeds.size else
-                            "must be one or more speeds, rpm", "speeds_rpm")
+    if (
+        speeds.size == 0
+        or speeds.size > MAX_SPEEDS
+        or not np.all(np.isfinite(speeds))
+        or np.any(speeds < low_limit)
+        or np.any(speeds > high_limit)
+    ):
+        raise AnalysisError(
+            f"must be 1 to {MAX_SPEEDS} speeds from {low_limit:g} to "
+            f"{high_limit:g} rpm, got {speeds.size} from {np.min(speeds):g} to "
+            f"{np.max(speeds):g}"
+            if speeds.size
+            else "must be one or more speeds, rpm",
+            "speeds_rpm",
+        )
     line = shaft_line(engine, samples)
     assembly = assembly_of(line)
     omega_n, vectors = natural_frequencies(assembly)
     if not omega_n.size:
-        raise AnalysisError("has no elastic mode: the shaft line's inertias and stiffnesses are "
-                            "too far apart for the eigen-solver (every frequency came out as a "
-                            "rigid-body turning); check the [torsion] values", "engine")
+        raise AnalysisError(
+            "has no elastic mode: the shaft line's inertias and stiffnesses are "
+            "too far apart for the eigen-solver (every frequency came out as a "
+            "rigid-body turning); check the [torsion] values",
+            "engine",
+        )
     throw_nodes = list(line.throw_nodes)
     model = engine.torsion
 
@@ -237,8 +304,11 @@ def torsional_vibration(engine, speeds_rpm=None, max_order=DEFAULT_MAX_ORDER,
     throw_of = [c.throw_index for c in engine.cylinders]
     orders, gas, inertia = excitation(engine, samples, max_order, pressure, bore_m)
     n_cyl = len(numbers)
-    major = {float(k): abs(abs(phase_vector_sum(np.ones(n_cyl), [fire[m] for m in numbers], k))
-                           - n_cyl) < _MAJOR * n_cyl for k in orders}
+    major = {
+        float(k): abs(abs(phase_vector_sum(np.ones(n_cyl), [fire[m] for m in numbers], k)) - n_cyl)
+        < _MAJOR * n_cyl
+        for k in orders
+    }
     modes, criticals = [], []
     low, high = speeds.min(), speeds.max()
     for i, (w, shape) in enumerate(zip(omega_n, vectors.T), 1):
@@ -247,8 +317,12 @@ def torsional_vibration(engine, speeds_rpm=None, max_order=DEFAULT_MAX_ORDER,
         scale = at_throws[biggest] if at_throws[biggest] else shape[np.argmax(np.abs(shape))]
         shape = shape / scale
         beta = shape[throw_nodes]
-        sums = {float(k): abs(phase_vector_sum([beta[t] for t in throw_of],
-                                               [fire[m] for m in numbers], k)) for k in orders}
+        sums = {
+            float(k): abs(
+                phase_vector_sum([beta[t] for t in throw_of], [fire[m] for m in numbers], k)
+            )
+            for k in orders
+        }
         modes.append(Mode(i, w / (2 * math.pi), shape, beta, sums))
         for k in orders:
             rpm = rad_s_to_rpm(w / k)
@@ -256,18 +330,32 @@ def torsional_vibration(engine, speeds_rpm=None, max_order=DEFAULT_MAX_ORDER,
                 criticals.append(Critical(i, float(k), rpm, sums[float(k)], major[float(k)]))
     criticals.sort(key=lambda c: c.speed_rpm)
 
-    order_torque, peak, free_end, free_orders = _response(engine, assembly, line,
-                                                          model.loss_factor, orders, gas,
-                                                          inertia, speeds)
+    order_torque, peak, free_end, free_orders = _response(
+        engine, assembly, line, model.loss_factor, orders, gas, inertia, speeds
+    )
     stress = None
     if model.shaft_diameter_m is not None:
         d, b = model.shaft_diameter_m, model.shaft_bore_m
         # τ = T·r/J_p with r = D/2 and J_p = π·(D⁴ − d⁴)/32
         stress = peak * (d / 2) / (math.pi * (d**4 - b**4) / 32)
     sections = tuple(f"{a}–{b}" for a, b in zip(line.names, line.names[1:]))
-    return TorsionResult(engine, line.names, sections, line.inertia, line.stiffness,
-                         tuple(modes), tuple(criticals), orders, speeds, order_torque, peak,
-                         free_end, stress, bool(np.any(gas)), free_orders)
+    return TorsionResult(
+        engine,
+        line.names,
+        sections,
+        line.inertia,
+        line.stiffness,
+        tuple(modes),
+        tuple(criticals),
+        orders,
+        speeds,
+        order_torque,
+        peak,
+        free_end,
+        stress,
+        bool(np.any(gas)),
+        free_orders,
+    )
 
 
 def _response(engine, assembly, line, loss_factor, orders, gas, inertia, speeds):
@@ -286,27 +374,30 @@ def _response(engine, assembly, line, loss_factor, orders, gas, inertia, speeds)
     k_sections = assembly.K
     c_func = None
     if loss_factor:
+
         def c_func(w):
             # relative damping: each section's c = loss_factor·k/Ω
             return base + loss_factor / w * k_sections
+
     q, _ = assembly.ss_response(u.reshape(n_nodes, -1), frequencies, C=base, C_func=c_func)
     q = q.reshape(n_nodes, len(speeds), n_orders)
     # a section's torque k·(θ_left − θ_right)
     twist = q[:-1] - q[1:]
-    torques = line.stiffness[:, None, None] * twist                 # section × speed × order
+    torques = line.stiffness[:, None, None] * twist  # section × speed × order
     amplitude = np.abs(torques).transpose(1, 0, 2)
     per_turn = engine.cycle_deg / 360.0
     # the waveform over one cycle, sampled finely enough for the highest order
-    theta = np.linspace(0, 2 * math.pi * per_turn, int(32 * orders.max() * per_turn) + 1,
-                        endpoint=False)
-    phase = orders[:, None] * theta[None, :]                          # order × angle
+    theta = np.linspace(
+        0, 2 * math.pi * per_turn, int(32 * orders.max() * per_turn) + 1, endpoint=False
+    )
+    phase = orders[:, None] * theta[None, :]  # order × angle
     cos, sin = np.cos(phase), np.sin(phase)
 
     def wave_peak(values):
         # max over θ of |Re Σ_k V_k·e^{ikθ}|
         return np.abs(values.real @ cos - values.imag @ sin).max(axis=-1)
 
-    peak = wave_peak(torques).T                                       # speed × section
+    peak = wave_peak(torques).T  # speed × section
     free = np.degrees(wave_peak(q[0]))
     return amplitude, peak, free, np.degrees(np.abs(q[0]))
 

@@ -15,9 +15,8 @@ import pytest
 from numpy.testing import assert_allclose
 
 import balance_cli as balance
-from balance_cli.analysis.counterweight import built_shafts, rolling_moment_phasor
-from balance_cli.kinematics.linkage import (BALANCER, COUNTERWEIGHT, CRANK, engine_angles,
-    linkage_state)
+from balance_cli.analysis.balancer import built_shafts, rolling_moment_phasor
+from balance_cli.kinematics.linkage import BALANCER, COUNTERWEIGHT, CRANK, engine_angles, linkage_state
 from balance_cli.model import BalancerMass, BalancerShaftSpec, CounterweightMass
 
 from tests.support import CONFIGS, exact_b, invoke, write

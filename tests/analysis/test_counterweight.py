@@ -10,7 +10,9 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli import load
-from balance_cli.analysis.counterweight import counterweights, Plane, plane_at_throw
+from balance_cli.analysis.balancing import Plane
+from balance_cli.analysis.counterweight import counterweights
+from balance_cli.analysis.planes import plane_at_throw
 from balance_cli.errors import CounterweightError
 
 from tests.support import BRAMO, CONFIGS, exact_b, make_engine, V12

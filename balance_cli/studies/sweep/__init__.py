@@ -26,21 +26,39 @@ from typing import Any
 
 import numpy as np
 
-from ...analysis.results import analyse
-from ...output import DOCUMENT_VERSION
-from ...config import Configuration, build, parse_text, read_text
-from ...config import resolve
 from ...analysis.counterweight import check_options, counterweights
-from ...errors import BalanceError, ConfigError, FiringError, SweepError
+from ...analysis.results import analyse
 from ...analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings
+from ...config import Configuration, build, parse_text, read_text, resolve
+from ...errors import BalanceError, ConfigError, FiringError, SweepError
+from ...output import DOCUMENT_VERSION
 from ...units import parse_quantity, rad_s_to_rpm
-from .keys import (ANGLE, BALANCE_FACTOR, FRACTION, MAX_POINTS, SCHEMA, Parameter, normalised,
-                   parameter_of, span)
+from .keys import (
+    ANGLE,
+    BALANCE_FACTOR,
+    FRACTION,
+    MAX_POINTS,
+    SCHEMA,
+    Parameter,
+    parameter_of,
+)
 from .quantities import DEFAULT_QUANTITIES, QUANTITY_NAMES, Quantity, quantities_of
+from .values import normalised, span
 
-__all__ = ["SweepResult", "Parameter", "Quantity", "sweep", "span", "parameter_of",
-           "quantities_of", "QUANTITY_NAMES", "DEFAULT_QUANTITIES", "BALANCE_FACTOR", "SCHEMA",
-           "MAX_POINTS"]
+__all__ = [
+    "SweepResult",
+    "Parameter",
+    "Quantity",
+    "sweep",
+    "span",
+    "parameter_of",
+    "quantities_of",
+    "QUANTITY_NAMES",
+    "DEFAULT_QUANTITIES",
+    "BALANCE_FACTOR",
+    "SCHEMA",
+    "MAX_POINTS",
+]
 
 
 def _shown(value):
@@ -101,8 +119,10 @@ class SweepResult:
         for q in self.quantities:
             if quantity in (q.name, q.column):
                 return np.array([p[q.column] for p in self.points], dtype=float)
-        raise KeyError(f"{quantity!r} is not among this sweep's quantities "
-                       f"({', '.join(q.name for q in self.quantities)})")
+        raise KeyError(
+            f"{quantity!r} is not among this sweep's quantities "
+            f"({', '.join(q.name for q in self.quantities)})"
+        )
 
     def records(self) -> list:
         """One flat dict per point (``value``, ``value_SI``, the quantities' columns), ready
@@ -120,9 +140,14 @@ class SweepResult:
             "max_order": self.max_order,
             "speed_rpm": self.speed_rpm,
             "overrides": dict(self.overrides),
-            "parameter": {"key": p.key, "kind": p.kind, "unit_SI": p.unit_si,
-                          "file_value": p.file_value, "values": list(self.values),
-                          "values_SI": list(self.values_si)},
+            "parameter": {
+                "key": p.key,
+                "kind": p.kind,
+                "unit_SI": p.unit_si,
+                "file_value": p.file_value,
+                "values": list(self.values),
+                "values_SI": list(self.values_si),
+            },
             "quantities": [q.to_dict() for q in self.quantities],
             "inertia_kgm2": self.inertia_kgm2,
             "load": self.load if self.inertia_kgm2 is not None else None,
@@ -176,16 +201,27 @@ def _load(configuration):
     if isinstance(configuration, (str, os.PathLike)):
         path = os.fspath(resolve(configuration))
         return parse_text(read_text(Path(path)), path), path
-    raise SweepError(f"must be a Configuration (balance.read_configuration(path), or "
-                     f"balance.Configuration(data, path) of parsed TOML) or a file's path, got "
-                     f"{type(configuration).__name__}", "configuration")
+    raise SweepError(
+        f"must be a Configuration (balance.read_configuration(path), or "
+        f"balance.Configuration(data, path) of parsed TOML) or a file's path, got "
+        f"{type(configuration).__name__}",
+        "configuration",
+    )
 
 
-def sweep(configuration, parameter: str, values: Sequence, quantities=None,
-          samples: int = DEFAULT_SAMPLES, max_order: int = DEFAULT_MAX_ORDER, *,
-          inertia_kgm2: float | None = None, load: str = "propeller",
-          overrides: "dict | None" = None,
-          progress: "Callable[[int, int], None] | None" = None) -> SweepResult:
+def sweep(
+    configuration,
+    parameter: str,
+    values: Sequence,
+    quantities=None,
+    samples: int = DEFAULT_SAMPLES,
+    max_order: int = DEFAULT_MAX_ORDER,
+    *,
+    inertia_kgm2: float | None = None,
+    load: str = "propeller",
+    overrides: "dict | None" = None,
+    progress: "Callable[[int, int], None] | None" = None,
+) -> SweepResult:
     """Analyse ``configuration`` once per value of ``parameter``.
 
     Parameters
@@ -232,7 +268,7 @@ def sweep(configuration, parameter: str, values: Sequence, quantities=None,
     """
     check_settings(samples, max_order)
     data, path = _load(configuration)
-    build(data, path)   # the file as it is first: its own errors are the file's, not the sweep's
+    build(data, path)  # the file as it is first: its own errors are the file's, not the sweep's
     param = parameter_of(data, parameter, path)
     for key, value in (overrides or {}).items():
         try:
@@ -240,43 +276,67 @@ def sweep(configuration, parameter: str, values: Sequence, quantities=None,
         except SweepError as exc:
             raise SweepError(exc.problem, "overrides") from None
         if fixed.key == param.key or fixed.kind == FRACTION:
-            raise SweepError(f"sets {key!r}, which the sweep varies or which is no key of the "
-                             "file; leave it out", "overrides")
+            raise SweepError(
+                f"sets {key!r}, which the sweep varies or which is no key of the "
+                "file; leave it out",
+                "overrides",
+            )
         data = _with_value(data, fixed, normalised(fixed, [value])[0])
     try:
         base = build(data, path)
     except ConfigError as exc:
         if exc.key not in (overrides or {}):
             raise
-        raise SweepError(f"{exc.key} = {(overrides or {})[exc.key]!r}: {exc.problem}",
-                         "overrides") from None
+        raise SweepError(
+            f"{exc.key} = {(overrides or {})[exc.key]!r}: {exc.problem}", "overrides"
+        ) from None
     wanted = quantities_of(quantities, max_order)
     if param.kind == FRACTION:
         # what the counterweights of each factor leave, not what an ideal one would
-        wanted = tuple(dataclasses.replace(q, meaning=q.meaning.split(", after")[0] + ", after "
-                                           "the counterweights of that balance factor")
-                       if q.name.startswith("largest_") else q for q in wanted)
+        wanted = tuple(
+            dataclasses.replace(
+                q,
+                meaning=q.meaning.split(", after")[0] + ", after "
+                "the counterweights of that balance factor",
+            )
+            if q.name.startswith("largest_")
+            else q
+            for q in wanted
+        )
     values = normalised(param, values)
     torque_wanted = any(q.kind in ("torque", "steadiness") for q in wanted)
     steady = any(q.kind == "steadiness" for q in wanted)
     if steady and inertia_kgm2 is None:
-        raise SweepError("is needed for the quantity steadiness: give the flywheel inertia, "
-                         "kg·m²", "inertia_kgm2")
+        raise SweepError(
+            "is needed for the quantity steadiness: give the flywheel inertia, kg·m²",
+            "inertia_kgm2",
+        )
     if inertia_kgm2 is not None:
-        if isinstance(inertia_kgm2, bool) or not isinstance(inertia_kgm2, (int, float)) or \
-                not math.isfinite(inertia_kgm2) or inertia_kgm2 <= 0:
-            raise SweepError(f"must be a positive number of kg·m², got {inertia_kgm2!r}",
-                             "inertia_kgm2")
+        if (
+            isinstance(inertia_kgm2, bool)
+            or not isinstance(inertia_kgm2, (int, float))
+            or not math.isfinite(inertia_kgm2)
+            or inertia_kgm2 <= 0
+        ):
+            raise SweepError(
+                f"must be a positive number of kg·m², got {inertia_kgm2!r}", "inertia_kgm2"
+            )
         if not steady:
-            raise SweepError("applies to the quantity steadiness only; ask for it or leave the "
-                             "inertia out", "inertia_kgm2")
+            raise SweepError(
+                "applies to the quantity steadiness only; ask for it or leave the inertia out",
+                "inertia_kgm2",
+            )
     if steady and base.gas is None:
-        raise SweepError(f"needs a gas torque to drive the engine, but {path} has no [gas] "
-                         "table", "quantities")
+        raise SweepError(
+            f"needs a gas torque to drive the engine, but {path} has no [gas] table", "quantities"
+        )
 
     if param.key == "power" and not any(q.kind == "pru" for q in wanted):
-        raise SweepError("power changes only the power related unbalance: ask for PRU<k>V or "
-                         "PRU<k>H (PRU2V), or vary another key", "parameter")
+        raise SweepError(
+            "power changes only the power related unbalance: ask for PRU<k>V or "
+            "PRU<k>H (PRU2V), or vary another key",
+            "parameter",
+        )
 
     # every point is built before any is analysed: a bad value is reported at once
     engines, values_si = [], []
@@ -287,8 +347,11 @@ def sweep(configuration, parameter: str, values: Sequence, quantities=None,
                 engine = base
             else:
                 engine = build(_with_value(data, param, value), path)
-                if engine.power_w is not None and engine.speed_rad_s != base.speed_rad_s \
-                        and param.key != "power":
+                if (
+                    engine.power_w is not None
+                    and engine.speed_rad_s != base.speed_rad_s
+                    and param.key != "power"
+                ):
                     # the file's power is given at the file's speed, not at the point's
                     engine = engine.replace(power_speed_rad_s=base.speed_rad_s)
             values_si.append(_si(param, value) + 0.0)
@@ -300,26 +363,43 @@ def sweep(configuration, parameter: str, values: Sequence, quantities=None,
         raise SweepError(
             f"{param.key!r} changes nothing in the engine {path} describes: another key sets "
             "what it would (a cylinder's own value overrides [links] and [masses], [parts] "
-            "derive the lumped masses); vary that key instead", "parameter")
+            "derive the lumped masses); vary that key instead",
+            "parameter",
+        )
 
     torque_of: Any = None
     if torque_wanted:
-        from ...analysis.torque import torque as torque_of   # the torques load scipy for the steadiness
+        from ...analysis.torque import (
+            torque as torque_of,  # the torques load scipy for the steadiness
+        )
 
     points = []
     for i, (engine, value, value_si) in enumerate(zip(engines, values, values_si)):
         try:
             result = analyse(engine, samples, max_order)
-            record = _measure(result, wanted, param, value, samples, max_order, torque_of,
-                              inertia_kgm2, load)
+            record = _measure(
+                result, wanted, param, value, samples, max_order, torque_of, inertia_kgm2, load
+            )
         except BalanceError as exc:
             raise _point_error(exc, param, value, path) from None
         points.append({"value": value, "value_SI": value_si, **record})
         if progress is not None:
             progress(i + 1, len(values))
-    return SweepResult(base.name, path, param, tuple(values), tuple(values_si), wanted,
-                       tuple(points), tuple(engines), samples, max_order, inertia_kgm2, load,
-                       tuple((overrides or {}).items()))
+    return SweepResult(
+        base.name,
+        path,
+        param,
+        tuple(values),
+        tuple(values_si),
+        wanted,
+        tuple(points),
+        tuple(engines),
+        samples,
+        max_order,
+        inertia_kgm2,
+        load,
+        tuple((overrides or {}).items()),
+    )
 
 
 def _measure(result, wanted, param, value, samples, max_order, torque_of, inertia, load):
@@ -331,13 +411,23 @@ def _measure(result, wanted, param, value, samples, max_order, torque_of, inerti
         largest_moment = _above(shaking.largest_moment(), engine.noise_floor_nm)
     else:
         shaking = result.shaking
-        largest_force, largest_moment = result.counterweighted_force_n, result.counterweighted_moment_nm
+        largest_force, largest_moment = (
+            result.counterweighted_force_n,
+            result.counterweighted_moment_nm,
+        )
     orders = shaking.records(engine)
     torques = None
     if torque_of is not None:
         steady = any(q.kind == "steadiness" for q in wanted)
-        torques = torque_of(engine, samples, max_order, inertia_kgm2=inertia if steady else None,
-                            load=load, bearings=False, guide=False)
+        torques = torque_of(
+            engine,
+            samples,
+            max_order,
+            inertia_kgm2=inertia if steady else None,
+            load=load,
+            bearings=False,
+            guide=False,
+        )
     record = {}
     for q in wanted:
         if q.kind == "pru":
@@ -355,11 +445,14 @@ def _measure(result, wanted, param, value, samples, max_order, torque_of, inerti
             record[q.column] = torques.steadiness.factor
         else:
             total = torques.total
-            record[q.column] = {"torque_mean": total.mean, "torque_max": total.max,
-                                "torque_min": total.min, "torque_range": total.range}[q.name]
+            record[q.column] = {
+                "torque_mean": total.mean,
+                "torque_max": total.max,
+                "torque_min": total.min,
+                "torque_range": total.range,
+            }[q.name]
     return record
 
 
 def _above(value, floor):
     return value if value >= floor else 0.0
-

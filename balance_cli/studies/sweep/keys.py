@@ -6,18 +6,24 @@ A parameter is a key path as written in a configuration (``rod_length``, ``masse
 number) says how its values are written and what their SI unit is.
 """
 
-import math
 import re
-from collections.abc import Sequence
 from dataclasses import dataclass
 
-import numpy as np
+from ...errors import SweepError
+from ...units import DIMENSIONS
 
-from ...errors import BalanceError, SweepError
-from ...units import DIMENSIONS, parse_quantity
-
-__all__ = ["SCHEMA", "BALANCE_FACTOR", "MAX_POINTS", "ANGLE", "NUMBER", "WHOLE", "FRACTION",
-           "Parameter", "parameter_of", "normalised", "span"]
+__all__ = [
+    "SCHEMA",
+    "BALANCE_FACTOR",
+    "MAX_POINTS",
+    "ANGLE",
+    "NUMBER",
+    "WHOLE",
+    "FRACTION",
+    "Parameter",
+    "parameter_of",
+    "NUMBER_TEXT",
+]
 
 #: kinds of value that are not a dimension of :data:`balance_cli.units.DIMENSIONS`
 ANGLE, NUMBER, WHOLE, FRACTION = "angle", "number", "whole number", "fraction"
@@ -26,45 +32,96 @@ ANGLE, NUMBER, WHOLE, FRACTION = "angle", "number", "whole number", "fraction"
 #: "banks[]" an array of tables), with the kind of its value. Strings (name, source, frame)
 #: and lists (firing_order) are not swept: they have no axis to plot against.
 SCHEMA = {
-    "": {"cycle": WHOLE, "speed": "angular speed", "crank_radius": "length",
-         "rod_length": "length", "pin_offset": "length", "vertical": ANGLE, "power": "power"},
+    "": {
+        "cycle": WHOLE,
+        "speed": "angular speed",
+        "crank_radius": "length",
+        "rod_length": "length",
+        "pin_offset": "length",
+        "vertical": ANGLE,
+        "power": "power",
+    },
     "masses": {"reciprocating": "mass", "rotating": "mass", "knuckle": "mass", "crank": "mass"},
-    "parts": {"piston": "mass", "rod_mass": "mass", "rod_cg": "length",
-              "rod_inertia": "moment of inertia", "link_mass": "mass", "link_cg": "length",
-              "link_inertia": "moment of inertia", "crank": "mass",
-              "crankshaft_inertia": "moment of inertia", "flywheel_inertia": "moment of inertia"},
-    "gas": {"bore": "length", "compression_ratio": NUMBER, "imep": "pressure",
-            "intake_pressure": "pressure", "crankcase_pressure": "pressure",
-            "polytropic_exponent": NUMBER, "combustion_start": ANGLE,
-            "combustion_duration": ANGLE, "wiebe_a": NUMBER, "wiebe_m": NUMBER},
+    "parts": {
+        "piston": "mass",
+        "rod_mass": "mass",
+        "rod_cg": "length",
+        "rod_inertia": "moment of inertia",
+        "link_mass": "mass",
+        "link_cg": "length",
+        "link_inertia": "moment of inertia",
+        "crank": "mass",
+        "crankshaft_inertia": "moment of inertia",
+        "flywheel_inertia": "moment of inertia",
+    },
+    "gas": {
+        "bore": "length",
+        "compression_ratio": NUMBER,
+        "imep": "pressure",
+        "intake_pressure": "pressure",
+        "crankcase_pressure": "pressure",
+        "polytropic_exponent": NUMBER,
+        "combustion_start": ANGLE,
+        "combustion_duration": ANGLE,
+        "wiebe_a": NUMBER,
+        "wiebe_m": NUMBER,
+    },
     "links": {"master_bank": WHOLE, "length": "length", "knuckle_radius": "length"},
     "banks[]": {"angle": ANGLE, "pin_offset": "length"},
     "throws[]": {"phase": ANGLE, "z": "length", "crankshaft": WHOLE},
-    "cylinders[]": {"number": WHOLE, "bank": WHOLE, "throw": WHOLE, "z": "length",
-                    "reciprocating": "mass", "master": WHOLE, "link_length": "length",
-                    "knuckle_radius": "length", "knuckle_angle": ANGLE, "pin_offset": "length",
-                    "opposed_throw": WHOLE, "opposed_reciprocating": "mass"},
+    "cylinders[]": {
+        "number": WHOLE,
+        "bank": WHOLE,
+        "throw": WHOLE,
+        "z": "length",
+        "reciprocating": "mass",
+        "master": WHOLE,
+        "link_length": "length",
+        "knuckle_radius": "length",
+        "knuckle_angle": ANGLE,
+        "pin_offset": "length",
+        "opposed_throw": WHOLE,
+        "opposed_reciprocating": "mass",
+    },
     "crankshafts[]": {"x": "length", "y": "length", "direction": WHOLE, "phase": ANGLE},
-    "counterweights[]": {"throw": WHOLE, "mass": "mass", "radius": "length",
-                         "mass_radius": "unbalance", "angle": ANGLE, "z": "length"},
+    "counterweights[]": {
+        "throw": WHOLE,
+        "mass": "mass",
+        "radius": "length",
+        "mass_radius": "unbalance",
+        "angle": ANGLE,
+        "z": "length",
+    },
     "shafts[]": {"ratio": WHOLE, "lateral": "length", "vertical": "length"},
 }
 #: configuration keys that hold text or lists: named in messages, never swept
-_NOT_SCALARS = {"name": "text", "source": "text", "frame": "text (fixed or rotary)",
-                "firing_order": "a list"}
+_NOT_SCALARS = {
+    "name": "text",
+    "source": "text",
+    "frame": "text (fixed or rotary)",
+    "firing_order": "a list",
+}
 
 #: the pseudo-parameter: the balance factor of classic per-throw counterweights
 BALANCE_FACTOR = "balance_factor"
 
 #: SI unit of each kind of value, as JSON and CSV name it
-_SI_UNITS = {"length": "m", "mass": "kg", "angular speed": "rad/s", "moment of inertia": "kg*m^2",
-             "pressure": "Pa", "torque": "N*m", "unbalance": "kg*m", ANGLE: "rad", NUMBER: "", WHOLE: "",
-             FRACTION: ""}
+_SI_UNITS = {
+    "length": "m",
+    "mass": "kg",
+    "angular speed": "rad/s",
+    "moment of inertia": "kg*m^2",
+    "pressure": "Pa",
+    "torque": "N*m",
+    "unbalance": "kg*m",
+    ANGLE: "rad",
+    NUMBER: "",
+    WHOLE: "",
+    FRACTION: "",
+}
 
 _SEGMENT = re.compile(r"^([a-z_]+)(?:\[(\d+)\])?$")
-_NUMBER_TEXT = re.compile(r"^\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*$", re.ASCII)
-_QUANTITY_TEXT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S.*?)\s*$",
-                            re.ASCII)
+NUMBER_TEXT = re.compile(r"^\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*$", re.ASCII)
 #: most points a sweep takes: enough for any curve, few enough that a typo (1e9) is refused
 MAX_POINTS = 10_000
 
@@ -104,7 +161,6 @@ class Parameter:
     @property
     def takes_units(self) -> bool:
         return self.kind in DIMENSIONS
-
 
 
 def _segments(key):
@@ -171,8 +227,11 @@ def _refused(text, problem, data, path, listing=True):
     present, addable = _sweepable(data)
     has = ", ".join(_compressed(present))
     more = f"; it may add {', '.join(addable)}" if addable else ""
-    return SweepError(f"{text!r}: {problem}; {path} has {has}{more}, and there is "
-                      "balance_factor (of the counterweights)", "parameter")
+    return SweepError(
+        f"{text!r}: {problem}; {path} has {has}{more}, and there is "
+        "balance_factor (of the counterweights)",
+        "parameter",
+    )
 
 
 def parameter_of(data: dict, key: str, path: str = "<config>") -> Parameter:
@@ -188,28 +247,39 @@ def parameter_of(data: dict, key: str, path: str = "<config>") -> Parameter:
         (``parameter``); the message lists the keys there are
     """
     if not isinstance(key, str) or not key.strip():
-        raise SweepError(f"must be a configuration key such as rod_length or banks[2].angle, "
-                         f"got {key!r}", "parameter")
+        raise SweepError(
+            f"must be a configuration key such as rod_length or banks[2].angle, got {key!r}",
+            "parameter",
+        )
     text = key.strip()
     if text == BALANCE_FACTOR:
         return Parameter(text, FRACTION, ())
     segments = _segments(text)
     if segments is None or len(segments) > 2:
-        raise _refused(text, "not a configuration key (write it as in the file: rod_length, "
-                             "masses.rotating, banks[2].angle)", data, path)
+        raise _refused(
+            text,
+            "not a configuration key (write it as in the file: rod_length, "
+            "masses.rotating, banks[2].angle)",
+            data,
+            path,
+        )
     head, index = segments[0]
     if len(segments) == 1:
         if index is not None:
             raise _refused(text, "not a configuration key", data, path)
         if head in _NOT_SCALARS:
-            raise _refused(text, f"holds {_NOT_SCALARS[head]}, not a number to vary", data, path,
-                           listing=False)
+            raise _refused(
+                text, f"holds {_NOT_SCALARS[head]}, not a number to vary", data, path, listing=False
+            )
         if head not in SCHEMA[""]:
-            problem = (f"{head} is a table; name one of its keys, such as {head}.{next(iter(SCHEMA[head]))}"
-                       if head in SCHEMA else
-                       f"[{head}] is an array of tables; name one of its keys with the table's number, "
-                       f"such as {head}[1].{next(iter(SCHEMA[head + '[]']))}"
-                       if head + "[]" in SCHEMA else "no such key")
+            problem = (
+                f"{head} is a table; name one of its keys, such as {head}.{next(iter(SCHEMA[head]))}"
+                if head in SCHEMA
+                else f"[{head}] is an array of tables; name one of its keys with the table's number, "
+                f"such as {head}[1].{next(iter(SCHEMA[head + '[]']))}"
+                if head + "[]" in SCHEMA
+                else "no such key"
+            )
             raise _refused(text, problem, data, path, listing=problem == "no such key")
         return Parameter(text, SCHEMA[""][head], (head,), data.get(head))
     (name, subkey) = segments[1]
@@ -217,155 +287,58 @@ def parameter_of(data: dict, key: str, path: str = "<config>") -> Parameter:
         raise _refused(text, "not a configuration key", data, path)
     if index is None:
         if head not in SCHEMA:
-            hint = (f"[[{head}]] is an array of tables: give the table's number, such as "
-                    f"{head}[1].{name}" if head + "[]" in SCHEMA else "no such key")
+            hint = (
+                f"[[{head}]] is an array of tables: give the table's number, such as "
+                f"{head}[1].{name}"
+                if head + "[]" in SCHEMA
+                else "no such key"
+            )
             raise _refused(text, hint, data, path, listing=hint == "no such key")
         if name not in SCHEMA[head]:
-            raise _refused(text, f"[{head}] has no key {name} in the configuration format", data, path)
+            raise _refused(
+                text, f"[{head}] has no key {name} in the configuration format", data, path
+            )
         table = data.get(head)
         if not isinstance(table, dict):
-            raise _refused(text, f"{path} has no [{head}] table; add one to vary its keys",
-                           data, path, listing=False)
+            raise _refused(
+                text,
+                f"{path} has no [{head}] table; add one to vary its keys",
+                data,
+                path,
+                listing=False,
+            )
         return Parameter(text, SCHEMA[head][name], (head, name), table.get(name))
     array = head + "[]"
     if array not in SCHEMA:
-        raise _refused(text, f"{head} is not an array of tables" if head in SCHEMA else "no such key",
-                       data, path)
+        raise _refused(
+            text,
+            f"{head} is not an array of tables" if head in SCHEMA else "no such key",
+            data,
+            path,
+        )
     if name not in SCHEMA[array]:
         raise _refused(text, f"[[{head}]] tables have no key {name}", data, path)
     rows = data.get(head)
     count = len(rows) if isinstance(rows, list) else 0
     if not 1 <= index <= count:
-        where = (f"only {head}[1]" if count == 1 else f"{head}[1] to {head}[{count}]" if count
-                 else f"no [[{head}]] tables")
-        raise _refused(text, f"{path} has {where}" + (" (numbered from 1)" if count else ""),
-                       data, path, listing=False)
+        where = (
+            f"only {head}[1]"
+            if count == 1
+            else f"{head}[1] to {head}[{count}]"
+            if count
+            else f"no [[{head}]] tables"
+        )
+        raise _refused(
+            text,
+            f"{path} has {where}" + (" (numbered from 1)" if count else ""),
+            data,
+            path,
+            listing=False,
+        )
     row = rows[index - 1] if isinstance(rows, list) else None
-    return Parameter(text, SCHEMA[array][name], (head, index - 1, name),
-                     row.get(name) if isinstance(row, dict) else None)
-
-
-def _shown(value):
-    return f"{value:g}" if isinstance(value, float) else str(value)
-
-
-def normalised(parameter, values):
-    """The values as the file would hold them: text with a unit for a quantity, numbers for an
-    angle, a ratio or a whole number (text that holds one is read as that number)."""
-    if isinstance(values, (str, bytes)) or not isinstance(values, Sequence) and not isinstance(
-            values, np.ndarray):
-        raise SweepError(f"must be a list of values as written in the file, got {values!r}",
-                         "values")
-    values = list(values)
-    if not values:
-        raise SweepError("holds none; give at least one", "values")
-    if len(values) > MAX_POINTS:
-        raise SweepError(f"holds {len(values)}; a sweep takes at most {MAX_POINTS} points",
-                         "values")
-    out = []
-    for value in values:
-        if isinstance(value, np.generic):
-            value = value.item()
-        if parameter.takes_units:
-            if not isinstance(value, str):
-                raise SweepError(f"holds {value!r}: {parameter.key} is written with a unit, "
-                                 f"as in the file (such as {_example(parameter)!r})", "values")
-            out.append(value.strip())
-            continue
-        if isinstance(value, str):
-            if not _NUMBER_TEXT.match(value):
-                unit = "degrees" if parameter.kind == ANGLE else parameter.kind + "s"
-                raise SweepError(f"holds {value!r}: {parameter.key} is a plain number of {unit}, "
-                                 "written without a unit", "values")
-            number = float(value)
-            value = int(number) if parameter.kind == WHOLE and number.is_integer() else number
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise SweepError(f"holds {value!r}: {parameter.key} takes a number", "values")
-        if parameter.kind == WHOLE:
-            if isinstance(value, float) and value.is_integer():
-                value = int(value)
-            if not isinstance(value, int):
-                raise SweepError(f"holds {value!r}: {parameter.key} takes whole numbers", "values")
-        out.append(value)
-    return out
-
-
-def _example(parameter):
-    examples = {"length": "140 mm", "mass": "500 g", "angular speed": "3000 rpm",
-                "moment of inertia": "0.12 kg*m^2", "pressure": "12 bar"}
-    return examples.get(parameter.kind, "1")
-
-
-def _number_and_unit(text, what):
-    """(number, unit text, dimension) of ``"140 mm"``; (number, "", None) of a plain number."""
-    if isinstance(text, (int, float)) and not isinstance(text, bool):
-        if not math.isfinite(text):
-            raise SweepError(f"must be a finite number, got {text!r}", what)
-        return float(text), "", None
-    if not isinstance(text, str):
-        raise SweepError(f"must be a number or a value with a unit such as '140 mm', got "
-                         f"{text!r}", what)
-    if _NUMBER_TEXT.match(text):
-        number = float(text)
-        if not math.isfinite(number):
-            raise SweepError(f"must be a finite number, got {text!r}", what)
-        return number, "", None
-    match = _QUANTITY_TEXT.match(text)
-    if not match:
-        raise SweepError(f"cannot read {text!r}: write a number, with its unit where the key "
-                         "has one (such as '140 mm' or 60)", what)
-    unit = match.group(2)
-    for dimension in DIMENSIONS:
-        try:
-            # one of the unit is inside every dimension's limits: this finds the unit's dimension
-            parse_quantity(f"1 {unit}", dimension)
-        except BalanceError:
-            continue
-        try:
-            parse_quantity(text, dimension)
-        except BalanceError as exc:
-            raise SweepError(str(exc), what) from None
-        return float(match.group(1)), unit, dimension
-    raise SweepError(f"cannot read {text!r}: unknown unit {unit!r}", what)
-
-
-def span(start, stop, steps: int) -> list:
-    """``steps`` evenly spaced values from ``start`` to ``stop`` inclusive, written as the file
-    writes them: ``span("140 mm", "0.2 m", 4)`` is ["140 mm", "160 mm", "180 mm", "200 mm"] (in
-    the unit of ``start``), ``span(0, 90, 4)`` is [0.0, 30.0, 60.0, 90.0].
-
-    Raises
-    ------
-    SweepError
-        a value that cannot be read, units of two dimensions, equal ends, fewer than two steps
-        (``start``, ``stop`` or ``steps``)
-    """
-    if isinstance(steps, bool) or not isinstance(steps, (int, np.integer)):
-        raise SweepError(f"must be a whole number, got {steps!r}", "steps")
-    if not 2 <= steps <= MAX_POINTS:
-        raise SweepError(f"must be from 2 to {MAX_POINTS} (both ends count), got {steps}", "steps")
-    a, unit, dimension = _number_and_unit(start, "start")
-    b, other_unit, other_dimension = _number_and_unit(stop, "stop")
-    if dimension != other_dimension:
-        def kind(d):
-            return f"a{'n' if d and d[0] in 'aeiou' else ''} {d}" if d else "a plain number"
-        raise SweepError(f"{stop!r} is {kind(other_dimension)}, but the first value ({start!r}) "
-                         f"is {kind(dimension)}: give both ends alike", "stop")
-    if unit and other_unit != unit:
-        # the far end in the unit of the near one, so every value is written in one unit
-        b = parse_quantity(stop, dimension) / parse_quantity(f"1 {unit}", dimension)
-    if a == b:
-        raise SweepError(f"equals the first value ({start!r}): a sweep needs two different ends",
-                         "stop")
-    numbers = np.linspace(a, b, int(steps))
-    # twelve digits hide linspace's rounding (0.30000000000000004) and keep every real step
-    written = [float(f"{x:.12g}") + 0.0 for x in numbers]
-    written[0], written[-1] = a, b
-    if not unit:
-        return written
-    texts = [f"{x:.12g} {unit}" for x in written]
-    texts[0] = start.strip()
-    if other_unit == unit:
-        texts[-1] = stop.strip()
-    return texts
-
+    return Parameter(
+        text,
+        SCHEMA[array][name],
+        (head, index - 1, name),
+        row.get(name) if isinstance(row, dict) else None,
+    )

@@ -4,8 +4,8 @@ the largest resultant force and free moment, torques and steadiness."""
 import re
 from dataclasses import dataclass
 
-from ...errors import SweepError
 from ...analysis.shaking import DEFAULT_MAX_ORDER
+from ...errors import SweepError
 
 __all__ = ["Quantity", "quantities_of", "QUANTITY_NAMES", "DEFAULT_QUANTITIES"]
 
@@ -28,22 +28,37 @@ class Quantity:
     part: str | None = None
 
     def to_dict(self) -> dict:
-        return {"name": self.name, "column": self.column, "unit": self.unit, "kind": self.kind,
-                "meaning": self.meaning}
+        return {
+            "name": self.name,
+            "column": self.column,
+            "unit": self.unit,
+            "kind": self.kind,
+            "meaning": self.meaning,
+        }
 
 
-_PARTS = {"": ("max", "largest over a revolution (the ellipse's semi-major axis)"),
-          "V": ("vertical", "vertical component's amplitude"),
-          "H": ("horizontal", "horizontal component's amplitude"),
-          "+": ("forward", "forward part (turns with the crank)"),
-          "-": ("backward", "backward part (turns against the crank)")}
-_MOMENT_WORDS = {"V": "pitching (moment of the vertical forces), amplitude",
-                 "H": "yawing (moment of the horizontal forces), amplitude"}
+_PARTS = {
+    "": ("max", "largest over a revolution (the ellipse's semi-major axis)"),
+    "V": ("vertical", "vertical component's amplitude"),
+    "H": ("horizontal", "horizontal component's amplitude"),
+    "+": ("forward", "forward part (turns with the crank)"),
+    "-": ("backward", "backward part (turns against the crank)"),
+}
+_MOMENT_WORDS = {
+    "V": "pitching (moment of the vertical forces), amplitude",
+    "H": "yawing (moment of the horizontal forces), amplitude",
+}
 _NAMED = {
-    "largest_force": ("N", "force", "largest resultant force over a revolution, all orders, "
-                                    "after an ideal counterweight"),
-    "largest_moment": ("Nm", "moment", "largest free moment over a revolution, all orders, "
-                                       "after an ideal two-plane counterweight"),
+    "largest_force": (
+        "N",
+        "force",
+        "largest resultant force over a revolution, all orders, after an ideal counterweight",
+    ),
+    "largest_moment": (
+        "Nm",
+        "moment",
+        "largest free moment over a revolution, all orders, after an ideal two-plane counterweight",
+    ),
     "torque_mean": ("Nm", "torque", "mean of the total torque (gas and inertia) at constant speed"),
     "torque_max": ("Nm", "torque", "largest total torque over the cycle"),
     "torque_min": ("Nm", "torque", "smallest total torque over the cycle"),
@@ -51,8 +66,20 @@ _NAMED = {
     "steadiness": ("", "steadiness", "steadiness ω_m/(ω_max − ω_min) with the inertia given"),
 }
 #: what ``quantities`` may name, for messages and help texts
-QUANTITY_NAMES = ("F<k>", "F<k>V", "F<k>H", "F<k>+", "F<k>-", "M<k>", "M<k>V", "M<k>H", "M<k>+",
-                  "M<k>-", "PRU<k>V", "PRU<k>H") + tuple(_NAMED)
+QUANTITY_NAMES = (
+    "F<k>",
+    "F<k>V",
+    "F<k>H",
+    "F<k>+",
+    "F<k>-",
+    "M<k>",
+    "M<k>V",
+    "M<k>H",
+    "M<k>+",
+    "M<k>-",
+    "PRU<k>V",
+    "PRU<k>H",
+) + tuple(_NAMED)
 DEFAULT_QUANTITIES = ("largest_force", "largest_moment")
 _ORDER_QUANTITY = re.compile(r"^([FM])(\d+)(V|H|\+|-)?$", re.IGNORECASE)
 _PRU_QUANTITY = re.compile(r"^PRU(\d+)(V|H)$", re.IGNORECASE)
@@ -72,58 +99,93 @@ def quantities_of(names, max_order: int = DEFAULT_MAX_ORDER) -> tuple:
     if isinstance(names, str):
         names = [n.strip() for n in names.split(",")]
     if not isinstance(names, (list, tuple)):
-        raise SweepError(f"must be quantity names (a list, or one string such as \"F2,M1V\"), "
-                         f"got {names!r}", "quantities")
+        raise SweepError(
+            f'must be quantity names (a list, or one string such as "F2,M1V"), got {names!r}',
+            "quantities",
+        )
     names = list(names)
     if not names:
         names = list(DEFAULT_QUANTITIES)
     out = []
     for raw in names:
         if not isinstance(raw, str) or not raw.strip():
-            raise SweepError(f"holds {raw!r}: give quantity names such as F2, M1V or "
-                             "largest_force", "quantities")
+            raise SweepError(
+                f"holds {raw!r}: give quantity names such as F2, M1V or largest_force", "quantities"
+            )
         name = raw.strip()
         match = _ORDER_QUANTITY.match(name)
         if match:
-            letter, order, part = match.group(1).upper(), int(match.group(2)), (match.group(3) or "").upper()
+            letter, order, part = (
+                match.group(1).upper(),
+                int(match.group(2)),
+                (match.group(3) or "").upper(),
+            )
             if not 1 <= order <= max_order:
-                raise SweepError(f"names {name!r}, order {order}, outside the orders analysed "
-                                 f"(1 to {max_order}); analyse more orders or ask for a lower "
-                                 "one", "quantities")
+                raise SweepError(
+                    f"names {name!r}, order {order}, outside the orders analysed "
+                    f"(1 to {max_order}); analyse more orders or ask for a lower "
+                    "one",
+                    "quantities",
+                )
             key, words = _PARTS[part]
             what = "force" if letter == "F" else "moment"
             if letter == "M" and part in _MOMENT_WORDS:
                 words = _MOMENT_WORDS[part]
             unit = "N" if letter == "F" else "Nm"
             canonical = f"{letter}{order}{part}"
-            out.append(Quantity(canonical, f"{canonical}_{unit}", unit, what,
-                                f"order-{order} free {what}, {words}", order, key))
+            out.append(
+                Quantity(
+                    canonical,
+                    f"{canonical}_{unit}",
+                    unit,
+                    what,
+                    f"order-{order} free {what}, {words}",
+                    order,
+                    key,
+                )
+            )
             continue
         match = _PRU_QUANTITY.match(name)
         if match:
             order, part = int(match.group(1)), match.group(2).upper()
             if not 1 <= order <= max_order:
-                raise SweepError(f"names {name!r}, order {order}, outside the orders analysed "
-                                 f"(1 to {max_order})", "quantities")
+                raise SweepError(
+                    f"names {name!r}, order {order}, outside the orders analysed "
+                    f"(1 to {max_order})",
+                    "quantities",
+                )
             side = "vertical" if part == "V" else "horizontal"
-            out.append(Quantity(f"PRU{order}{part}", f"PRU{order}{part}_Nm_per_kW", "", "pru",
-                                f"power related unbalance of the order-{order} "
-                                f"{'pitching' if part == 'V' else 'yawing'} moment, N·m/kW",
-                                order, side))
+            out.append(
+                Quantity(
+                    f"PRU{order}{part}",
+                    f"PRU{order}{part}_Nm_per_kW",
+                    "",
+                    "pru",
+                    f"power related unbalance of the order-{order} "
+                    f"{'pitching' if part == 'V' else 'yawing'} moment, N·m/kW",
+                    order,
+                    side,
+                )
+            )
             continue
         lowered = name.lower()
         if lowered in _NAMED:
             unit, kind, meaning = _NAMED[lowered]
-            out.append(Quantity(lowered, f"{lowered}_{unit}" if unit else lowered, unit, kind,
-                                meaning))
+            out.append(
+                Quantity(lowered, f"{lowered}_{unit}" if unit else lowered, unit, kind, meaning)
+            )
             continue
-        raise SweepError(f"names {name!r}, which is not a quantity; give F<k> or M<k> (order k: "
-                         "the largest force or moment of that order) with V, H, + or - for the "
-                         "vertical, horizontal, forward or backward part (F2V, M1H, F1+), or "
-                         f"one of {', '.join(_NAMED)}", "quantities")
+        raise SweepError(
+            f"names {name!r}, which is not a quantity; give F<k> or M<k> (order k: "
+            "the largest force or moment of that order) with V, H, + or - for the "
+            "vertical, horizontal, forward or backward part (F2V, M1H, F1+), or "
+            f"one of {', '.join(_NAMED)}",
+            "quantities",
+        )
     columns = [q.column for q in out]
     twice = next((c for c in columns if columns.count(c) > 1), None)
     if twice is not None:
-        raise SweepError(f"names {twice.rsplit('_', 1)[0]!r} twice; give each quantity once",
-                         "quantities")
+        raise SweepError(
+            f"names {twice.rsplit('_', 1)[0]!r} twice; give each quantity once", "quantities"
+        )
     return tuple(out)
