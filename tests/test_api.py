@@ -14,8 +14,8 @@ from click.testing import CliRunner
 
 import balance_cli as balance
 from balance_cli.cli import main
+from tests.support import CONFIGS, PART3, ROOT, V12, make_engine
 
-from tests.support import CONFIGS, make_engine, PART3, ROOT, V12
 
 def readme_python_blocks():
     text = (ROOT / "README.md").read_text(encoding="utf-8")

@@ -17,7 +17,6 @@ import pytest
 
 import balance_cli as balance
 from balance_cli.cranksearch import Term
-
 from tests.support import CONFIGS, TEMPLATES
 
 NAN, INF = math.nan, math.inf

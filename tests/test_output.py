@@ -10,8 +10,8 @@ import pytest
 
 from balance_cli.errors import OutputError
 from balance_cli.output import refuse_inputs, write_bytes, write_folder, write_text
+from tests.support import PART3, invoke
 
-from tests.support import invoke, PART3
 
 def test_refuse_inputs_sees_through_links_and_dots(tmp_path):
     config = tmp_path / "e.toml"

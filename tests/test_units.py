@@ -7,10 +7,17 @@ import pytest
 from numpy.testing import assert_allclose
 
 import balance_cli as balance
-from balance_cli.units import (parse_quantity, round_degrees, Scale, significant, UNIT_SYSTEMS,
-    UnitError, wrap_degrees)
-
+from balance_cli.units import (
+    UNIT_SYSTEMS,
+    Scale,
+    UnitError,
+    parse_quantity,
+    round_degrees,
+    significant,
+    wrap_degrees,
+)
 from tests.support import invoke
+
 
 @pytest.mark.parametrize(
     "text, dimension, si",

@@ -19,9 +19,10 @@ ratio of the medians is what counts, so the machine's speed cancels out.
   and the ratio of the rates is the search's speed-up
 - ``balance family configs/marine-6-2stroke.toml --cylinders 5-12``: the project-guide table,
   every row searched exhaustively (target: under a minute on two cores)
-- ``balance.torsion`` of a six-throw model (tests/validation/reference/opentorsion_ice/mendes2008.toml
-  with a [gas] cycle): modes and the forced response at 100 speeds, orders ½ to 12, in one
-  process (target: well under a second; at most 0.5 s)
+- ``balance.torsion`` of a six-throw model
+  (tests/validation/reference/opentorsion_ice/mendes2008.toml with a [gas] cycle): modes and
+  the forced response at 100 speeds, orders ½ to 12, in one process (target: well under a
+  second; at most 0.5 s)
 - how often ``torque`` and ``torsional_vibration`` close the linkage (tools/closures.py)
 
 ``make bench BASE=/path/to/another/checkout`` (one with its own ``.venv``, as ``make setup``
@@ -202,7 +203,8 @@ def torsion_bench():
     import balance_cli as balance
     from balance_cli.torsion import torsional_vibration as torsion
 
-    text = (ROOT / "tests/validation/reference/opentorsion_ice/mendes2008.toml").read_text(encoding="utf-8")
+    mendes = ROOT / "tests/validation/reference/opentorsion_ice/mendes2008.toml"
+    text = mendes.read_text(encoding="utf-8")
     engine = balance.loads(
         text + '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\nimep = "15 bar"\n',
         "mendes2008 with [gas]",

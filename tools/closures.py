@@ -4,10 +4,11 @@ Closing the linkage (``balance_cli.kinematics.linkage.close_linkage``) is the co
 every analysis; the kinematic state closes it once per engine and sampling grid. Each count is
 taken in a fresh process, so that nothing is already kept:
 
-- the Mendes et al. (2008) six-cylinder diesel (tests/validation/reference/opentorsion_ice/mendes2008.toml)
-  with a parametric [gas] cycle: ``balance.torque`` (the state, the fine grid of the gas cycle,
-  and one virtual shift of each of the six crank pins: 8) and ``balance.torsional_vibration``
-  (the state and the fine grid: 2);
+- the Mendes et al. (2008) six-cylinder diesel
+  (tests/validation/reference/opentorsion_ice/mendes2008.toml) with a parametric [gas] cycle:
+  ``balance.torque`` (the state, the fine grid of the gas cycle, and one virtual shift of each
+  of the six crank pins: 8) and ``balance.torsional_vibration`` (the state and the fine
+  grid: 2);
 - the Junkers Jumo 205 (twelve throws on two crankshafts, opposed pistons, [gas]):
   ``balance.torque`` (the state, four for the inner dead centres, the fine grid, and twelve pins).
 """
@@ -19,7 +20,12 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 GAS = '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\nimep = "15 bar"\n'
 CASES = [
-    ("Mendes diesel with [gas]", "tests/validation/reference/opentorsion_ice/mendes2008.toml", GAS, "torque"),
+    (
+        "Mendes diesel with [gas]",
+        "tests/validation/reference/opentorsion_ice/mendes2008.toml",
+        GAS,
+        "torque",
+    ),
     (
         "Mendes diesel with [gas]",
         "tests/validation/reference/opentorsion_ice/mendes2008.toml",

@@ -16,9 +16,14 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.analysis.balancer import built_shafts, rolling_moment_phasor
-from balance_cli.kinematics.linkage import BALANCER, COUNTERWEIGHT, CRANK, engine_angles, linkage_state
+from balance_cli.kinematics.linkage import (
+    BALANCER,
+    COUNTERWEIGHT,
+    CRANK,
+    engine_angles,
+    linkage_state,
+)
 from balance_cli.model import BalancerMass, BalancerShaftSpec, CounterweightMass
-
 from tests.support import CONFIGS, exact_b, invoke, write
 
 M, ROT, R, L, RPM, D = 0.6, 0.3, 0.045, 0.15, 3000.0, 0.1
@@ -580,13 +585,13 @@ def test_write_refuses_a_rotary(tmp_path):
 @pytest.mark.parametrize("direction", [1, -1])
 def test_a_counterweight_turns_with_its_own_crankshaft(direction):
     """Two crankshafts (the second at x = 1 m, turning with or against the first, the opposed
-    single of tests/analysis/test_crankshafts.py). A counterweight of unbalance m·ρ at angle α on throw 2
-    (phase β = 180° on crankshaft 2) sits at direction·(θ + β + α) about that crankshaft's
-    axis: its inertia force m·ρ·ω²·e^{i·direction·(θ + β + α)} is a forward first order of
-    m·ρ·ω²·e^{i(β+α)} when the shaft turns with the first, a backward one of
+    single of tests/analysis/test_crankshafts.py). A counterweight of unbalance m·ρ at angle α
+    on throw 2 (phase β = 180° on crankshaft 2) sits at direction·(θ + β + α) about that
+    crankshaft's axis: its inertia force m·ρ·ω²·e^{i·direction·(θ + β + α)} is a forward first
+    order of m·ρ·ω²·e^{i(β+α)} when the shaft turns with the first, a backward one of
     m·ρ·ω²·e^{−i(β+α)} against it; it loads crankshaft 2's main bearings by that much and
     crankshaft 1's not at all."""
-    from tests.support import OPPOSED_OMEGA as OMEGA, opposed_single
+    from tests.support import OPPOSED_OMEGA as OMEGA, opposed_single  # noqa: I001
 
     me, alpha, beta = 0.05, math.radians(30.0), math.pi
     bare = opposed_single(0.0, direction)

@@ -14,8 +14,7 @@ from balance_cli.analysis.balancing import Plane
 from balance_cli.analysis.counterweight import counterweights
 from balance_cli.analysis.planes import plane_at_throw
 from balance_cli.errors import CounterweightError
-
-from tests.support import BRAMO, CONFIGS, exact_b, make_engine, V12
+from tests.support import BRAMO, CONFIGS, V12, exact_b, make_engine
 
 W12 = CONFIGS / "nakanishi-w12-60-2stroke.toml"
 M_P, M_C, A, B, M_K, D = 2.0, 2.4, 0.65, 0.35, 2.0, 0.150
@@ -59,7 +58,8 @@ def test_nakanishi_v12_counterweights_on_throws_1_and_6():
     """§ 4: m_w = (2√3/5)·(r/r_w)·{m_p + (2a + b)·m_c + m_k}; afterwards nothing below the 6th."""
     engine = load(V12)
     r_w = 0.060
-    result = counterweights(engine, [plane_at_throw(engine, 1), plane_at_throw(engine, 6)], radius_m=r_w,
+    result = counterweights(engine, [plane_at_throw(engine, 1), plane_at_throw(engine, 6)],
+                            radius_m=r_w,
                      max_order=8)
     expected = 2 * math.sqrt(3) / 5 * (engine.crank_radius_m / r_w) * (M_P + (2 * A + B) * M_C + M_K)
     for weight in result.counterweights:
@@ -195,7 +195,8 @@ def test_shaft_with_test_masses_runs_balanced_on_the_machine():
     own m_k, a forward first order Σ (m_test + m_k)·r·ω²·e^{iβ_j} and its moment about z̄;
     the engine's counterweights (m·ρ·ω²·e^{iφ} in their planes) must cancel both exactly."""
     engine = load(V12)
-    result = counterweights(engine, [plane_at_throw(engine, 1), plane_at_throw(engine, 6)], test_masses=True)
+    result = counterweights(engine, [plane_at_throw(engine, 1), plane_at_throw(engine, 6)],
+                            test_masses=True)
     omega2, r, z_mean = engine.speed_rad_s**2, engine.crank_radius_m, engine.mean_z_m
     force = moment = 0j
     for throw, mass in zip(engine.throws, result.test_masses_kg):
@@ -392,7 +393,8 @@ def test_offset_follows_the_engine_vertical(vertical_deg, cos_sin):
 ])
 def test_bad_shaft_offsets(offsets, words):
     with pytest.raises(CounterweightError, match=words) as info:
-        counterweights(load(CONFIGS / "inline-4-car.toml"), shaft_orders=(2,), shaft_offsets_m=offsets)
+        counterweights(load(CONFIGS / "inline-4-car.toml"), shaft_orders=(2,),
+                       shaft_offsets_m=offsets)
     assert info.value.parameter == "shaft_offsets_m"
 
 

@@ -12,9 +12,13 @@ import balance_cli as balance
 from balance_cli.analysis.firing import firing_sequence
 from balance_cli.errors import ConfigError
 from balance_cli.kinematics import tdc_angles
+from tests.support import JUMO, VR6, opposed_single
+from tests.support import OPPOSED_L as L
+from tests.support import OPPOSED_M as M
+from tests.support import OPPOSED_OMEGA as OMEGA
+from tests.support import OPPOSED_R as R
+from tests.support import OPPOSED_RPM as RPM
 
-from tests.support import (JUMO, OPPOSED_L as L, OPPOSED_M as M, OPPOSED_OMEGA as OMEGA,
-    OPPOSED_R as R, OPPOSED_RPM as RPM, opposed_single, VR6)
 
 def travel_harmonic(k, r=R, l=L, n=4096):
     """a_k of one piston's travel s(θ) = r·cos θ + √(l² − r²·sin²θ) = Σ a_k cos kθ, by the

@@ -9,7 +9,6 @@ from balance_cli import load
 from balance_cli.analysis.firing import firing_sequence as firing
 from balance_cli.errors import FiringError, ModelError
 from balance_cli.model import Cylinder, Engine, Throw
-
 from tests.support import CONFIGS, make_engine
 
 INLINE4 = [(0, 0.0), (180, 0.1), (180, 0.2), (0, 0.3)]

@@ -12,8 +12,8 @@ import balance_cli
 import balance_cli as balance
 from balance_cli.analysis.torque import torque
 from balance_cli.model import GasCycle
-
 from tests.support import CONFIGS, invoke, make_engine
+
 
 def engine_with_gas(throws, imep_bar=12.0, cycle=4):
     engine = make_engine([0], throws, r=0.045, l=0.15, m=0.5, rpm=3000.0, cycle=cycle)

@@ -15,7 +15,6 @@ import balance_cli as balance
 from balance_cli.analysis.torque import torque
 from balance_cli.cranksearch import search
 from balance_cli.errors import AnalysisError
-
 from tests.support import CONFIGS
 
 HEAD = """

@@ -12,10 +12,9 @@ import pytest
 from numpy.testing import assert_allclose
 
 import balance_cli as balance
-from balance_cli.analysis.marine import check_classes, DEFAULT_PRU_CLASSES, pru_class
+from balance_cli.analysis.marine import DEFAULT_PRU_CLASSES, check_classes, pru_class
 from balance_cli.units import parse_quantity
-
-from tests.support import CONFIGS, exact_b, invoke, TWIN
+from tests.support import CONFIGS, TWIN, exact_b, invoke
 
 MARINE = CONFIGS / "marine-6-2stroke.toml"
 
@@ -169,7 +168,8 @@ def test_torque_gives_the_indicated_power_of_a_pressure_file_or_gas_cycle(tmp_pa
                     rtol=1e-15)
     compared = balance.analyse(engine).to_dict()["power_kW"]
     assert_allclose(torques.indicated_power_kw, compared, rtol=1e-4)
-    document = json.loads(invoke("torque", CONFIGS / "abc-dragonfly.toml", "--format", "json").output)
+    document = json.loads(invoke("torque", CONFIGS / "abc-dragonfly.toml", "--format",
+                                 "json").output)
     assert_allclose(document["engines"][0]["indicated_power_kW"], torques.indicated_power_kw,
                     rtol=1e-12)
     assert "Indicated power (mean gas torque × ω): 282.1 kW." in invoke(

@@ -11,8 +11,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 import balance_cli as balance
-
-from tests.support import exact_b, make_engine, TWIN
+from tests.support import TWIN, exact_b, make_engine
 
 M, R, L, RPM, D = 0.6, 0.045, 0.15, 3000.0, 0.1
 W = RPM * math.pi / 30.0

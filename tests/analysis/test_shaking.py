@@ -11,8 +11,8 @@ from numpy.testing import assert_allclose
 import balance_cli as balance
 from balance_cli.analysis.shaking import shaking_forces as shaking
 from balance_cli.kinematics.linkage import linkage_state
-
 from tests.support import CONFIGS, make_engine
+
 
 def series(q):
     """Classic series of the piston acceleration (Tanaka 1925, B_2n; lecture notes eq. 4.17).
@@ -39,7 +39,8 @@ def _richardson_second_derivative(f, x, h, levels):
 
 
 def single_cylinder_harmonics(q, max_order):
-    """B_k of one plain slider-crank (checked against the series in test_harmonics_match_the_series_to_its_truncation_error)."""
+    """B_k of one plain slider-crank (checked against the series in
+    test_harmonics_match_the_series_to_its_truncation_error)."""
     engine = make_engine([0], [(0, 0.0)], r=0.08, l=0.08 / q)
     result = shaking(engine, samples=256, max_order=max_order)
     return {o.order: 2 * o.force_forward.real / engine.unit_force_n for o in result.orders}

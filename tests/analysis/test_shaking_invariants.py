@@ -13,7 +13,6 @@ from numpy.testing import assert_allclose
 
 from balance_cli.analysis.shaking import shaking_forces as shaking
 from balance_cli.kinematics.linkage import check_assembly, linkage_state
-
 from tests.support import make_engine
 
 SAMPLES = 256

@@ -8,14 +8,14 @@ import dataclasses
 import math
 
 import numpy as np
-from hypothesis import assume, given, HealthCheck, settings, strategies as st
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
 from numpy.testing import assert_allclose
 
 from balance_cli.analysis.shaking import shaking_forces as shaking
 from balance_cli.errors import ModelError
 from balance_cli.kinematics.linkage import check_assembly
 from balance_cli.model import Throw
-
 from tests.support import make_engine
 
 SETTINGS = settings(derandomize=True, max_examples=40, deadline=None,
@@ -90,7 +90,8 @@ def test_doubling_the_speed_quadruples_every_force(engine):
 @SETTINGS
 @given(engines(), st.floats(-math.pi, math.pi))
 def test_an_engine_turned_as_a_whole_has_the_same_maxima(engine, delta):
-    """Turning every bank by δ only changes phases (see test_turning_the_banks_turns_each_order for the law)."""
+    """Turning every bank by δ only changes phases (see test_turning_the_banks_turns_each_order
+    for the law)."""
     turned = dataclasses.replace(engine, bank_angles_rad=tuple(b + delta for b in engine.bank_angles_rad))
     tol = 1e-10 * scale(engine)
     for a, b in zip(orders(engine), orders(turned)):

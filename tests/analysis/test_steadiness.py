@@ -9,7 +9,6 @@ from numpy.testing import assert_allclose
 
 from balance_cli.analysis.steadiness import flywheel_for, steadiness
 from balance_cli.errors import AnalysisError
-
 from tests.support import sinusoid, strict_json
 
 OMEGA = 2 * math.pi * 1200 / 60
@@ -119,7 +118,7 @@ def test_a_target_just_above_one_half_gives_the_least_steadiness():
     """Guards against --target 0.50000001 being 'below the least steadiness (about 0 …)': the
     value at the very edge where the engine stops. The least is the steadiness just above
     that edge, and asking for a little more than it must then succeed."""
-    import re
+    import re  # noqa: I001 (the imports as the test was written)
 
     from balance_cli.errors import AnalysisError
     from balance_cli.analysis.steadiness import flywheel_for, steadiness

@@ -9,9 +9,9 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.analysis.torque import torque
-
 from tests.support import CONFIGS, make_engine
 from tests.validation.reference import fraeys_newton_euler
+
 
 def single(r=0.05, l=0.2, m=1.0, rpm=3000.0, **extra):
     return make_engine([0], [(0, 0.0)], r=r, l=l, m=m, rpm=rpm, cycle=2, **extra)

@@ -6,8 +6,17 @@ import re
 import pytest
 from numpy.testing import assert_allclose
 
-from tests.support import (BOXER, check_refused, CONFIGS, invoke, PART3, replaced, snapshot,
-    twin_file)
+from tests.support import (
+    BOXER,
+    CONFIGS,
+    PART3,
+    check_refused,
+    invoke,
+    replaced,
+    snapshot,
+    twin_file,
+)
+
 
 def test_unknown_reference_lists_the_engines():
     result = invoke("compare", PART3, "--reference", "Zeppelin")

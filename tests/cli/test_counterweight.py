@@ -8,9 +8,17 @@ import pytest
 from numpy.testing import assert_allclose
 
 from balance_cli import load
-
-from tests.support import (check_refused, CONFIGS, exact_b, invoke, JUMO, snapshot, TWIN,
-    twin_file, V12)
+from tests.support import (
+    CONFIGS,
+    JUMO,
+    TWIN,
+    V12,
+    check_refused,
+    exact_b,
+    invoke,
+    snapshot,
+    twin_file,
+)
 
 ROTARY = CONFIGS / "clerget-rotary.toml"
 ROTARY_CASES = [

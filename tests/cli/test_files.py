@@ -11,7 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.support import check_refused, invoke, PART3, snapshot, TWIN, twin_file
+from tests.support import PART3, TWIN, check_refused, invoke, snapshot, twin_file
+
 
 def as_ordinary_user(args):
     """Run the command line as it runs for a user without root's powers: directly when this
@@ -73,7 +74,8 @@ def test_missing_file_and_empty_folder(tmp_path):
 def test_unwritable_output_leaves_nothing(tmp_path):
     blocker = tmp_path / "file"
     blocker.write_text("x")
-    result = invoke("compare", PART3 / "1a-v8-90-flat.toml", "--output", blocker / "sub" / "out.json")
+    result = invoke("compare", PART3 / "1a-v8-90-flat.toml", "--output",
+                    blocker / "sub" / "out.json")
     assert result.exit_code != 0 and "cannot create the folder" in result.output
     assert isinstance(result.exception, SystemExit), result.exception
 

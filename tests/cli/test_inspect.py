@@ -1,6 +1,7 @@
 """balance validate, list and show."""
 
-from tests.support import check_refused, CONFIGS, invoke, ROOT, snapshot, TODAY
+from tests.support import CONFIGS, ROOT, TODAY, check_refused, invoke, snapshot
+
 
 def _listing(folder):
     from click.testing import CliRunner
@@ -87,6 +88,7 @@ def test_list_reports_an_invalid_file_after_the_tables_of_the_valid_ones(tmp_pat
 def test_show_prints_the_parts_and_the_rod_inertias_they_leave_out():
     """Table VIII's parts, and C = J − B·H·(L − H), c = j − b·h·(l − h) by hand."""
     from click.testing import CliRunner
+
     from balance_cli.cli import main
     result = CliRunner().invoke(main, ["show", str(CONFIGS / "bramo-323.toml")])
     assert result.exit_code == 0, result.output

@@ -7,7 +7,7 @@ import re
 import pytest
 from numpy.testing import assert_allclose
 
-from tests.support import check_refused, CONFIGS, invoke, PART3, snapshot, TWIN, twin_file
+from tests.support import CONFIGS, PART3, TWIN, check_refused, invoke, snapshot, twin_file
 
 #: (id, command arguments after the command name and the input, words); input TWIN, or ROTARY
 OPTION_CASES = [
@@ -49,7 +49,8 @@ def test_max_order_needs_enough_samples():
 
 
 def test_coarse_sampling_is_reported():
-    result = invoke("compare", CONFIGS / "inline-4-marine.toml", "--samples", "16", "--max-order", "3")
+    result = invoke("compare", CONFIGS / "inline-4-marine.toml", "--samples", "16", "--max-order",
+                    "3")
     assert result.exit_code == 0
     assert "16 samples a revolution are too few for orders up to 3" in result.output
 

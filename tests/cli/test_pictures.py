@@ -10,9 +10,18 @@ import pytest
 from balance_cli import plot
 from balance_cli.cli.batch import progress
 from balance_cli.units import STANDARD_GRAVITY
+from tests.support import (
+    CAR_GAS,
+    CONFIGS,
+    RADIAL,
+    TWIN,
+    V8,
+    check_refused,
+    invoke,
+    snapshot,
+    twin_file,
+)
 
-from tests.support import (CAR_GAS, check_refused, CONFIGS, invoke, RADIAL, snapshot, TWIN,
-    twin_file, V8)
 
 @pytest.mark.parametrize("kind", plot.KINDS)
 def test_plot_command_writes_each_kind(tmp_path, kind):
@@ -140,7 +149,8 @@ def test_plot_command_reports_a_torque_error_in_one_line(tmp_path, monkeypatch):
 def test_plot_command_draws_moments(tmp_path, couples):
     for kind in ("locus", "star"):
         out = tmp_path / f"{kind}.svg"
-        result = invoke("plot", CONFIGS / "nakanishi-v12-90-2stroke.toml", "--kind", kind, "--of", "moment",
+        result = invoke("plot", CONFIGS / "nakanishi-v12-90-2stroke.toml", "--kind", kind, "--of",
+                        "moment",
                      "--order", "1", "--output", out)
         assert result.exit_code == 0, result.output
         assert "free moment" in out.read_text(encoding="utf-8")

@@ -9,8 +9,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 import balance_cli as balance
-
-from tests.support import check_refused, CONFIGS, invoke, ROOT, snapshot, TWIN
+from tests.support import CONFIGS, ROOT, TWIN, check_refused, invoke, snapshot
 
 #: the library's engines, counted rather than written down: adding a configuration must not
 #: break these tests

@@ -11,8 +11,8 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.cranksearch import search
+from tests.support import ROOT, TEMPLATES, check_refused, inline_template_text, invoke, snapshot
 
-from tests.support import check_refused, inline_template_text, invoke, ROOT, snapshot, TEMPLATES
 
 def test_json_document_has_the_documented_keys():
     import json
@@ -35,7 +35,8 @@ def test_written_arrangements_are_complete_configurations(tmp_path):
     import json
 
     out = tmp_path / "best"
-    run = invoke("search", TEMPLATES / "nakanishi-w12-60-2stroke.toml", "--objective", "F1,F2,F3,M2,M1:0.01",
+    run = invoke("search", TEMPLATES / "nakanishi-w12-60-2stroke.toml",
+                 "--objective", "F1,F2,F3,M2,M1:0.01",
                  "--top", "2", "--write", out, "--format", "json", "--workers", "1")
     assert run.exit_code == 0, run.output
     listed = json.loads(run.output)["results"]
@@ -104,7 +105,8 @@ def test_write_never_replaces_the_template_or_the_output(tmp_path):
 
 def test_a_failed_output_writes_no_folder(tmp_path):
     (tmp_path / "taken").mkdir()
-    run = invoke("search", TEMPLATES / "inline-6-2stroke.toml", "--top", "2", "--write", tmp_path / "new",
+    run = invoke("search", TEMPLATES / "inline-6-2stroke.toml", "--top", "2",
+                 "--write", tmp_path / "new",
                  "-o", tmp_path / "taken")
     assert run.exit_code == 1 and not (tmp_path / "new").exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["taken"]

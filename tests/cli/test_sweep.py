@@ -8,8 +8,10 @@ import xml.etree.ElementTree as ET
 import pytest
 from numpy.testing import assert_allclose
 
-from tests.support import (CONFIGS, invoke, rad_s, TWIN, TWIN_CRANK_RADIUS_M as R, TWIN_PITCH,
-    TWIN_RECIPROCATING_KG as M_REC, write)
+from tests.support import CONFIGS, TWIN, TWIN_PITCH, invoke, rad_s, write
+from tests.support import TWIN_CRANK_RADIUS_M as R
+from tests.support import TWIN_RECIPROCATING_KG as M_REC
+
 
 def test_table_csv_and_json(tmp_path):
     path = write(tmp_path, TWIN)
@@ -94,7 +96,8 @@ def test_plot_writes_a_real_picture(tmp_path, suffix):
 
 def test_speed_fixes_the_speed(tmp_path):
     path = write(tmp_path, TWIN)
-    result = invoke("sweep", path, "--vary", "rod_length", "--values", "140 mm", "--speed", "1500 rpm",
+    result = invoke("sweep", path, "--vary", "rod_length", "--values", "140 mm", "--speed",
+                    "1500 rpm",
                  "--format", "json")
     assert json.loads(result.output)["overrides"] == {"speed": "1500 rpm"}
     bad = invoke("sweep", path, "--vary", "rod_length", "--values", "140 mm", "--speed", "3 kg")
@@ -105,7 +108,8 @@ def test_speed_fixes_the_speed(tmp_path):
 
 def test_markdown_and_one_sampling_warning_for_the_whole_sweep():
     # 37 samples leave the Dragonfly's orders above 8 aliasing at every speed: one line says so
-    result = invoke("sweep", CONFIGS / "abc-dragonfly.toml", "--vary", "speed", "--from", "1500 rpm",
+    result = invoke("sweep", CONFIGS / "abc-dragonfly.toml", "--vary", "speed", "--from",
+                    "1500 rpm",
                  "--to", "1800 rpm", "--steps", "4", "--samples", "37", "--quantity", "F1,F2",
                  "--format", "markdown")
     assert result.exit_code == 0, result.output

@@ -12,8 +12,8 @@ import pytest
 from numpy.testing import assert_allclose
 
 import balance_cli as balance
+from tests.support import CONFIGS, JUMO, invoke, sinusoid, strict_json
 
-from tests.support import CONFIGS, invoke, JUMO, sinusoid, strict_json
 
 def write_torque(path, values, cycle=720.0, unit="Nm"):
     angles = np.arange(len(values)) * cycle / len(values)

@@ -5,7 +5,8 @@ import json
 import pytest
 from numpy.testing import assert_allclose
 
-from tests.support import INLINE6, invoke, TORSION6, TORSION_ORDERS
+from tests.support import INLINE6, TORSION6, TORSION_ORDERS, invoke
+
 
 def test_tables_json_csv_and_pictures(tmp_path):
     path = tmp_path / "six.toml"
@@ -89,7 +90,8 @@ def test_units_convert_the_vibratory_torque(tmp_path):
     path = tmp_path / "six.toml"
     path.write_text(INLINE6 + TORSION6)
     si = invoke("torsion", path, "--speeds", "2000", "--format", "csv").output.splitlines()
-    kn = invoke("torsion", path, "--speeds", "2000", "--format", "csv", "--units", "kN").output.splitlines()
+    kn = invoke("torsion", path, "--speeds", "2000", "--format", "csv", "--units",
+                "kN").output.splitlines()
     assert si[0].split(",")[5] == "torque_Nm" and kn[0].split(",")[5] == "torque_kNm"
     for a, b in zip(si[1:], kn[1:]):
         assert_allclose(float(b.split(",")[5]), float(a.split(",")[5]) / 1000, rtol=1e-12)

@@ -17,8 +17,8 @@ import pytest
 import balance_cli as balance
 from balance_cli.config import find_configs, load_many, load_template, read_configuration
 from balance_cli.config.library import library_folder, resolve, templates_folder
+from tests.support import CONFIGS, PART3, ROOT, TEMPLATES, invoke
 
-from tests.support import CONFIGS, invoke, PART3, ROOT, TEMPLATES
 
 @pytest.fixture
 def elsewhere(tmp_path, monkeypatch):

@@ -7,14 +7,24 @@ import tomllib
 
 import pytest
 from click.testing import CliRunner
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from balance_cli.cli import main
 from balance_cli.config import build
 from balance_cli.errors import ConfigError
-
-from tests.support import (BOXER, check_refused, invoke, LINKED, replaced, snapshot, TEMPLATES,
-    TWIN, twin_file, write)
+from tests.support import (
+    BOXER,
+    LINKED,
+    TEMPLATES,
+    TWIN,
+    check_refused,
+    invoke,
+    replaced,
+    snapshot,
+    twin_file,
+    write,
+)
 
 BAD_INPUTS = [
     # (change to TWIN, key named in the message, words of the fix)
@@ -291,7 +301,7 @@ def test_malformed_configurations_end_in_a_clean_error(text):
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError:
-        return  # load() turns this into a ConfigError; covered by test_bad_configuration_gets_one_clear_message
+        return  # load() turns this into a ConfigError; see test_bad_configuration_…
     try:
         build(data, "random.toml")
     except ConfigError as exc:

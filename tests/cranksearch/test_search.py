@@ -12,8 +12,7 @@ from numpy.testing import assert_allclose
 import balance_cli as balance
 from balance_cli.cranksearch import parse_objective, search
 from balance_cli.errors import AnalysisError, ConfigError
-
-from tests.support import inline_template_text, invoke, ROOT, search_api, TEMPLATES
+from tests.support import ROOT, TEMPLATES, inline_template_text, invoke, search_api
 from tests.validation.reference import arrangements as reference  # independent: numpy only
 
 #: coefficients are ratios of exact phasor sums: rounding of the FFT leaves about 1e-13

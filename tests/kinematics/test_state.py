@@ -10,9 +10,13 @@ from numpy.testing import assert_allclose
 import balance_cli as balance
 from balance_cli.analysis.firing import firing_angles
 from balance_cli.analysis.pressure import CYCLE_GRID_DEG
-from balance_cli.kinematics import (FINE_SAMPLES, fine_travel, kinematic_state, linkage,
-    linkage_state)
-
+from balance_cli.kinematics import (
+    FINE_SAMPLES,
+    fine_travel,
+    kinematic_state,
+    linkage,
+    linkage_state,
+)
 from tests.support import REFERENCE, ROOT
 
 MENDES = (REFERENCE / "opentorsion_ice" / "mendes2008.toml").read_text(encoding="utf-8")

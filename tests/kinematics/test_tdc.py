@@ -12,8 +12,8 @@ import balance_cli
 import balance_cli as balance
 from balance_cli import load
 from balance_cli.kinematics import tdc_angles
+from tests.support import CONFIGS, VR6, invoke, make_engine
 
-from tests.support import CONFIGS, invoke, make_engine, VR6
 
 def test_tdc_is_where_bank_angle_equals_crank_phase():
     """Throw at phase β, bank at γ: TDC when θ = γ − β (mod 360°) for plain rods, no offset."""

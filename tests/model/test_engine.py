@@ -9,8 +9,8 @@ import pytest
 import balance_cli as balance
 from balance_cli.errors import ModelError
 from balance_cli.model import Cylinder, Throw
+from tests.support import TWIN, make_engine
 
-from tests.support import make_engine, TWIN
 
 def test_two_cylinders_in_one_bore_are_refused_in_code():
     engine = make_engine([0], [(0, 0.0), (180, 0.1)])

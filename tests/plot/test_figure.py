@@ -10,8 +10,8 @@ import pytest
 import balance_cli as balance
 from balance_cli import plot
 from balance_cli.errors import PlotError
-
 from tests.support import CONFIGS, V8
+
 
 def test_colours_are_distinct_for_many_engines():
     for count in (3, 10, 17, 20, 31):

@@ -7,6 +7,7 @@ from numpy.testing import assert_allclose
 
 from balance_cli import plot
 
+
 def test_firing_figure_draws_one_spoke_per_firing(library):
     """The spokes are one line broken at NaN: (0, 0) to the rim, once per firing."""
     chosen = [r for r in library if r.engine.cycle == 2][:1] + [library[0]]

@@ -6,8 +6,8 @@ import numpy as np
 from numpy.testing import assert_allclose
 
 from balance_cli import analyse, load, plot
-
 from tests.support import MRW2, PITCH, V8
+
 
 def test_radial_secondary_locus_is_a_circle_of_its_forward_amplitude(part3):
     """F⁺e^{2iθ} + F⁻e^{−2iθ}: the radius stays within |F⁻| of |F⁺| (F⁻ is 0.06 % of F⁺)."""
@@ -22,7 +22,7 @@ def test_radial_secondary_locus_is_a_circle_of_its_forward_amplitude(part3):
 def test_flat_crank_v8_secondary_locus_is_a_segment_across(part3):
     x, y = plot.locus_points(part3["1a-v8-90-flat"], order=2)
     assert np.abs(y).max() < 1e-12
-    assert_allclose(np.abs(x).max(), 0.21473, atol=1e-5)   # √2/2·B2, tests/validation/test_papers.py
+    assert_allclose(np.abs(x).max(), 0.21473, atol=1e-5)   # √2/2·B2: test_papers
     assert x.min() < 0 < x.max()
 
 

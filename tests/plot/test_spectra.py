@@ -8,8 +8,8 @@ import balance_cli as balance
 from balance_cli import plot
 from balance_cli.errors import PlotError
 from balance_cli.units import STANDARD_GRAVITY
-
 from tests.support import CONFIGS
+
 
 def test_spectrum_data_is_the_orders_of_compare_in_each_unit(library):
     """Per cylinder: |F|/(m·r·ω²·n), N·m; N: N, N·m; kgf: kgf and kgf·m (÷ 9.80665)."""

@@ -9,8 +9,8 @@ from numpy.testing import assert_allclose
 
 from balance_cli import analyse, load, plot
 from balance_cli.errors import PlotError
-
 from tests.support import MRW2, PITCH, RADIAL
+
 
 @pytest.mark.parametrize("config", ["tanaka-part3/1b-v8-90-flat-links.toml", "tanaka-part3/5a-radial-9.toml",
                                     "tanaka-part3/5b-rotary-9.toml", "bramo-323.toml",
@@ -51,7 +51,7 @@ def test_inline_3_moment_star_chains_each_cylinders_lever_times_its_force(couple
     """Cylinder i at z_i = (i − 1)·d, z̄ = d, primary force m·r·ω²·cos(θ + β_i) along the axis
     (exact for a plain rod without pin offset): forward share (z_i − z̄)·m·r·ω²/2·e^{iβ_i},
     backward the conjugate. The chain ends at the primary couple, √3/2·m·r·ω²·d each way, √3·
-    m·r·ω²·d at most (tests/analysis/test_results.py); cylinder 2, on z̄, has no share."""
+    m·r·ω²·d at most (test_results); cylinder 2, on z̄, has no share."""
     result = couples["inline-3"]
     chains = plot.star_chains(result, 1, of="moment")
     for part, sign in (("forward", 1), ("backward", -1)):
@@ -69,7 +69,7 @@ def test_inline_3_moment_star_chains_each_cylinders_lever_times_its_force(couple
 
 
 def test_cross_plane_v8_primary_couple_is_all_forward_and_the_counterweight_leaves_none(couples):
-    """√10·m·r·ω²·d (tests/analysis/test_results.py; each throw's two cylinders 90° apart make a rotating force
+    """√10·m·r·ω²·d (test_results; each throw's two cylinders 90° apart make a rotating force
     m·r·ω²), all forward: the star's forward chain ends there, the backward one at zero, and
     after the ideal counterweight the first-order moment locus is nothing."""
     result = couples["v8-cross"]

@@ -10,6 +10,7 @@ from balance_cli import plot
 from balance_cli.errors import PlotError
 from balance_cli.units import STANDARD_GRAVITY
 
+
 def torque_artists(fig, label):
     from matplotlib.lines import Line2D
 

@@ -3,6 +3,7 @@ out of the table's columns."""
 
 from tests.support import BOXER, invoke
 
+
 def test_names_are_escaped_in_markdown(tmp_path):
     boxer = tmp_path / "boxer.toml"
     boxer.write_text(BOXER, encoding="utf-8")

@@ -7,7 +7,7 @@ import subprocess
 import pytest
 from numpy.testing import assert_allclose
 
-from tests.support import CONFIGS, invoke, PART3, V8
+from tests.support import CONFIGS, PART3, V8, invoke
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 CHROME_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",

@@ -17,7 +17,6 @@ from numpy.testing import assert_allclose
 
 from balance_cli.config import read_configuration
 from balance_cli.studies.family import family
-
 from tests.support import CONFIGS, exact_b, invoke
 
 MARINE = CONFIGS / "marine-6-2stroke.toml"

@@ -7,8 +7,8 @@ import pytest
 import balance_cli
 import balance_cli as balance
 from balance_cli.studies.regress import regression as regress
-
 from tests.support import CONFIGS
+
 
 def test_regress_from_python():
     """The library function on a document: a phase that turns is a row; one of a phasor at

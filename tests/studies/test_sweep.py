@@ -15,9 +15,10 @@ from numpy.testing import assert_allclose
 import balance_cli as balance
 from balance_cli.config import reader as config_module
 from balance_cli.studies.sweep import SCHEMA, span
+from tests.support import CONFIGS, ROOT, SINGLE, TWIN, TWIN_PITCH, rad_s, write
+from tests.support import TWIN_CRANK_RADIUS_M as R
+from tests.support import TWIN_RECIPROCATING_KG as M_REC
 
-from tests.support import (CONFIGS, rad_s, ROOT, SINGLE, TWIN, TWIN_CRANK_RADIUS_M as R,
-    TWIN_PITCH, TWIN_RECIPROCATING_KG as M_REC, write)
 
 def second_order_force(r, l, m, omega, n=4096):
     """Amplitude of the exact second-order inertia force of one piston, N.

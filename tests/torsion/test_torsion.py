@@ -16,9 +16,9 @@ from balance_cli.analysis.cylinders import cylinder_torques
 from balance_cli.analysis.firing import firing_angles
 from balance_cli.analysis.torque import torque
 from balance_cli.errors import AnalysisError, ConfigError, TorsionUnavailable
-from balance_cli.torsion import phase_vector_sum, throw_inertias, torsional_vibration as torsion
-
-from tests.support import holzer, INLINE6, invoke, TORSION6, TORSION_ORDERS
+from balance_cli.torsion import phase_vector_sum, throw_inertias
+from balance_cli.torsion import torsional_vibration as torsion
+from tests.support import INLINE6, TORSION6, TORSION_ORDERS, holzer, invoke
 
 #: one cylinder on one throw (for the SDOF and reduced-mass checks)
 SINGLE = """\

@@ -15,7 +15,6 @@ from click.testing import CliRunner
 import balance_cli as balance
 from balance_cli.cli import main
 from balance_cli.studies.regress import regression as regress
-
 from tests.support import ROOT
 
 GOLDEN = ROOT / "tests" / "golden" / "compare.json"

@@ -18,8 +18,7 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.cranksearch import search
-
-from tests.support import CONFIGS, exact_b, ROOT
+from tests.support import CONFIGS, ROOT, exact_b
 
 FAMILY = {n: CONFIGS / f"man-s80mc-c7-{n}cyl.toml" for n in (6, 7, 8)}
 TEMPLATE = ROOT / "templates" / "marine-family-2stroke.toml"

@@ -8,8 +8,8 @@ from numpy.testing import assert_allclose
 
 import balance_cli as balance
 from balance_cli.torsion import torsional_vibration as torsion
+from tests.support import REFERENCE, holzer
 
-from tests.support import holzer, REFERENCE
 
 def test_mendes_model_frequencies_by_holzer():
     """The openTorsion example's nine-inertia model of Mendes et al. (2008), Fig. 4: every

@@ -11,7 +11,6 @@ from numpy.testing import assert_allclose
 from balance_cli import analyse, load
 from balance_cli.analysis.shaking import ellipse
 from balance_cli.units import STANDARD_GRAVITY
-
 from tests.support import CONFIGS, exact_b
 
 Q = 80.0 / 269.5

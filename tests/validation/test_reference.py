@@ -4,7 +4,6 @@ balance."""
 import pytest
 
 from balance_cli import load
-
 from tests.validation.reference import evaluate
 
 ROWS = evaluate.rows()

@@ -28,7 +28,6 @@ import pytest
 from numpy.testing import assert_allclose
 
 import balance_cli as balance
-
 from tests.support import ROOT, TODAY
 
 FAMILIES = ("inline", "v", "boxer", "w")

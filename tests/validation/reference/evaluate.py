@@ -18,10 +18,10 @@ from pathlib import Path
 import numpy as np
 
 from balance_cli import analyse, load
-from balance_cli.kinematics.linkage import close_linkage as linkage
 from balance_cli.analysis.marine import power_related_unbalance
 from balance_cli.analysis.steadiness import steadiness
 from balance_cli.analysis.torque import torque
+from balance_cli.kinematics.linkage import close_linkage as linkage
 from balance_cli.model import Cylinder, Engine, Throw
 from balance_cli.units import STANDARD_GRAVITY
 
