@@ -24,6 +24,8 @@ NAN, INF = math.nan, math.inf
 NUMBERS = ["x", NAN, INF, -INF, -1, 0, 1e300, -1e300, [], (), {}, True, object(), 2j]
 #: ... for something that must be a collection of things
 COLLECTIONS = [None, "x", NAN, INF, 0, 1e300, [], (), True, object(), [1, 2], ["x"]]
+
+
 @pytest.fixture(scope="module")
 def world(tmp_path_factory):
     folder = tmp_path_factory.mktemp("api")

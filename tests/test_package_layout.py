@@ -8,6 +8,8 @@ from pathlib import Path
 PACKAGE = Path(__file__).resolve().parent.parent / "balance_cli"
 #: the most lines a module may have: one idea, a few hundred lines (DESIGN.md)
 MOST_LINES = 500
+
+
 def modules():
     return sorted(PACKAGE.rglob("*.py"))
 

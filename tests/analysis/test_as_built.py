@@ -28,7 +28,12 @@ from tests.support import CONFIGS, exact_b, invoke, write
 
 M, ROT, R, L, RPM, D = 0.6, 0.3, 0.045, 0.15, 3000.0, 0.1
 W = RPM * math.pi / 30.0
+# FFT rounding is about 1e-13 of the largest force; cancellations are checked to 1e-9 of the
+# force that is cancelled, a wide margin that still catches any wrong angle or size (a 1e-6
+# error in either leaves 1e-6)
 CANCEL = 1e-9
+# figures that must not move at all (orders a counterweight or shaft does not touch): the same
+# sums with a few more terms, equal to rounding
 SAME = 1e-12
 V8 = textwrap.dedent(f"""\
     name = "cross-plane V8"
@@ -116,6 +121,8 @@ V8_WEIGHTS = textwrap.dedent(f"""\
     radius = "50 mm"
     angle = {ALPHA_DEG - 180!r}
 """)
+
+
 def lanchester(mass_radius, angle_deg=180.0, extra=""):
     """[[shafts]]: a pair at ±2× crank speed, each with one mass of ``mass_radius`` kg·m at
     ``angle_deg`` in its own sense of turning, at z̄ (the default)."""
@@ -179,6 +186,8 @@ BAD = [
      "cannot be given for a rotary engine"),
     ('frame = "rotary"\n' + ONE_SHAFT, "shafts", "cannot be given for a rotary engine"),
 ]
+
+
 def written_matches_report(tmp_path, body, *options):
     """Run ``counterweight`` with ``--write``; return (the report's JSON entry, the analysis of
     the written file)."""

@@ -17,7 +17,10 @@ from balance_cli.errors import CounterweightError
 from tests.support import BRAMO, CONFIGS, V12, exact_b, make_engine
 
 W12 = CONFIGS / "nakanishi-w12-60-2stroke.toml"
+# Nakanishi's masses in the library configurations (kg) and throw pitch d (m)
 M_P, M_C, A, B, M_K, D = 2.0, 2.4, 0.65, 0.35, 2.0, 0.150
+
+
 def assert_nothing_below(shaking_, order, unit):
     for o in shaking_.orders[: order - 1]:
         for value in (o.force_forward, o.force_backward, o.moment_forward, o.moment_backward):

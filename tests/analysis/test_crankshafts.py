@@ -30,6 +30,8 @@ def travel_harmonic(k, r=R, l=L, n=4096):
 
 
 GAS = '[gas]\nbore = "105 mm"\ncompression_ratio = 17\nimep = "8 bar"'
+
+
 def flat8_pair(gear_phase_deg, direction, crank=(0, 180, 0, 180), pitch=0.1):
     """Two flat-8s (180° V with two rods a pin, four throws), one above the other, geared 1:1."""
     throws = "\n".join(f'[[throws]]\nphase = {p}\nz = "{i * pitch} m"' for i, p in enumerate(crank))

@@ -17,6 +17,8 @@ from balance_cli.cranksearch import search
 from balance_cli.errors import AnalysisError
 from tests.support import CONFIGS
 
+# a crosshead two-stroke, round figures of a 600 mm bore engine: rods with mass and inertia
+# ([parts]) so that the rod's own dynamics enter the guide force
 HEAD = """
 name = "{name}"
 cycle = {cycle}
@@ -37,6 +39,8 @@ bore = "600 mm"
 compression_ratio = 18
 imep = "20 bar"
 """
+
+
 def engine_text(phases, pitch_m=1.02, gas=True, cycle=2, offset="0 mm", firing=None):
     text = HEAD.format(name=f"crosshead {len(phases)}", cycle=cycle, offset=offset,
                        firing="" if firing is None else f"firing_order = {list(firing)}")

@@ -16,7 +16,10 @@ from tests.support import TWIN, exact_b, make_engine
 M, R, L, RPM, D = 0.6, 0.045, 0.15, 3000.0, 0.1
 W = RPM * math.pi / 30.0
 UNIT = M * R * W**2     # m·r·ω² of one reciprocating mass, N
+# rounding of the FFT is about 1e-13 of the largest force; 1e-9 leaves a wide margin
 RTOL = 1e-9
+
+
 def record(engine, order, max_order=8):
     return balance.analyse(engine, max_order=max_order).to_dict()["orders"][order - 1]
 

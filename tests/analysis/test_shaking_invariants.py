@@ -18,6 +18,8 @@ from tests.support import make_engine
 SAMPLES = 256
 MAX_ORDER = 60
 CASES = 24
+
+
 def random_engine(seed, frame="fixed"):
     rng = np.random.default_rng(seed)
     n_banks = int(rng.integers(1, 4))

@@ -21,6 +21,8 @@ from tests.support import make_engine
 SETTINGS = settings(derandomize=True, max_examples=40, deadline=None,
                     suppress_health_check=[HealthCheck.too_slow])
 SAMPLES, MAX_ORDER = 128, 24
+
+
 @st.composite
 def engines(draw):
     n_banks = draw(st.integers(1, 3))

@@ -14,6 +14,8 @@ from tests.support import CONFIGS, ROOT, TWIN, check_refused, invoke, snapshot
 #: the library's engines, counted rather than written down: adding a configuration must not
 #: break these tests
 LIBRARY = len(balance.find_configs([CONFIGS]))
+
+
 @pytest.fixture
 def project(tmp_path, monkeypatch):
     """A user's repository: the library's configurations and a baseline of them, committed."""

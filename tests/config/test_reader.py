@@ -155,6 +155,8 @@ CONFIG_CASES = [
 NASTY = ['"abc"', "-1", "0", "1e400", "[]", "{}", "true", '"0 mm"', '"-5 kg"', '"1 rpm"',
          '"nan mm"', '"12 parsecs"', "[1, 2, 2]", "99999999999999999999", '"1e308 m"', '"1e-300 mm"',
          "[[1]]", '""', "3.5", "-0.0"]
+
+
 @st.composite
 def malformed(draw):
     text = draw(st.sampled_from([TWIN, LINKED]))

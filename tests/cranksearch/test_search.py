@@ -17,6 +17,8 @@ from tests.validation.reference import arrangements as reference  # independent:
 
 #: coefficients are ratios of exact phasor sums: rounding of the FFT leaves about 1e-13
 RTOL_COEFFICIENT = 1e-9
+
+
 def inline_template(n, cycle, pitch_mm=500):
     """An in-line template (λ = 0.25, rotating masses too) written like a user's file."""
     throws = "\n".join(f'[[throws]]\nz = "{j * pitch_mm} mm"' for j in range(n))

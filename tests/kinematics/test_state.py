@@ -21,6 +21,8 @@ from tests.support import REFERENCE, ROOT
 
 MENDES = (REFERENCE / "opentorsion_ice" / "mendes2008.toml").read_text(encoding="utf-8")
 GAS = '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\nimep = "15 bar"\n'
+
+
 def fresh(text, name):
     """An engine no other test has analysed (the states are kept by engine)."""
     return balance.loads(text.replace('name = "', f'name = "{name}: ', 1), name)

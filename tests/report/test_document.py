@@ -13,6 +13,8 @@ CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 CHROME_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
                 "--disable-background-networking", "--disable-component-update", "--disable-sync",
                 "--enable-logging=stderr", "--v=0", "--dump-dom"]
+
+
 def dump(page, profile):
     done = subprocess.run([CHROMIUM, *CHROME_FLAGS, f"--user-data-dir={profile}", page.as_uri()],
                           capture_output=True, text=True, timeout=120)

@@ -22,6 +22,8 @@ from tests.support import CONFIGS, exact_b, invoke
 MARINE = CONFIGS / "marine-6-2stroke.toml"
 M, R, L, D, RPM = 8000.0, 1.2, 2.9, 1.02, 105.0
 UNIT = M * R * (RPM * math.pi / 30) ** 2
+
+
 def couples(phases_deg):
     """|S₁| and |S₂| of a crank at the marine six's pitch."""
     n = len(phases_deg)

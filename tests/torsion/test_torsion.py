@@ -38,6 +38,8 @@ angle = 0
 [[throws]]
 phase = 0
 """
+
+
 def chain(inertias, stiffnesses, **extra):
     """A two-stroke engine of len(inertias) throws (all at phase 0 is enough for modes)
     whose [torsion] table gives these inertias and section stiffnesses."""

@@ -26,6 +26,8 @@ TEMPLATE = ROOT / "templates" / "marine-family-2stroke.toml"
 ORDERS = {6: (1, 5, 3, 4, 2, 6), 7: (1, 7, 2, 5, 4, 3, 6), 8: (1, 8, 3, 4, 7, 2, 5, 6)}
 KW_PER_CYLINDER = 3880.0       # the guide, Table 17.04.01 heading
 PITCH_M = 1.334                # estimated (the configurations' comments)
+
+
 def coefficient(order, k):
     """|Σ_j (j − j̄)·e^{ikβ_j}| in pitches for an even two-stroke: cylinder j fires at
     φ_j = 360°·(its place in the order)/N and its throw stands at β_j = −φ_j."""

@@ -13,7 +13,10 @@ from balance_cli.analysis.shaking import ellipse
 from balance_cli.units import STANDARD_GRAVITY
 from tests.support import CONFIGS, exact_b
 
+# Clerget proportions of Tanaka's Part III
 Q = 80.0 / 269.5
+
+
 def per_cylinder(result, order):
     """Forward, backward, max and min of order ``order`` per cylinder (× m_rec·r·ω²·n)."""
     o = result.shaking.orders[order - 1]

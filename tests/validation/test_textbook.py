@@ -41,6 +41,8 @@ NOISE = 1e-10
 #: exact values against exact values: the library's kinematics are exact, A_k from a
 #: 4096-point quadrature of an analytic periodic function is exact to rounding
 EXACT = 1e-9
+
+
 def slider_crank_a(lam, order, samples=4096):
     """A_k of the slider crank: x/r = cos φ + √(1/λ² − sin²φ) = Σ c_k cos kφ, and the inertia
     force −m·ẍ = m·r·ω²·Σ k²·c_k·cos kφ, so A_k = k²·c_k; c_k by the trapezoidal rule, which is
@@ -114,6 +116,9 @@ def series(engine, k):
     return fp, fm, mp, mm
 
 
+# the in-line 5 crank 0-72-288-144-216 at z' = −2..2: |Σz'e^{iβ}| and |Σz'e^{2iβ}|, by hand
+# −2 − e^{i72} + e^{i144} + 2e^{i216} = −4.7361 − 1.5388i and −2 − e^{i144} + e^{i288} + 2e^{i72}
+# = −0.2639 + 0.3633i: the in-line 5's two numbers, this time the other way round
 V10_S1 = math.sqrt(12.5 + 5.5 * math.sqrt(5))
 V10_S2 = math.sqrt(12.5 - 5.5 * math.sqrt(5))
 
