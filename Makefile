@@ -57,7 +57,7 @@ lint: $(LINT)
 bench: $(STAMP)
 	$(BIN)/python tools/bench.py
 
-# docs/VALIDATION.md from tests/reference (CI checks that the committed one is current)
+# docs/VALIDATION.md from tests/validation/reference (CI checks that the committed one is current)
 validate: $(STAMP)
 	$(BIN)/python tools/validation_report.py
 
