@@ -243,7 +243,9 @@ def counterweights(
         target_force, target_moment = target_force - built_force, target_moment - built_moment
     throw_one = cmath.exp(-1j * engine.throws[0].phase_rad)
     weights = []
-    for plane, phasor in zip(planes, share(target_force, target_moment, planes, z_mean)):
+    for plane, phasor in zip(
+        planes, share(target_force, target_moment, planes, z_mean), strict=True
+    ):
         if abs(phasor) < engine.noise_floor_n:
             phasor = 0j  # rounding noise of a balanced first order: no counterweight
         weights.append(
@@ -261,7 +263,7 @@ def counterweights(
             shaft, turning = build_shaft(engine, ratio, masses, offset_for(ratio, offsets))
             built.append(shaft)
             rolling.append(turning)
-            for (z, phasor), mass in zip(masses, shaft.masses):
+            for (z, phasor), mass in zip(masses, shaft.masses, strict=True):
                 shafts.append(Shaft(order, ratio, mass.mass_eccentricity_kgm, mass.phase_deg, z))
                 lever = (z - z_mean) * phasor
                 if ratio > 0:

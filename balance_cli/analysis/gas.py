@@ -140,7 +140,7 @@ def check_gas_sampling(engine, samples, load, gas_curve):
     rates = periodic_derivative(resampled(np.array([fine[n] for n in numbers]), finer)).real
     better_curve = gas_torque(
         engine,
-        dict(zip(numbers, rates)),
+        dict(zip(numbers, rates, strict=True)),
         _net_pressures(engine, finer, turns, load.firing_deg, load.curves),
         load.area_m2,
     )

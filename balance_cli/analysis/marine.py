@@ -80,7 +80,7 @@ def check_classes(bounds):
             f"of {', '.join(_CLASS_WORDS)}), got {bounds!r}",
             "pru_classes",
         )
-    return tuple(zip(values + [math.inf], _CLASS_WORDS))
+    return tuple(zip(values + [math.inf], _CLASS_WORDS, strict=True))
 
 
 def _check_class_table(classes):

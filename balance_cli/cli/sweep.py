@@ -116,7 +116,11 @@ def sweep(
     if listed is not None and any(v is not None for v in spanned):
         raise click.UsageError("give --values or --from/--to/--steps, not both")
     if listed is None and any(v is None for v in spanned):
-        missing = [flag for flag, v in zip(("--from", "--to", "--steps"), spanned) if v is None]
+        missing = [
+            flag
+            for flag, v in zip(("--from", "--to", "--steps"), spanned, strict=True)
+            if v is None
+        ]
         raise click.UsageError(
             f"give --values, or --from, --to and --steps ({', '.join(missing)} missing)"
         )

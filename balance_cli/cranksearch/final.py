@@ -96,9 +96,11 @@ def _coefficients_of(result, units, pitch, terms, couple_units=None, tv_orders=(
                 *(
                     (o.force_forward, o.force_backward, o.moment_forward, o.moment_backward)
                     for o in orders
-                )
+                ),
+                strict=True,
             ),
             floors,
+            strict=True,
         )
     ]
     c = coefficients(*parts, units, pitch)

@@ -76,7 +76,7 @@ def lattice(template, allow_uneven, step_deg):
         if j == 0 and base_j > UNIFORM_FIRING_DEG / 2:
             base_j = 0.0
         e = []
-        for c, r in zip(mine, rel):
+        for c, r in zip(mine, rel, strict=True):
             steps = (r - base_j) / s
             if abs(steps - round(steps)) * s > UNIFORM_FIRING_DEG / 2:
                 raise AnalysisError(

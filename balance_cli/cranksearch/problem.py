@@ -108,7 +108,7 @@ def guide_phasors(template, samples, max_order):
     searched. The X-type's division by the guide distance cancels in its coefficient."""
     guide = torque(template, samples, max_order, bearings=False).guide
     out = np.zeros((2, len(template.throws), max_order), complex)
-    for cylinder, own in zip(template.cylinders, guide.cylinders):
+    for cylinder, own in zip(template.cylinders, guide.cylinders, strict=True):
         for k in range(1, max_order + 1):
             cos, sin = own.couple.order(k)
             out[0, cylinder.throw_index, k - 1] += complex(cos, -sin)

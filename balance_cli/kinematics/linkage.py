@@ -221,7 +221,9 @@ def _balancer_rows(engine, angles):
     """(position, mass, z, owner, throw) of every balancer-shaft mass as built, fixed frame."""
     rows = []
     for shaft in engine.balancer_shafts:
-        for mass, position in zip(shaft.masses, balancer_positions(engine, shaft, angles)):
+        for mass, position in zip(
+            shaft.masses, balancer_positions(engine, shaft, angles), strict=True
+        ):
             e = UNKNOWN_RADIUS_M if mass.eccentricity_m is None else mass.eccentricity_m
             rows.append(
                 (position, mass.mass_radius_kgm / e, engine.balancer_z_m(mass), BALANCER, -1)
@@ -433,7 +435,7 @@ def linkage_state(engine, angles, pin_shift=None, throw_index=None) -> LinkageSt
                     cyl.opposed_throw_index,
                 )
             )
-    for index, (crank, pin) in enumerate(zip(engine.throws, pins)):
+    for index, (crank, pin) in enumerate(zip(engine.throws, pins, strict=True)):
         if throw_index is not None and index != throw_index:
             continue
         for owner, mass in ((BIG_ENDS, engine.rotating_kg), (CRANK, engine.crank_kg)):

@@ -28,7 +28,7 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
     for ax in axes:
         ax.axis("off")
     ring = np.linspace(0, 2 * np.pi, 181)
-    for ax, r in zip(axes, chosen):
+    for ax, r in zip(axes, chosen, strict=True):
         cycle = r.engine.cycle_deg
         fire = r.firing
         where = lambda angle, radius: (
@@ -42,7 +42,7 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
             )
         # every spoke in one line broken at NaN: one artist, not one per cylinder
         xs, ys = [], []
-        for angle, number in zip(fire.angles_deg, fire.order):
+        for angle, number in zip(fire.angles_deg, fire.order, strict=True):
             x, y = where(angle, 1.0)
             xs += [0.0, x, math.nan]
             ys += [0.0, y, math.nan]
@@ -60,7 +60,7 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
                 color="C3",
             )
         else:
-            for angle, gap in zip(fire.angles_deg, fire.intervals_deg):
+            for angle, gap in zip(fire.angles_deg, fire.intervals_deg, strict=True):
                 ax.text(
                     *where(angle + gap / 2, 0.65),
                     f"{gap:.4g}°",

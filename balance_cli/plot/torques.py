@@ -134,7 +134,7 @@ class _Labels(Artist):
         gc = renderer.new_gc()
         gc.set_foreground(self.colour)
         points = self.get_transform().transform([item[:2] for item in self.items])
-        for (x, y), (_, _, text, ha, va, rotation) in zip(points, self.items):
+        for (x, y), (_, _, text, ha, va, rotation) in zip(points, self.items, strict=True):
             w, h, d = size(text)
             h, d = max(h, line_h), max(d, line_d)
             # the box, w wide and h high (h high and w wide turned 90°), aligned on (x, y); then
@@ -187,19 +187,19 @@ class _Panels:
         to_panel = BboxTransform(
             Bbox([[xlim[0], ylim[0]], [xlim[1], ylim[1]]]), Bbox([[x0, y0], [x1, y1]])
         )
-        for x, label in zip(xticks, xlabels):
+        for x, label in zip(xticks, xlabels, strict=True):
             fx = x0 + (x1 - x0) * (x - xlim[0]) / (xlim[1] - xlim[0])
             self.grid.append([(fx, y0), (fx, y1)])
             if label:
                 self.label(fx * self.size[0], bottom - 0.04, label, ha="center", va="top")
-        for y, label in zip(yticks, ylabels):
+        for y, label in zip(yticks, ylabels, strict=True):
             fy = y0 + (y1 - y0) * (y - ylim[0]) / (ylim[1] - ylim[0])
             self.grid.append([(x0, fy), (x1, fy)])
             if label:
                 self.label(left - 0.04, fy * self.size[1], label, ha="right", va="center")
         self.frames.append([(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)])
         # ticks in the frame's path: inward from the bottom edge, long at labels
-        for x, length in [(x, 0.06) for x, label in zip(xticks, xlabels) if label] + [
+        for x, length in [(x, 0.06) for x, label in zip(xticks, xlabels, strict=True) if label] + [
             (x, 0.03) for x in xminor
         ]:
             fx = x0 + (x1 - x0) * (x - xlim[0]) / (xlim[1] - xlim[0])
@@ -345,7 +345,7 @@ def torque(
         width = 0.7 * step
         corners = [
             [(k - width / 2, 0.0), (k + width / 2, 0.0), (k + width / 2, h), (k - width / 2, h)]
-            for k, h in zip(orders, heights)
+            for k, h in zip(orders, heights, strict=True)
             if h > 0
         ]
         if corners:

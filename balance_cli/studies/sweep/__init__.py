@@ -374,7 +374,7 @@ def sweep(
         )
 
     points = []
-    for i, (engine, value, value_si) in enumerate(zip(engines, values, values_si)):
+    for i, (engine, value, value_si) in enumerate(zip(engines, values, values_si, strict=True)):
         try:
             result = analyse(engine, samples, max_order)
             record = _measure(
