@@ -101,7 +101,8 @@ def _intervals(angles, cycle_deg):
 
 
 def _scores(base, shifts, ideal, cycle_deg):
-    """Worst and summed-square deviation of the gaps, and firing sequence, for each row of shifts."""
+    """Worst and summed-square deviation of the gaps, and firing sequence, for each row of
+    shifts."""
     angles = base[None, :] + shifts
     sequence = np.argsort(angles, axis=1, kind="stable")
     ordered = np.take_along_axis(angles, sequence, axis=1)

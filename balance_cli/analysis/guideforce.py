@@ -28,8 +28,9 @@ The couple on the frame is −(s·N + e·g), s the pin's distance from the crank
 cylinder axis and e the pin offset: the gas force acts along the cylinder axis, not through
 an offset pin, so the piston's moment balance moves the guide force's line by e·g/N. With no
 offset (every crosshead engine) it is s times the piston's force on its guide. The couples add
-up to the frame reaction torque of :mod:`balance_cli.analysis.torque` (a second method: there it comes
-from the kinetic energy), the crank pins' masses turning at constant radius adding nothing.
+up to the frame reaction torque of :mod:`balance_cli.analysis.torque` (a second method: there it
+comes from the kinetic energy), the crank pins' masses turning at constant radius adding
+nothing.
 """
 
 from __future__ import annotations

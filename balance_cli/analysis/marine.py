@@ -137,7 +137,8 @@ def engine_power(engine, power_w=None):
         )
     return (
         None,
-        "no power: give `power` in the configuration, a [gas] table with an imep, or the power with the analysis",
+        "no power: give `power` in the configuration, a [gas] table with an imep, or the power "
+        "with the analysis",
     )
 
 

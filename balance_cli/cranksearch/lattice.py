@@ -80,7 +80,8 @@ def lattice(template, allow_uneven, step_deg):
             steps = (r - base_j) / s
             if abs(steps - round(steps)) * s > UNIFORM_FIRING_DEG / 2:
                 raise AnalysisError(
-                    f"cannot fire evenly: cylinders {mine[0]} and {c} ride on throw {j + 1} with top dead centres "
+                    f"cannot fire evenly: cylinders {mine[0]} and {c} ride on throw {j + 1} "
+                    "with top dead centres "
                     f"{round_degrees((tdc[c] - tdc[mine[0]]) % 360.0, 3):g}° apart, not a multiple "
                     f"of the {s:g}° firing interval; "
                     "search with allow_uneven and a step_deg",

@@ -297,7 +297,8 @@ def close_linkage(engine, crank_angles, numbers=None, pin_shift=None):
             continue
         master = engine.cylinder(cyl.master)
         crank_pin = pins[master.throw_index]
-        # the knuckle pin is fixed in the master rod: turn the rod's unit vector by the knuckle angle
+        # the knuckle pin is fixed in the master rod: turn the rod's unit vector by the knuckle
+        # angle
         rod_direction = (piston[master.number] - crank_pin) / engine.rod_length_m
         knuckle[cyl.number] = crank_pin + cyl.knuckle_radius_m * rod_direction * np.exp(
             1j * cyl.knuckle_angle_rad
@@ -401,9 +402,9 @@ def linkage_state(engine, angles, pin_shift=None, throw_index=None) -> LinkageSt
     closing of the linkage: the crank-pin forces shift every pin several times, and closing
     it once per shift for all three is what keeps ``balance torque`` fast.
 
-    With ``throw_index`` (a throw's place in ``Engine.throws``), only what rides on that throw: its cylinders' masses and rods
-    and the masses at its pin, in the order they have in the whole engine's state (no
-    counterweight or balancer-shaft mass: they ride on no pin).
+    With ``throw_index`` (a throw's place in ``Engine.throws``), only what rides on that throw:
+    its cylinders' masses and rods and the masses at its pin, in the order they have in the
+    whole engine's state (no counterweight or balancer-shaft mass: they ride on no pin).
     """
     check_assembly(engine)
     angles = np.asarray(angles, dtype=float)

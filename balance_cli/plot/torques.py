@@ -33,7 +33,8 @@ def torque_data(result: "TorqueResult", units: str = "N") -> dict:
     at the end to close the curve), ``inertia``, ``gas`` (None without one) and ``total`` at
     those angles, ``mean`` and ``range`` of the total torque, and its ``orders`` (multiples of ½
     for a four-stroke) with their ``amplitudes`` √(cos² + sin²); torques in the moment unit of
-    ``units`` (N·m for "N", kN·m, MN·m, kgf·m, lbf·ft). Also ``name``, ``period_deg``, ``cycle``, ``speed_rpm``, ``unit``.
+    ``units`` (N·m for "N", kN·m, MN·m, kgf·m, lbf·ft). Also ``name``, ``period_deg``,
+    ``cycle``, ``speed_rpm``, ``unit``.
     """
     from ..units import rad_s_to_rpm
 
@@ -239,10 +240,10 @@ def _compound(polylines, closed=False):
 def torque(
     results: "Iterable[TorqueResult]", units: str = "N", fig: "Figure | None" = None
 ) -> "Figure":
-    """Torques of :func:`balance_cli.analysis.torque.torque`, one small picture per engine: above, the
-    inertia, gas (when there is one) and total torque over one period (360°, or 720° for a
-    four-stroke) against the crank angle of throw 1, and the mean total torque (dashed); below,
-    the amplitude of each order of the total torque (half orders too for a four-stroke).
+    """Torques of :func:`balance_cli.analysis.torque.torque`, one small picture per engine:
+    above, the inertia, gas (when there is one) and total torque over one period (360°, or 720°
+    for a four-stroke) against the crank angle of throw 1, and the mean total torque (dashed);
+    below, the amplitude of each order of the total torque (half orders too for a four-stroke).
     Torques in the moment unit of ``units`` (N·m for "N", kN·m, MN·m, kgf·m or lbf·ft).
 
     The pictures are drawn on the figure itself, not in Axes: 17 engines' Axes and their ticks

@@ -79,7 +79,8 @@ def compare_parts(comparison, scale):
         + (", in newtons." if scale.absolute else ", per cylinder (Tanaka's Part III)."),
         "Largest: the resultant's largest magnitude over a revolution, all orders; main "
         "order: the order with the largest ellipse, its max and direction (rotating: a "
-        "circle, turning with the crank (forward) or against it (backward)). A turning crank's ideal counterweight has taken the forward first order of "
+        "circle, turning with the crank (forward) or against it (backward)). A turning crank's "
+        "ideal counterweight has taken the forward first order of "
         "force and moment away (a rotary's crank does not turn), and where a crankshaft "
         "turns against the first, its counterweights the backward first order too.",
     ]

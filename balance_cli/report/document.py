@@ -36,7 +36,8 @@ PICTURES = [
         "star.svg",
         "star",
         "Star of order {star}",
-        "Each cylinder's forward and backward phasor of order {star} at θ = 0, chained tip to tail; "
+        "Each cylinder's forward and backward phasor of order {star} at θ = 0, chained tip to "
+        "tail; "
         "the dashed line is the engine's resultant.",
     ),
     (
@@ -50,7 +51,8 @@ PICTURES = [
         "torque.svg",
         "torque",
         "Torques",
-        "Above, the inertia, gas (from the [gas] cycle) and total torque on the crankshaft over one "
+        "Above, the inertia, gas (from the [gas] cycle) and total torque on the crankshaft over "
+        "one "
         "cycle against the crank angle of throw 1, and the mean total torque (dashed); below, the "
         "amplitude of each order of the total torque up to the highest order analysed (half orders "
         "too for a four-stroke); N·m.",
@@ -60,8 +62,8 @@ PICTURES = [
 
 def blocks(comparison, balances, star_order, torques, scale=None, family=None, torsion=None):
     """The report: engines, comparison tables, counterweights, torques (the
-    :class:`~balance_cli.analysis.torque.TorqueResult` of each engine), pictures; forces per cylinder,
-    moments and torques in ``scale``'s units (default N·m)."""
+    :class:`~balance_cli.analysis.torque.TorqueResult` of each engine), pictures; forces per
+    cylinder, moments and torques in ``scale``'s units (default N·m)."""
     scale = Scale() if scale is None else scale
     results = comparison.results
     count = f"{len(results)} engine{'s' if len(results) != 1 else ''}"

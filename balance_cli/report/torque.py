@@ -112,7 +112,8 @@ def _guide_force_lines(guide, scale, fmt):
         if largest > 0 and max(a["amplitude_Nm"], b["amplitude_Nm"]) >= 1e-3 * largest
     ]
     return [
-        f"Guide-force moments (the couples of the pistons' (crossheads') guide forces with the main "
+        "Guide-force moments (the couples of the pistons' (crossheads') guide forces with the "
+        "main "
         f"bearings; H-type their sum, X-type their bimoment about the engine's centre over "
         f"L = {guide.lever_m:.4g} m, the rod length; amplitude·cos(kθ − phase); orders below "
         "a thousandth of the largest left out):",

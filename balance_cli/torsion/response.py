@@ -4,8 +4,8 @@ response, and their result.
 The shaft line and its solution are openTorsion's (Aalto University's library of disks and
 shafts: ``pip install 'engine-balance[torsion]'``); balance supplies the engine's side: each throw's
 inertia (or the mean reduced mass of the parts on it), and the excitation, each cylinder's exact
-tangential torque order by order (:func:`balance_cli.analysis.cylinders.cylinder_torques`), which carries
-its firing phase because it is given against the crank angle of throw 1.
+tangential torque order by order (:func:`balance_cli.analysis.cylinders.cylinder_torques`),
+which carries its firing phase because it is given against the crank angle of throw 1.
 
 The model, free end first: the ``front`` inertias (pulley, damper), the throws, the flywheel and
 the load, each joined to the next by a section of stiffness k (and damping c). At a speed Ω the

@@ -273,9 +273,11 @@ def parameter_of(data: dict, key: str, path: str = "<config>") -> Parameter:
             )
         if head not in SCHEMA[""]:
             problem = (
-                f"{head} is a table; name one of its keys, such as {head}.{next(iter(SCHEMA[head]))}"
+                f"{head} is a table; name one of its keys, such as "
+                f"{head}.{next(iter(SCHEMA[head]))}"
                 if head in SCHEMA
-                else f"[{head}] is an array of tables; name one of its keys with the table's number, "
+                else f"[{head}] is an array of tables; name one of its keys with the table's "
+                "number, "
                 f"such as {head}[1].{next(iter(SCHEMA[head + '[]']))}"
                 if head + "[]" in SCHEMA
                 else "no such key"
