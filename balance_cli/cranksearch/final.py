@@ -41,7 +41,7 @@ def final(
     as ``compare`` would, ranked by score and then firing order."""
     members = expand(flat, problem, orbits, shift)
     rows = []
-    for (crank, order), (score, position) in members.items():
+    for (crank, order), (score, _position) in members.items():
         phases = crank_phases(problem, crank)
         engine = None
         if order is None:  # uneven: the most uniform order the crank allows, not written

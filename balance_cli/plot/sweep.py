@@ -63,7 +63,7 @@ def sweep_figure(result, units="N", fig=None):
     points = [result.points[i] for i in order]
     axes = fig.subplots(len(groups), 1, sharex=True, squeeze=False)[:, 0]
     marker = "o" if len(x) <= 30 else None
-    for ax, (kind, title, quantities) in zip(axes, groups, strict=True):
+    for ax, (_kind, title, quantities) in zip(axes, groups, strict=True):
         drawn = []
         for q in quantities:
             y = [shown_value(q, p[q.column], units) for p in points]
