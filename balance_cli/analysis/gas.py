@@ -153,7 +153,8 @@ def check_gas_sampling(engine, samples, load, gas_curve):
         warning = SamplingWarning(
             f"{engine.name}: the gas torque is not converged at {samples} samples a revolution: "
             f"its mean moves by {moved:.1e} of itself at {finer} (a sharp pressure curve); "
-            f"use {min(needed, MAX_SAMPLES)} samples or more"
+            f"use {min(needed, MAX_SAMPLES)} samples or more",
+            samples=samples,
+            excess=moved,
         )
-        warning.samples, warning.excess = samples, moved
         warnings.warn(warning, stacklevel=3)
