@@ -110,7 +110,11 @@ def _test_masses(engine, shaking):
 def _checked_orders(shaft_orders, max_order):
     orders = []
     for k in shaft_orders:
-        if isinstance(k, bool) or not isinstance(k, numbers.Integral) or not 1 <= k <= max_order:
+        if (
+            isinstance(k, bool)
+            or not isinstance(k, numbers.Integral)
+            or not 1 <= int(k) <= max_order
+        ):
             raise CounterweightError(
                 f"names order {k!r}, outside the orders analysed (1 to {max_order})", "shaft_orders"
             )
@@ -319,7 +323,9 @@ def check_options(
         if (
             isinstance(balance_factor, bool)
             or not isinstance(balance_factor, numbers.Real)
-            or not low <= balance_factor <= high
+            # mypy does not support the numbers ABCs (python/mypy#3186): a Real compares
+            # with a float; float() would make a huge Fraction an OverflowError here
+            or not low <= balance_factor <= high  # type: ignore[operator]
         ):
             raise CounterweightError(
                 f"must be a fraction of the reciprocating masses from "
