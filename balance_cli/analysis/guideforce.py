@@ -138,7 +138,7 @@ def _lateral(engine, state, net_pressure, area, turns):
     curves over the cycle (``turns`` revolutions), N and N·m."""
     omega = engine.speed_rad_s
     masses, rods = state.masses, state.rods
-    row = {}
+    row: dict[int, int] = {}  # cylinder number: its piston's row
     for index, owner in enumerate(masses.cylinder):
         row.setdefault(int(owner), index)  # a cylinder's piston comes before its knuckle
     rod_row = {int(c): i for i, c in enumerate(rods.cylinder)}

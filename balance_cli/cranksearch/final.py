@@ -103,7 +103,8 @@ def _coefficients_of(result, units, pitch, terms, couple_units=None, tv_orders=(
             strict=True,
         )
     ]
-    c = coefficients(*parts, units, pitch)
+    force_forward, force_backward, moment_forward, moment_backward = parts
+    c = coefficients(force_forward, force_backward, moment_forward, moment_backward, units, pitch)
     values = {}
     for k in range(1, len(orders) + 1):
         for kind in "FM":

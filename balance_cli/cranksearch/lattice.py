@@ -63,7 +63,7 @@ def lattice(template, allow_uneven, step_deg):
     first = min(c.number for c in template.cylinders if c.throw_index == 0)
     origin = tdc[first]
     base = np.zeros(len(template.throws))
-    offsets = []
+    offsets: list[list[int]] = []
     for j in range(len(template.throws)):
         mine = sorted(c.number for c in template.cylinders if c.throw_index == j)
         if not mine:

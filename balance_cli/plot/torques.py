@@ -172,7 +172,8 @@ class _Panels:
         return self.fig.text(*self.at(x_in, y_in), text, **{"fontsize": 7, **style})
 
     def label(self, x_in, y_in, text, **alignment):
-        self.labels.add(*self.at(x_in, y_in), text, **alignment)
+        x, y = self.at(x_in, y_in)
+        self.labels.add(x, y, text, **alignment)
 
     def panel(
         self, box_in, xlim, ylim, xticks, xlabels, yticks, ylabels, xlabel, ylabel, xminor=()

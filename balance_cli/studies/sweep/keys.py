@@ -202,7 +202,8 @@ def _compressed(keys):
 
 def _sweepable(data):
     """The numeric scalars the parsed configuration ``data`` has, and those it may add."""
-    present, addable = [], []
+    present: list[str] = []
+    addable: list[str] = []
     for table, keys in SCHEMA.items():
         if table == "":
             for key in keys:
