@@ -110,7 +110,21 @@ class OutputError(BalanceError, OSError):
 
 
 class SamplingWarning(UserWarning):
-    """The sampling is too coarse for the orders asked for."""
+    """The sampling is too coarse for the orders asked for.
+
+    Attributes
+    ----------
+    samples : int or None
+        the samples a revolution found too few
+    excess : float or None
+        what was found too large, as a fraction: the aliasing error bound of the inertia
+        forces (:func:`balance_cli.harmonics.check_sampling`) or the move of the mean gas
+        torque on a finer sampling (:func:`balance_cli.analysis.gas.check_gas_sampling`)
+    """
+
+    def __init__(self, message, samples=None, excess=None):
+        super().__init__(message)
+        self.samples, self.excess = samples, excess
 
 
 class SweepError(BalanceError, ValueError):

@@ -76,9 +76,10 @@ def check_sampling(position_coefficients, max_order, label=""):
         warning = SamplingWarning(
             f"{label}{n} samples a revolution are too few for orders up to {max_order}: the "
             f"orders from {band} still carry {excess:.1e} of the largest inertia force; "
-            "use more samples"
+            "use more samples",
+            samples=n,
+            excess=excess,
         )
-        warning.samples, warning.excess = n, excess
         warnings.warn(warning, stacklevel=3)
         return False
     return True

@@ -117,7 +117,7 @@ def _special(path):
     return not stat.S_ISREG(mode) and not stat.S_ISDIR(mode)
 
 
-def _destination(target):
+def _destination(target) -> Path:
     """The regular file to replace for ``target``: the target itself, or what its symbolic
     links lead to. A link loop, a link into a folder that does not exist, a folder, a file
     without write permission or a name ending in a separator is an OutputError."""
@@ -162,7 +162,7 @@ def write_bytes(target, write):
         raise
     except OSError as exc:  # a name too long, say
         raise OutputError(f"cannot write {shown!r}: {_reason(exc)}") from None
-    if special:
+    if real is None:  # special: written in place
         try:
             with open(path, "wb") as handle:
                 write(handle)

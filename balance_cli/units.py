@@ -212,7 +212,7 @@ def _case_clash(written, meant):
     ``meant`` where it reads as a prefix (m/M, p/P at the start of a unit or after * or /,
     before a base symbol), or None: "RPM" is rpm and "PSI" psi, but "Mm" could be
     millimetres or megametres."""
-    for i, (a, b) in enumerate(zip(written, meant)):
+    for i, (a, b) in enumerate(zip(written, meant, strict=True)):
         if a == b or a.lower() not in _CASE_SENSITIVE or (i and written[i - 1] not in "*/"):
             continue
         rest = re.split(r"[*/^]", written[i + 1 :])[0].lower()

@@ -195,7 +195,8 @@ def torsion_bench():
         import opentorsion  # noqa: F401
     except ImportError:
         print(
-            "torsion: openTorsion is not installed (pip install 'engine-balance[torsion]'): skipped\n"
+            "torsion: openTorsion is not installed (pip install 'engine-balance[torsion]'): "
+            "skipped\n"
         )
         return False
     import numpy as np

@@ -136,14 +136,16 @@ def render():
         "include.",
         "",
         "Columns: *F1, F2*: largest free force of orders 1 and 2 **per cylinder, unit-free**",
-        "(÷ m·r·ω²·n, the `compare` tables' unit); *M1, M2*: largest free moment of orders 1 and 2 in",
+        "(÷ m·r·ω²·n, the `compare` tables' unit); *M1, M2*: largest free moment of orders 1 "
+        "and 2 in",
         "**N·m at the file's speed**; *F≥3, M≥3*: the largest order from 3 to 8 and its figure in",
-        "the same units. 0 means rounding noise (below 1e-9 of the unit). The textbook column is the",
+        "the same units. 0 means rounding noise (below 1e-9 of the unit). The textbook column "
+        "is the",
         "file's own statement (m·r·ω² per cylinder, A₂ ≈ r/l the slider crank's second harmonic,",
         "d a pitch), checked by hand derivation in `tests/test_today.py`.",
         "",
-        "| File | Engine | Layout | Crank (°) | Firing order (intervals, °) | Textbook | F1 | M1 (N·m) "
-        "| F2 | M2 (N·m) | F≥3 | M≥3 (N·m) |",
+        "| File | Engine | Layout | Crank (°) | Firing order (intervals, °) | Textbook | F1 "
+        "| M1 (N·m) | F2 | M2 (N·m) | F≥3 | M≥3 (N·m) |",
         "|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for path in balance.find_configs([TODAY]):

@@ -68,13 +68,16 @@ def render():
         if "note" in paper:
             lines += [paper["note"].strip(), ""]
         lines += [
-            "| id | where | quantity | unit | published | ours | deviation | tolerance | verdict | reason |",
+            "| id | where | quantity | unit | published | ours | deviation | tolerance | verdict "
+            "| reason |",
             "|---|---|---|---|---:|---:|---:|---:|---|---|",
         ]
         for r in mine:
             lines.append(
-                f"| {r.id} | {_cell(r.where)} | {_cell(r.quantity)} | {r.unit} | {_number(r.published)} "
-                f"| {_number(r.ours)} | {_number(r.deviation, 3)} | {_number(r.tolerance, 3)} | {r.verdict} "
+                f"| {r.id} | {_cell(r.where)} | {_cell(r.quantity)} | {r.unit} "
+                f"| {_number(r.published)} "
+                f"| {_number(r.ours)} | {_number(r.deviation, 3)} | {_number(r.tolerance, 3)} "
+                f"| {r.verdict} "
                 f"| {_cell(r.reason)} |"
             )
         lines.append("")

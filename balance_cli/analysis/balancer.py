@@ -74,7 +74,9 @@ def shafts_for(order, shaking, planes, engine):
             where = planes
             phasors = share(-force, -moment, planes, engine.mean_z_m)
         masses = [
-            (plane.z_m, phasor) for plane, phasor in zip(where, phasors) if abs(phasor) >= floor
+            (plane.z_m, phasor)
+            for plane, phasor in zip(where, phasors, strict=True)
+            if abs(phasor) >= floor
         ]
         if masses:
             out.append((sign * order, masses))
@@ -163,7 +165,7 @@ def rolling_totals(engine, shafts, phasors):
     """Per order, the rolling moment of all its shafts together (a pair's couple)."""
     totals = []
     for order in sorted({s.order for s in shafts}):
-        mine = [(s, p) for s, p in zip(shafts, phasors) if s.order == order]
+        mine = [(s, p) for s, p in zip(shafts, phasors, strict=True) if s.order == order]
         totals.append(
             RollingMoment.from_phasor(
                 order,

@@ -110,7 +110,11 @@ def _test_masses(engine, shaking):
 def _checked_orders(shaft_orders, max_order):
     orders = []
     for k in shaft_orders:
-        if isinstance(k, bool) or not isinstance(k, numbers.Integral) or not 1 <= k <= max_order:
+        if (
+            isinstance(k, bool)
+            or not isinstance(k, numbers.Integral)
+            or not 1 <= int(k) <= max_order
+        ):
             raise CounterweightError(
                 f"names order {k!r}, outside the orders analysed (1 to {max_order})", "shaft_orders"
             )
@@ -243,7 +247,9 @@ def counterweights(
         target_force, target_moment = target_force - built_force, target_moment - built_moment
     throw_one = cmath.exp(-1j * engine.throws[0].phase_rad)
     weights = []
-    for plane, phasor in zip(planes, share(target_force, target_moment, planes, z_mean)):
+    for plane, phasor in zip(
+        planes, share(target_force, target_moment, planes, z_mean), strict=True
+    ):
         if abs(phasor) < engine.noise_floor_n:
             phasor = 0j  # rounding noise of a balanced first order: no counterweight
         weights.append(
@@ -261,7 +267,7 @@ def counterweights(
             shaft, turning = build_shaft(engine, ratio, masses, offset_for(ratio, offsets))
             built.append(shaft)
             rolling.append(turning)
-            for (z, phasor), mass in zip(masses, shaft.masses):
+            for (z, phasor), mass in zip(masses, shaft.masses, strict=True):
                 shafts.append(Shaft(order, ratio, mass.mass_eccentricity_kgm, mass.phase_deg, z))
                 lever = (z - z_mean) * phasor
                 if ratio > 0:
@@ -317,7 +323,9 @@ def check_options(
         if (
             isinstance(balance_factor, bool)
             or not isinstance(balance_factor, numbers.Real)
-            or not low <= balance_factor <= high
+            # mypy does not support the numbers ABCs (python/mypy#3186): a Real compares
+            # with a float; float() would make a huge Fraction an OverflowError here
+            or not low <= balance_factor <= high  # type: ignore[operator]
         ):
             raise CounterweightError(
                 f"must be a fraction of the reciprocating masses from "

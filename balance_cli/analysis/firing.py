@@ -95,11 +95,14 @@ def _fit_order(order, tdc, cycle_deg):
 
 
 def _intervals(angles, cycle_deg):
-    return [b - a for a, b in zip(angles, angles[1:])] + [cycle_deg - angles[-1] + angles[0]]
+    return [b - a for a, b in zip(angles, angles[1:], strict=False)] + [
+        cycle_deg - angles[-1] + angles[0]
+    ]
 
 
 def _scores(base, shifts, ideal, cycle_deg):
-    """Worst and summed-square deviation of the gaps, and firing sequence, for each row of shifts."""
+    """Worst and summed-square deviation of the gaps, and firing sequence, for each row of
+    shifts."""
     angles = base[None, :] + shifts
     sequence = np.argsort(angles, axis=1, kind="stable")
     ordered = np.take_along_axis(angles, sequence, axis=1)
@@ -181,4 +184,7 @@ def firing_angles(engine: "Engine") -> dict[int, float]:
     in [0, cycle): where the gas torque and the torsional excitation put its pressure curve."""
     firing = firing_sequence(engine)
     start = firing.tdc_deg[firing.order[0]]
-    return {n: (start + a) % engine.cycle_deg for n, a in zip(firing.order, firing.angles_deg)}
+    return {
+        n: (start + a) % engine.cycle_deg
+        for n, a in zip(firing.order, firing.angles_deg, strict=True)
+    }

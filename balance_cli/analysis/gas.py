@@ -140,7 +140,7 @@ def check_gas_sampling(engine, samples, load, gas_curve):
     rates = periodic_derivative(resampled(np.array([fine[n] for n in numbers]), finer)).real
     better_curve = gas_torque(
         engine,
-        dict(zip(numbers, rates)),
+        dict(zip(numbers, rates, strict=True)),
         _net_pressures(engine, finer, turns, load.firing_deg, load.curves),
         load.area_m2,
     )
@@ -153,7 +153,8 @@ def check_gas_sampling(engine, samples, load, gas_curve):
         warning = SamplingWarning(
             f"{engine.name}: the gas torque is not converged at {samples} samples a revolution: "
             f"its mean moves by {moved:.1e} of itself at {finer} (a sharp pressure curve); "
-            f"use {min(needed, MAX_SAMPLES)} samples or more"
+            f"use {min(needed, MAX_SAMPLES)} samples or more",
+            samples=samples,
+            excess=moved,
         )
-        warning.samples, warning.excess = samples, moved
         warnings.warn(warning, stacklevel=3)

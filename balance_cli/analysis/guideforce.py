@@ -28,8 +28,9 @@ The couple on the frame is −(s·N + e·g), s the pin's distance from the crank
 cylinder axis and e the pin offset: the gas force acts along the cylinder axis, not through
 an offset pin, so the piston's moment balance moves the guide force's line by e·g/N. With no
 offset (every crosshead engine) it is s times the piston's force on its guide. The couples add
-up to the frame reaction torque of :mod:`balance_cli.analysis.torque` (a second method: there it comes
-from the kinetic energy), the crank pins' masses turning at constant radius adding nothing.
+up to the frame reaction torque of :mod:`balance_cli.analysis.torque` (a second method: there it
+comes from the kinetic energy), the crank pins' masses turning at constant radius adding
+nothing.
 """
 
 from __future__ import annotations
@@ -137,7 +138,7 @@ def _lateral(engine, state, net_pressure, area, turns):
     curves over the cycle (``turns`` revolutions), N and N·m."""
     omega = engine.speed_rad_s
     masses, rods = state.masses, state.rods
-    row = {}
+    row: dict[int, int] = {}  # cylinder number: its piston's row
     for index, owner in enumerate(masses.cylinder):
         row.setdefault(int(owner), index)  # a cylinder's piston comes before its knuckle
     rod_row = {int(c): i for i, c in enumerate(rods.cylinder)}

@@ -80,7 +80,7 @@ def check_classes(bounds):
             f"of {', '.join(_CLASS_WORDS)}), got {bounds!r}",
             "pru_classes",
         )
-    return tuple(zip(values + [math.inf], _CLASS_WORDS))
+    return tuple(zip(values + [math.inf], _CLASS_WORDS, strict=True))
 
 
 def _check_class_table(classes):
@@ -137,7 +137,8 @@ def engine_power(engine, power_w=None):
         )
     return (
         None,
-        "no power: give `power` in the configuration, a [gas] table with an imep, or the power with the analysis",
+        "no power: give `power` in the configuration, a [gas] table with an imep, or the power "
+        "with the analysis",
     )
 
 

@@ -158,7 +158,7 @@ def read_cycle_csv(path, quantity, cycle_deg=None):
         raise ConfigError(path, "", "is not a regular file; give a CSV file")
     try:
         with open(path, encoding="utf-8-sig", newline="") as handle:
-            rows = list(csv.reader(handle))
+            records = list(csv.reader(handle))
     except FileNotFoundError:
         raise ConfigError(path, "", "no such file; check the path") from None
     except IsADirectoryError:
@@ -169,7 +169,9 @@ def read_cycle_csv(path, quantity, cycle_deg=None):
         raise ConfigError(
             path, "", f"cannot read the file ({getattr(exc, 'strerror', None) or exc})"
         ) from None
-    rows = [(i, row) for i, row in enumerate(rows, 1) if row and any(cell.strip() for cell in row)]
+    rows = [
+        (i, row) for i, row in enumerate(records, 1) if row and any(cell.strip() for cell in row)
+    ]
     example = f"angle_deg,{quantity}_{'bar' if quantity == 'pressure' else 'Nm'}"
     if not rows:
         raise ConfigError(path, "", f"is empty; give a header {example} and one row per angle")
@@ -183,7 +185,8 @@ def read_cycle_csv(path, quantity, cycle_deg=None):
             f"the first column is {header[0].strip()!r}; name "
             f"it angle_deg and give crank angles in degrees",
         )
-    angles, values = [], []
+    angles: list[float] = []
+    values: list[float] = []
     for line, row in rows[1:]:
         if len(row) != 2:
             raise ConfigError(
@@ -233,21 +236,21 @@ def read_cycle_csv(path, quantity, cycle_deg=None):
         values.append(value * factor)
     if len(angles) < 8:
         raise ConfigError(path, "", f"has {len(angles)} rows; give the cycle in at least 8 points")
-    angles = np.array(angles)
-    span = angles[-1] - angles[0]
-    steps = np.diff(angles)
+    angles_deg = np.array(angles)
+    span = angles_deg[-1] - angles_deg[0]
+    steps = np.diff(angles_deg)
     if cycle_deg is None:
         cycle_deg = 360.0 if span <= 360.0 else 720.0
     if np.isclose(span, cycle_deg, atol=1e-9 * cycle_deg):
         # the last row closes the cycle on the first: keep one of them
-        angles, values = angles[:-1], values[:-1]
+        angles_deg, values = angles_deg[:-1], values[:-1]
     elif span > cycle_deg or cycle_deg - span > 2 * steps.max():
         raise ConfigError(
             path,
             f"line {rows[-1][0]}",
             f"the angles cover {span:g}°, not one {cycle_deg:g}° cycle; give one cycle",
         )
-    return CycleCurve(angles, np.array(values), float(cycle_deg), quantity, str(path))
+    return CycleCurve(angles_deg, np.array(values), float(cycle_deg), quantity, str(path))
 
 
 def _column_unit(path, line, header, quantity, example):

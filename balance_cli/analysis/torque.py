@@ -341,7 +341,11 @@ def _bearing_loads(engine, state, turns, net_pressure, area, max_order):
     loads: list[PinForce | None] = [None] * len(engine.crankshafts)
     if not engine.is_rotary:
         for s_index in range(len(engine.crankshafts)):
-            on_shaft = [f for f, t in zip(forces, engine.throws) if t.crankshaft_index == s_index]
+            on_shaft = [
+                f
+                for f, t in zip(forces, engine.throws, strict=True)
+                if t.crankshaft_index == s_index
+            ]
             loads[s_index] = PinForce(
                 None, engine.cycle_deg, theta, sum(on_shaft) + crank_inertia[s_index], None, None
             )

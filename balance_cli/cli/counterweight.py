@@ -200,7 +200,8 @@ def counterweight(
             configuration = as_built_toml(
                 read_configuration(files[0]).data,
                 balances[0].configuration_tables(shafts=bool(orders)),
-                f"{balances[0].engine.name}, with the counterweights{' and shafts' if orders else ''}"
+                f"{balances[0].engine.name}, with the counterweights"
+                f"{' and shafts' if orders else ''}"
                 f" proposed by\nbalance counterweight added as built (from {files[0]}).",
             )
     if configuration is not None:

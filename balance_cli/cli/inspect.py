@@ -1,6 +1,7 @@
 """Looking at configurations without analysing them: validate, list and show."""
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
@@ -12,6 +13,9 @@ from ..report.inspect import list_tables, show_table
 from .batch import inputs
 from .group import main, reported
 from .options import INPUTS
+
+if TYPE_CHECKING:
+    from ..model import Engine
 
 __all__ = ["validate", "list_", "show"]
 
@@ -63,7 +67,8 @@ def list_(folder):
     # in the shipped library, folders and files by their names: what the other commands take
     named = folder.startswith((LIBRARY, TEMPLATE))
     inside = (folder if folder.endswith((":", "/")) else folder + "/") if named else ""
-    groups, errors = {}, []
+    groups: dict[tuple[str, ...], list[Engine]] = {}  # by the folder's path parts
+    errors: list[str] = []
     for path in inputs([root]):
         try:
             engine = load(path)

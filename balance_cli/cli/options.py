@@ -131,13 +131,13 @@ def planes(text):
     """--planes: throw numbers ("1,6") or axial positions ("0 mm,750 mm"), one or two."""
     if text is None:
         return None
-    planes = []
+    chosen: list[int | Plane] = []
     for token in (t.strip() for t in text.split(",")):
         if token.isascii() and token.isdigit():
-            planes.append(int(token))
+            chosen.append(int(token))
             continue
         try:
-            planes.append(Plane(parse_quantity(token, "length")))
+            chosen.append(Plane(parse_quantity(token, "length")))
         except BalanceError as exc:
             if str(exc).startswith("cannot read"):
                 raise click.ClickException(
@@ -145,7 +145,7 @@ def planes(text):
                     "positions with a unit such as '120 mm'"
                 ) from None
             raise click.ClickException(f"--planes: {exc}") from None
-    return planes
+    return chosen
 
 
 def orders_option(text, flag="--shafts"):
@@ -260,7 +260,7 @@ def speeds_option(text):
 
 def counts_option(text):
     """--cylinders: "5-12", "6,7,8" or both."""
-    counts = []
+    counts: list[int] = []
     try:
         for token in text.split(","):
             low, _, high = token.strip().partition("-")

@@ -27,7 +27,8 @@ __all__ = ["plot", "report"]
     required=True,
     help="locus: resultant force per cylinder (or free moment: --of moment) over a "
     "revolution (Tanaka's Fig. 9); spectrum: forward and backward parts by order; "
-    "star: each cylinder's phasor of one order (of force or moment), chained; firing: firing angles on a dial; torque: inertia, gas "
+    "star: each cylinder's phasor of one order (of force or moment), chained; firing: firing "
+    "angles on a dial; torque: inertia, gas "
     "(from a [gas] table) and total torque over a cycle, and the orders of the total.",
 )
 @click.option(

@@ -116,7 +116,11 @@ def sweep(
     if listed is not None and any(v is not None for v in spanned):
         raise click.UsageError("give --values or --from/--to/--steps, not both")
     if listed is None and any(v is None for v in spanned):
-        missing = [flag for flag, v in zip(("--from", "--to", "--steps"), spanned) if v is None]
+        missing = [
+            flag
+            for flag, v in zip(("--from", "--to", "--steps"), spanned, strict=True)
+            if v is None
+        ]
         raise click.UsageError(
             f"give --values, or --from, --to and --steps ({', '.join(missing)} missing)"
         )
@@ -140,13 +144,12 @@ def sweep(
     settings(samples, max_order)
     inertia_kgm2 = quantity_option(inertia, "--inertia", "moment of inertia")
     quantity_option(speed, "--speed", "angular speed")  # its unit, in the option's words
-    drawing = None
     if picture is not None:
         headless.use_agg()
-        from .. import plot as drawing  # matplotlib only when a picture is asked for
+        from .. import plot  # matplotlib only when a picture is asked for
 
         with reported(flags={"path": "--plot"}):
-            drawing.format_of(picture)
+            plot.format_of(picture)
     with reported(flags=flags):
         values = listed.split(",") if listed is not None else span(start, stop, steps)
     state: dict = {}
@@ -192,9 +195,11 @@ def sweep(
         csv=lambda: sweep_csv(result),
         table=lambda: sweep_tables(result, fmt, units),
     )
-    if drawing is not None:
+    if picture is not None:
+        from .. import plot
+
         with reported(flags={"path": "--plot"}), headless.drawing():
-            drawing.save(drawing.sweep_figure(result, units), picture)
+            plot.save(plot.sweep_figure(result, units), picture)
     write(output, text)
-    if drawing is not None:
+    if picture is not None:
         click.echo(f"wrote {picture}", err=True)

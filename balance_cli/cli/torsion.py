@@ -127,7 +127,7 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
 
         def fill(folder):
             names = []
-            for file, result in zip(files, results):
+            for file, result in zip(files, results, strict=True):
                 for kind, draw in (
                     ("campbell", pictures.campbell),
                     ("modes", pictures.mode_shapes),

@@ -1,6 +1,7 @@
 """Configuration files and text to engines: one file, a text, a search template, a
-configuration as written (:class:`Configuration`), and every configuration under a list of files and folders. Wherever a path is taken,
-``library:NAME`` and ``template:NAME`` name a shipped one (:mod:`.library`)."""
+configuration as written (:class:`Configuration`), and every configuration under a list of
+files and folders. Wherever a path is taken, ``library:NAME`` and ``template:NAME`` name a
+shipped one (:mod:`.library`)."""
 
 import copy
 import os

@@ -41,7 +41,7 @@ def final(
     as ``compare`` would, ranked by score and then firing order."""
     members = expand(flat, problem, orbits, shift)
     rows = []
-    for (crank, order), (score, position) in members.items():
+    for (crank, order), (score, _position) in members.items():
         phases = crank_phases(problem, crank)
         engine = None
         if order is None:  # uneven: the most uniform order the crank allows, not written
@@ -96,12 +96,15 @@ def _coefficients_of(result, units, pitch, terms, couple_units=None, tv_orders=(
                 *(
                     (o.force_forward, o.force_backward, o.moment_forward, o.moment_backward)
                     for o in orders
-                )
+                ),
+                strict=True,
             ),
             floors,
+            strict=True,
         )
     ]
-    c = coefficients(*parts, units, pitch)
+    force_forward, force_backward, moment_forward, moment_backward = parts
+    c = coefficients(force_forward, force_backward, moment_forward, moment_backward, units, pitch)
     values = {}
     for k in range(1, len(orders) + 1):
         for kind in "FM":

@@ -20,7 +20,7 @@ def _cylinder_lattice(template, problem, crank):
     out = {}
     for j in range(problem.n_throws):
         mine = sorted(c.number for c in template.cylinders if c.throw_index == j)
-        for c, e in zip(mine, problem.offsets[j]):
+        for c, e in zip(mine, problem.offsets[j], strict=True):
             out[c] = (e - crank[j]) % P
     return out
 
@@ -46,7 +46,7 @@ def firing_orders(template, problem, crank):
         ]
         choices = []
         for perm in itertools.permutations(slots):
-            assignment = dict(zip(sorted(cyls), perm))
+            assignment = dict(zip(sorted(cyls), perm, strict=True))
             if first in assignment and abs(assignment[first]) > 1e-9:
                 continue
             choices.append(assignment)
@@ -66,9 +66,11 @@ def reversed_order(order, template, problem, shift):
         mine = sorted(c.number for c in template.cylinders if c.throw_index == j)
         e = problem.offsets[j]
         used = set()
-        for c, ec in zip(mine, e):
+        for c, ec in zip(mine, e, strict=True):
             target = (shift - ec) % problem.lattice
-            partner = next(x for x, ex in zip(mine, e) if ex == target and x not in used)
+            partner = next(
+                x for x, ex in zip(mine, e, strict=True) if ex == target and x not in used
+            )
             used.add(partner)
             rename[c] = partner
     backwards = [rename[c] for c in reversed(order)]
@@ -86,7 +88,7 @@ def crank_phases(problem, crank):
 def arrangement_engine(template, phases, order, name):
     throws = tuple(
         Throw(math.radians(p if p <= 180.0 else p - 360.0), t.z_m)
-        for p, t in zip(phases, template.throws)
+        for p, t in zip(phases, template.throws, strict=True)
     )
     return replace(template, throws=throws, firing_order=order, name=name)
 

@@ -74,14 +74,12 @@ def work_units(problem, target=_BLOCK):
     """(group, prefix start, prefix end) pieces of roughly ``target`` channel values each."""
     units = []
     C = max(problem.rotated.shape[2], 1)
-    starts = (
-        np.flatnonzero(np.diff(problem.prefix_group, prepend=-1))
-        if len(problem.prefix_group)
-        else []
-    )
-    ends = list(starts[1:]) + [len(problem.prefix_group)]
-    for lo, hi in zip(starts, ends):
-        g = int(problem.prefix_group[lo])
+    # the prefixes are sorted by group: each group's run from its start to the next run's
+    # (the last to the end); no run without prefixes
+    groups = problem.prefix_group
+    bounds = [*np.flatnonzero(np.diff(groups, prepend=-1)), len(groups)]
+    for lo, hi in zip(bounds, bounds[1:], strict=False):
+        g = int(groups[lo])
         per = max(1, target // (max(len(problem.suffix_rows[g]), 1) * C))
         for a in range(lo, hi, per):
             units.append((g, int(a), int(min(a + per, hi))))
@@ -96,15 +94,15 @@ def evaluate(problem, units, top, threshold=math.inf, shared=None):
     prefix_throws = list(range(1, split))
     suffix_throws = list(range(split, problem.n_throws))
     w = problem.weights
-    cached = (None, None, None)
+    cached_group = None  # the group whose suffix sums Q, Qmax hold (units come by group)
     for g, lo, hi in units:
         if shared is not None:
             pool.threshold = min(pool.threshold, shared.value)
         srows = problem.suffix_rows[g]
-        if cached[0] != g:
+        if cached_group != g:
             Q = _sums(problem, srows, suffix_throws)
-            cached = (g, Q, np.abs(Q).max(axis=0) if len(Q) else np.zeros(len(w)))
-        _, Q, Qmax = cached
+            Qmax = np.abs(Q).max(axis=0) if len(Q) else np.zeros(len(w))
+            cached_group = g
         rows = problem.prefix_rows[lo:hi]
         Pm = _sums(problem, rows, prefix_throws) + problem.rotated[0, 0]
         ties = problem.prefix_tie[lo:hi]
@@ -125,7 +123,7 @@ def evaluate(problem, units, top, threshold=math.inf, shared=None):
                 if not len(sel) or not len(Qs):
                     continue
                 cols = np.flatnonzero(leader) if tie else None
-                Qt = Qs[cols] if tie else Qs
+                Qt = Qs if cols is None else Qs[cols]
                 step = max(1, _BLOCK // (len(Qt) * len(w) or 1))
                 for a in range(0, len(sel), step):
                     block = sel[a : a + step]
@@ -140,7 +138,7 @@ def evaluate(problem, units, top, threshold=math.inf, shared=None):
                         cut = np.partition(values, 4 * top - 1)[4 * top - 1]
                         hits = hits[values <= cut + SCORE_TIE]
                     for i, q in hits:
-                        qi = cols[q] if tie else q
+                        qi = q if cols is None else cols[q]
                         crank = problem.crank(rows[block[i]], problem.suffix_rows[g][start + qi])
                         pool.offer(float(score[i, q]), crank)
                     if shared is not None and pool.threshold < shared.value:

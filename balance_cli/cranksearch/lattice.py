@@ -63,7 +63,7 @@ def lattice(template, allow_uneven, step_deg):
     first = min(c.number for c in template.cylinders if c.throw_index == 0)
     origin = tdc[first]
     base = np.zeros(len(template.throws))
-    offsets = []
+    offsets: list[list[int]] = []
     for j in range(len(template.throws)):
         mine = sorted(c.number for c in template.cylinders if c.throw_index == j)
         if not mine:
@@ -76,11 +76,12 @@ def lattice(template, allow_uneven, step_deg):
         if j == 0 and base_j > UNIFORM_FIRING_DEG / 2:
             base_j = 0.0
         e = []
-        for c, r in zip(mine, rel):
+        for c, r in zip(mine, rel, strict=True):
             steps = (r - base_j) / s
             if abs(steps - round(steps)) * s > UNIFORM_FIRING_DEG / 2:
                 raise AnalysisError(
-                    f"cannot fire evenly: cylinders {mine[0]} and {c} ride on throw {j + 1} with top dead centres "
+                    f"cannot fire evenly: cylinders {mine[0]} and {c} ride on throw {j + 1} "
+                    "with top dead centres "
                     f"{round_degrees((tdc[c] - tdc[mine[0]]) % 360.0, 3):g}° apart, not a multiple "
                     f"of the {s:g}° firing interval; "
                     "search with allow_uneven and a step_deg",

@@ -78,7 +78,7 @@ def run_local(problem, units, top, workers, threshold, progress):
         if handler is not None:
             signal.signal(signal.SIGINT, handler)
     with pool:
-        for piece, chunk in zip(pieces, pool.imap(_worker_chunk, pieces)):
+        for piece, chunk in zip(pieces, pool.imap(_worker_chunk, pieces), strict=True):
             out.append(chunk)
             if progress:
                 progress(len(piece))
@@ -119,7 +119,7 @@ def run_cluster(problem, units, top, threshold, scheduler, progress):
             client.submit(_cluster_chunk, remote, piece, top, threshold, pure=False)
             for piece in pieces
         ]
-        sizes = {f.key: len(p) for f, p in zip(futures, pieces)}
+        sizes = {f.key: len(p) for f, p in zip(futures, pieces, strict=True)}
         out = []
         for future in as_completed(futures):
             out.append(future.result())

@@ -85,6 +85,8 @@ def throw_phasors(template, samples, max_order):
     shaking = shaking_forces(template, samples, max_order)
     masses = shaking.masses
     per_mass = shaking.mass_coefficients
+    # shaking_forces keeps the per-mass shares (a balancer added by Shaking.plus drops them)
+    assert masses is not None and per_mass is not None
     orders = np.arange(1, max_order + 1)
     lever = (masses.z_m - template.mean_z_m)[:, None]
     n = len(template.throws)
@@ -108,7 +110,7 @@ def guide_phasors(template, samples, max_order):
     searched. The X-type's division by the guide distance cancels in its coefficient."""
     guide = torque(template, samples, max_order, bearings=False).guide
     out = np.zeros((2, len(template.throws), max_order), complex)
-    for cylinder, own in zip(template.cylinders, guide.cylinders):
+    for cylinder, own in zip(template.cylinders, guide.cylinders, strict=True):
         for k in range(1, max_order + 1):
             cos, sin = own.couple.order(k)
             out[0, cylinder.throw_index, k - 1] += complex(cos, -sin)
@@ -181,7 +183,7 @@ def objective_channels(
     """The complex sums the score needs, (kind 0..6, order index), and their weights, divided
     by the largest term weight (the search compares scores of order one; see SCORE_TIE); and
     for a TV1 term, which of them it takes the largest of (a mask) with their scales."""
-    weights = {}
+    weights: dict[tuple[int, int], float] = {}  # (kind, order index): weight
     largest = max(term.weight for term in objective)
     tv = {}
     for term in objective:

@@ -221,7 +221,9 @@ def _balancer_rows(engine, angles):
     """(position, mass, z, owner, throw) of every balancer-shaft mass as built, fixed frame."""
     rows = []
     for shaft in engine.balancer_shafts:
-        for mass, position in zip(shaft.masses, balancer_positions(engine, shaft, angles)):
+        for mass, position in zip(
+            shaft.masses, balancer_positions(engine, shaft, angles), strict=True
+        ):
             e = UNKNOWN_RADIUS_M if mass.eccentricity_m is None else mass.eccentricity_m
             rows.append(
                 (position, mass.mass_radius_kgm / e, engine.balancer_z_m(mass), BALANCER, -1)
@@ -295,7 +297,8 @@ def close_linkage(engine, crank_angles, numbers=None, pin_shift=None):
             continue
         master = engine.cylinder(cyl.master)
         crank_pin = pins[master.throw_index]
-        # the knuckle pin is fixed in the master rod: turn the rod's unit vector by the knuckle angle
+        # the knuckle pin is fixed in the master rod: turn the rod's unit vector by the knuckle
+        # angle
         rod_direction = (piston[master.number] - crank_pin) / engine.rod_length_m
         knuckle[cyl.number] = crank_pin + cyl.knuckle_radius_m * rod_direction * np.exp(
             1j * cyl.knuckle_angle_rad
@@ -399,9 +402,9 @@ def linkage_state(engine, angles, pin_shift=None, throw_index=None) -> LinkageSt
     closing of the linkage: the crank-pin forces shift every pin several times, and closing
     it once per shift for all three is what keeps ``balance torque`` fast.
 
-    With ``throw_index`` (a throw's place in ``Engine.throws``), only what rides on that throw: its cylinders' masses and rods
-    and the masses at its pin, in the order they have in the whole engine's state (no
-    counterweight or balancer-shaft mass: they ride on no pin).
+    With ``throw_index`` (a throw's place in ``Engine.throws``), only what rides on that throw:
+    its cylinders' masses and rods and the masses at its pin, in the order they have in the
+    whole engine's state (no counterweight or balancer-shaft mass: they ride on no pin).
     """
     check_assembly(engine)
     angles = np.asarray(angles, dtype=float)
@@ -433,7 +436,7 @@ def linkage_state(engine, angles, pin_shift=None, throw_index=None) -> LinkageSt
                     cyl.opposed_throw_index,
                 )
             )
-    for index, (crank, pin) in enumerate(zip(engine.throws, pins)):
+    for index, (crank, pin) in enumerate(zip(engine.throws, pins, strict=True)):
         if throw_index is not None and index != throw_index:
             continue
         for owner, mass in ((BIG_ENDS, engine.rotating_kg), (CRANK, engine.crank_kg)):

@@ -72,7 +72,7 @@ class KinematicState:
         """ds/dθ of every cylinder's travel, m/rad, by cylinder number (spectral)."""
         numbers = list(self.travel)
         rates = periodic_derivative(np.array([self.travel[n] for n in numbers])).real
-        return dict(zip(numbers, rates))
+        return dict(zip(numbers, rates, strict=True))
 
     def parts(self, masses_kept, rods_kept) -> "KinematicState":
         """This state with only the point masses and rods the boolean masks keep: the parts of

@@ -47,7 +47,7 @@ def _tdc_angles(engine):
             for i, n in enumerate(block):
                 best[start + i] = local[i, np.argmax(travel[n][i])]
         step /= 50
-    closed.update(zip(numbers, best))
+    closed.update(zip(numbers, best, strict=True))
     return _as_engine_angles(engine, closed)
 
 

@@ -3,8 +3,8 @@
 This is the ground floor of the analyses: it imports only the errors, tolerances and units.
 An :class:`Engine` built in code is checked exactly as one read from a configuration file
 (the reader puts its key names into the messages); whether its linkage can be assembled over
-a revolution is checked by :func:`balance_cli.kinematics.linkage.check_assembly`, which every analysis
-calls first.
+a revolution is checked by :func:`balance_cli.kinematics.linkage.check_assembly`, which every
+analysis calls first.
 
 Modules: :mod:`.values` (one value's checks), :mod:`.crankshaft` (crankshafts and throws),
 :mod:`.cylinder`, :mod:`.as_built` (counterweights and balancer shafts), :mod:`.parts` (part

@@ -73,15 +73,15 @@ def check_engine(engine: "Engine") -> None:
     _check_crankshafts(engine)
     if not engine.bank_angles_rad:
         raise ModelError("needs at least one cylinder-axis direction", "bank_angles_rad")
-    directions = []
+    directions: list[float] = []
     for i, angle in enumerate(engine.bank_angles_rad):
         check_angle(angle, "bank_angles_rad")
         # two banks pointing the same way put two cylinders in every bore of a throw
         direction = math.remainder(angle, 2 * math.pi)
-        for j, other in enumerate(directions):
-            if abs(math.remainder(direction - other, 2 * math.pi)) < SAME_DIRECTION_RAD:
+        for j, earlier in enumerate(directions):
+            if abs(math.remainder(direction - earlier, 2 * math.pi)) < SAME_DIRECTION_RAD:
                 raise ModelError(
-                    f"{j + 1} and {i + 1} point the same way ({math.degrees(other):g}° "
+                    f"{j + 1} and {i + 1} point the same way ({math.degrees(earlier):g}° "
                     f"and {math.degrees(angle):g}°); give each bank its own direction",
                     "bank_angles_rad",
                 )
@@ -113,7 +113,7 @@ def check_engine(engine: "Engine") -> None:
         raise ModelError(
             f"cylinder {twice} is listed twice; give each a unique number", cylinder=twice
         )
-    bores = {}
+    bores: dict[tuple[int, int, int], int] = {}  # (bank, throw, z step): cylinder number
     for c in engine.cylinders:
         _check_cylinder(engine, c)
         bore = (c.bank, c.throw, round(c.z_m / SAME_POSITION_M))

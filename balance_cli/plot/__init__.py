@@ -6,8 +6,9 @@ otherwise a new pyplot figure is made, so figures show inline in a notebook. Imp
 module never chooses a backend: that is the application's business (the command line uses Agg).
 
 Kinds: :func:`locus` (Tanaka's Fig. 9), :func:`spectrum`, :func:`star`, :func:`firing` (of
-:func:`balance_cli.analyse`'s results) and :func:`torque` (of :func:`balance_cli.analysis.torque.torque`'s);
-``of="moment"`` makes the locus and the star those of the free moment instead of the force.
+:func:`balance_cli.analyse`'s results) and :func:`torque` (of
+:func:`balance_cli.analysis.torque.torque`'s); ``of="moment"`` makes the locus and the star
+those of the free moment instead of the force.
 :func:`save` writes a figure in the format its file name's extension names.
 
 Also :func:`campbell`, :func:`mode_shapes` and :func:`torque_speed` of a torsional vibration

@@ -17,6 +17,14 @@ if TYPE_CHECKING:
 __all__ = ["firing"]
 
 
+def _on_dial(angle, radius, cycle):
+    """(x, y) of ``angle`` (degrees of a ``cycle``, clockwise from the top) at ``radius``."""
+    return (
+        radius * math.sin(2 * math.pi * angle / cycle),
+        radius * math.cos(2 * math.pi * angle / cycle),
+    )
+
+
 def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "Figure":
     """Firing angles on a dial of one working cycle (720° or 360°, clockwise from the top),
     cylinder numbers outside, intervals in red (one, in the centre, when they are all equal)."""
@@ -28,25 +36,28 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
     for ax in axes:
         ax.axis("off")
     ring = np.linspace(0, 2 * np.pi, 181)
-    for ax, r in zip(axes, chosen):
+    for ax, r in zip(axes, chosen, strict=True):
         cycle = r.engine.cycle_deg
         fire = r.firing
-        where = lambda angle, radius: (
-            radius * math.sin(2 * math.pi * angle / cycle),  # noqa: E731
-            radius * math.cos(2 * math.pi * angle / cycle),
-        )
         ax.plot(np.sin(ring), np.cos(ring), color="0.7", linewidth=0.6)
         for tick in np.arange(0, cycle, cycle / 4):
             ax.text(
-                *where(tick, 1.32), f"{tick:g}°", ha="center", va="center", fontsize=6, color="0.5"
+                *_on_dial(tick, 1.32, cycle),
+                f"{tick:g}°",
+                ha="center",
+                va="center",
+                fontsize=6,
+                color="0.5",
             )
         # every spoke in one line broken at NaN: one artist, not one per cylinder
         xs, ys = [], []
-        for angle, number in zip(fire.angles_deg, fire.order):
-            x, y = where(angle, 1.0)
+        for angle, number in zip(fire.angles_deg, fire.order, strict=True):
+            x, y = _on_dial(angle, 1.0, cycle)
             xs += [0.0, x, math.nan]
             ys += [0.0, y, math.nan]
-            ax.text(*where(angle, 1.13), str(number), ha="center", va="center", fontsize=8)
+            ax.text(
+                *_on_dial(angle, 1.13, cycle), str(number), ha="center", va="center", fontsize=8
+            )
         ax.plot(xs, ys, color="C0", linewidth=1.2)
         if fire.uniform:
             # one figure says it: a label in every gap of an even engine only repeats it
@@ -60,9 +71,9 @@ def firing(results: "Iterable[EngineResult]", fig: "Figure | None" = None) -> "F
                 color="C3",
             )
         else:
-            for angle, gap in zip(fire.angles_deg, fire.intervals_deg):
+            for angle, gap in zip(fire.angles_deg, fire.intervals_deg, strict=True):
                 ax.text(
-                    *where(angle + gap / 2, 0.65),
+                    *_on_dial(angle + gap / 2, 0.65, cycle),
                     f"{gap:.4g}°",
                     ha="center",
                     va="center",

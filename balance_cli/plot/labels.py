@@ -121,7 +121,7 @@ def label_arrows(ax, arrows):
     sizes = [_text_size_pt(label, STAR_LABEL_PT) for label, _, _, _ in arrows]
     centres = place_labels(segments, sizes)
     to_data = ax.transData.inverted()
-    for (label, _, _, colour), centre in zip(arrows, centres):
+    for (label, _, _, colour), centre in zip(arrows, centres, strict=True):
         if centre is None:
             continue
         x, y = to_data.transform(np.array(centre) / to_pt)

@@ -65,7 +65,7 @@ def locus(
     # an engine with nothing left is a dot at the origin, hidden under the others
     names = [
         short(r.engine.name) + ("" if x.any() or y.any() else f" (no free {of})")
-        for r, (x, y) in zip(chosen, points)
+        for r, (x, y) in zip(chosen, points, strict=True)
     ]
     columns, rows = _legend_rows(names)
     own = ax is None
@@ -77,7 +77,7 @@ def locus(
             (0.11, (legend_in + 0.75) / height, 0.84, 1 - (legend_in + 0.75 + 0.85) / height)
         )
     fig = cast("Figure", ax.figure)
-    for (x, y), name, colour in zip(points, names, colours(len(chosen))):
+    for (x, y), name, colour in zip(points, names, colours(len(chosen)), strict=True):
         ax.plot(np.append(x, x[0]), np.append(y, y[0]), label=name, linewidth=1.6, color=colour)
     ax.axhline(0, color="0.6", linewidth=0.6)
     ax.axvline(0, color="0.6", linewidth=0.6)

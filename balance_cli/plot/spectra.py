@@ -98,9 +98,9 @@ def spectrum(
     quantities = [("force", data["force_floor"], data["force_label"])]
     if panels == 2:
         quantities.append(("moment", data["moment_floor"], data["moment_label"]))
-    for i, (engine, colour) in enumerate(zip(data["engines"], colours(n))):
+    for i, (engine, colour) in enumerate(zip(data["engines"], colours(n), strict=True)):
         offset = -0.4 + 2 * i * width
-        for ax, (quantity, floor, _) in zip(axes, quantities):
+        for ax, (quantity, floor, _) in zip(axes, quantities, strict=True):
             values = engine[quantity]
             for part, shift, style in ((0, 0.0, {}), (1, width, {"alpha": 0.45, "hatch": "//"})):
                 heights = values[: len(orders), part]
@@ -119,7 +119,7 @@ def spectrum(
         Patch(facecolor="white", edgecolor="black", label="forward (turns with the crank)"),
         Patch(facecolor="white", edgecolor="black", hatch="//", label="backward (against it)"),
     ]
-    for ax, (quantity, floor, label) in zip(axes, quantities):
+    for ax, (quantity, floor, label) in zip(axes, quantities, strict=True):
         ax.set_yscale("log")
         top = max((e[quantity].max() for e in data["engines"]), default=floor)
         ax.set_ylim(floor, max(top, floor) * 3)
@@ -165,6 +165,7 @@ def _bars(ax, left, top, bottom, width, **style):
     if len(left) == 0:
         return
     corners = [
-        [(x, bottom), (x + width, bottom), (x + width, y), (x, y)] for x, y in zip(left, top)
+        [(x, bottom), (x + width, bottom), (x + width, y), (x, y)]
+        for x, y in zip(left, top, strict=True)
     ]
     ax.add_collection(PolyCollection(corners, linewidth=0, **style), autolim=False)

@@ -94,7 +94,7 @@ def star(
         left=0.06, right=0.97, bottom=0.04, top=1 - 1.3 / (CELL_IN * rows), wspace=0.3, hspace=0.4
     )
     unit = "N·m" if of == "moment" else ""
-    for ax, r in zip(axes, chosen):
+    for ax, r in zip(axes, chosen, strict=True):
         chains = star_chains(r, order, of)
         parts = (("forward", "C0"), ("backward", "C3"))
         for row, (part, colour) in enumerate(parts):

@@ -27,9 +27,9 @@ def axis_values(result):
         return [float(v) for v in result.values], f"{parameter.key} (°)"
     if not parameter.takes_units:
         return [float(v) for v in result.values], parameter.key
-    matches = [_WRITTEN.match(v) for v in result.values]
-    written_units = {m.group(2) for m in matches if m}
-    if all(matches) and len(written_units) == 1:
+    matches = [m for m in (_WRITTEN.match(v) for v in result.values) if m]
+    written_units = {m.group(2) for m in matches}
+    if len(matches) == len(result.values) and len(written_units) == 1:
         return [float(m.group(1)) for m in matches], f"{parameter.key} ({written_units.pop()})"
     return list(result.values_si), f"{parameter.key} ({parameter.unit_si})"
 
@@ -63,7 +63,7 @@ def sweep_figure(result, units="N", fig=None):
     points = [result.points[i] for i in order]
     axes = fig.subplots(len(groups), 1, sharex=True, squeeze=False)[:, 0]
     marker = "o" if len(x) <= 30 else None
-    for ax, (kind, title, quantities) in zip(axes, groups):
+    for ax, (_kind, title, quantities) in zip(axes, groups, strict=True):
         drawn = []
         for q in quantities:
             y = [shown_value(q, p[q.column], units) for p in points]

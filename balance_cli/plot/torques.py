@@ -33,7 +33,8 @@ def torque_data(result: "TorqueResult", units: str = "N") -> dict:
     at the end to close the curve), ``inertia``, ``gas`` (None without one) and ``total`` at
     those angles, ``mean`` and ``range`` of the total torque, and its ``orders`` (multiples of ½
     for a four-stroke) with their ``amplitudes`` √(cos² + sin²); torques in the moment unit of
-    ``units`` (N·m for "N", kN·m, MN·m, kgf·m, lbf·ft). Also ``name``, ``period_deg``, ``cycle``, ``speed_rpm``, ``unit``.
+    ``units`` (N·m for "N", kN·m, MN·m, kgf·m, lbf·ft). Also ``name``, ``period_deg``,
+    ``cycle``, ``speed_rpm``, ``unit``.
     """
     from ..units import rad_s_to_rpm
 
@@ -134,7 +135,7 @@ class _Labels(Artist):
         gc = renderer.new_gc()
         gc.set_foreground(self.colour)
         points = self.get_transform().transform([item[:2] for item in self.items])
-        for (x, y), (_, _, text, ha, va, rotation) in zip(points, self.items):
+        for (x, y), (_, _, text, ha, va, rotation) in zip(points, self.items, strict=True):
             w, h, d = size(text)
             h, d = max(h, line_h), max(d, line_d)
             # the box, w wide and h high (h high and w wide turned 90°), aligned on (x, y); then
@@ -171,7 +172,8 @@ class _Panels:
         return self.fig.text(*self.at(x_in, y_in), text, **{"fontsize": 7, **style})
 
     def label(self, x_in, y_in, text, **alignment):
-        self.labels.add(*self.at(x_in, y_in), text, **alignment)
+        x, y = self.at(x_in, y_in)
+        self.labels.add(x, y, text, **alignment)
 
     def panel(
         self, box_in, xlim, ylim, xticks, xlabels, yticks, ylabels, xlabel, ylabel, xminor=()
@@ -187,19 +189,19 @@ class _Panels:
         to_panel = BboxTransform(
             Bbox([[xlim[0], ylim[0]], [xlim[1], ylim[1]]]), Bbox([[x0, y0], [x1, y1]])
         )
-        for x, label in zip(xticks, xlabels):
+        for x, label in zip(xticks, xlabels, strict=True):
             fx = x0 + (x1 - x0) * (x - xlim[0]) / (xlim[1] - xlim[0])
             self.grid.append([(fx, y0), (fx, y1)])
             if label:
                 self.label(fx * self.size[0], bottom - 0.04, label, ha="center", va="top")
-        for y, label in zip(yticks, ylabels):
+        for y, label in zip(yticks, ylabels, strict=True):
             fy = y0 + (y1 - y0) * (y - ylim[0]) / (ylim[1] - ylim[0])
             self.grid.append([(x0, fy), (x1, fy)])
             if label:
                 self.label(left - 0.04, fy * self.size[1], label, ha="right", va="center")
         self.frames.append([(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)])
         # ticks in the frame's path: inward from the bottom edge, long at labels
-        for x, length in [(x, 0.06) for x, label in zip(xticks, xlabels) if label] + [
+        for x, length in [(x, 0.06) for x, label in zip(xticks, xlabels, strict=True) if label] + [
             (x, 0.03) for x in xminor
         ]:
             fx = x0 + (x1 - x0) * (x - xlim[0]) / (xlim[1] - xlim[0])
@@ -239,10 +241,10 @@ def _compound(polylines, closed=False):
 def torque(
     results: "Iterable[TorqueResult]", units: str = "N", fig: "Figure | None" = None
 ) -> "Figure":
-    """Torques of :func:`balance_cli.analysis.torque.torque`, one small picture per engine: above, the
-    inertia, gas (when there is one) and total torque over one period (360°, or 720° for a
-    four-stroke) against the crank angle of throw 1, and the mean total torque (dashed); below,
-    the amplitude of each order of the total torque (half orders too for a four-stroke).
+    """Torques of :func:`balance_cli.analysis.torque.torque`, one small picture per engine:
+    above, the inertia, gas (when there is one) and total torque over one period (360°, or 720°
+    for a four-stroke) against the crank angle of throw 1, and the mean total torque (dashed);
+    below, the amplitude of each order of the total torque (half orders too for a four-stroke).
     Torques in the moment unit of ``units`` (N·m for "N", kN·m, MN·m, kgf·m or lbf·ft).
 
     The pictures are drawn on the figure itself, not in Axes: 17 engines' Axes and their ticks
@@ -345,7 +347,7 @@ def torque(
         width = 0.7 * step
         corners = [
             [(k - width / 2, 0.0), (k + width / 2, 0.0), (k + width / 2, h), (k - width / 2, h)]
-            for k, h in zip(orders, heights)
+            for k, h in zip(orders, heights, strict=True)
             if h > 0
         ]
         if corners:

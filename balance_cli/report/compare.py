@@ -40,7 +40,10 @@ def compare_parts(comparison, scale):
     the records of ``Comparison.to_dict``."""
     records = comparison.to_dict()["engines"]
     units = [r.per_cylinder_unit_n for r in comparison.results]
-    entries = [(record["name"], record["orders"], unit_n) for record, unit_n in zip(records, units)]
+    entries = [
+        (record["name"], record["orders"], unit_n)
+        for record, unit_n in zip(records, units, strict=True)
+    ]
     firing = [
         [
             record["name"],
@@ -55,7 +58,7 @@ def compare_parts(comparison, scale):
     # per cylinder beside per-cylinder figures (Tanaka's), in newtons beside absolute ones
     share = "percent_of_reference_absolute" if scale.absolute else "percent_of_reference"
     summary = []
-    for record, unit_n in zip(records, units):
+    for record, unit_n in zip(records, units, strict=True):
         force = lambda v, u=unit_n: scale.force(v, u)  # noqa: E731
         summary.append(
             [
@@ -76,7 +79,8 @@ def compare_parts(comparison, scale):
         + (", in newtons." if scale.absolute else ", per cylinder (Tanaka's Part III)."),
         "Largest: the resultant's largest magnitude over a revolution, all orders; main "
         "order: the order with the largest ellipse, its max and direction (rotating: a "
-        "circle, turning with the crank (forward) or against it (backward)). A turning crank's ideal counterweight has taken the forward first order of "
+        "circle, turning with the crank (forward) or against it (backward)). A turning crank's "
+        "ideal counterweight has taken the forward first order of "
         "force and moment away (a rotary's crank does not turn), and where a crankshaft "
         "turns against the first, its counterweights the backward first order too.",
     ]

@@ -312,7 +312,8 @@ def balance_summary(balances):
         n_unit = b.engine.per_cylinder_unit_n
         first = record["residual"]["orders"][0]["force"]
         weights = "; ".join(
-            f"{figure(c['mass_kg'])} kg at {round_degrees(c['angle_deg'], 1):.1f}° ({_plane_text(c)})"
+            f"{figure(c['mass_kg'])} kg at {round_degrees(c['angle_deg'], 1):.1f}° "
+            f"({_plane_text(c)})"
             for c in record["counterweights"]
         )
         rows.append(

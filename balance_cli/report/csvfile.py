@@ -54,7 +54,7 @@ def compare_csv(comparison, scale):
             for q in _ORDER_QUANTITIES
         ]
     )
-    for result, record in zip(comparison.results, comparison.to_dict()["engines"]):
+    for result, record in zip(comparison.results, comparison.to_dict()["engines"], strict=True):
         for order in record["orders"]:
             writer.writerow(
                 [record["name"], record["config"], order["order"]]
@@ -119,7 +119,7 @@ def balance_csv(balances, scale):
                 values = order_values(order, b.engine.per_cylinder_unit_n, scale)
                 rows += [
                     (f"as built order {order['order']}", name, value, unit)
-                    for name, value, unit in zip(_ORDER_QUANTITIES, values, units)
+                    for name, value, unit in zip(_ORDER_QUANTITIES, values, units, strict=True)
                 ]
         for i, weight in enumerate(record["counterweights"], 1):
             rows += _records(f"counterweight {i}", weight, weight_keys)
@@ -130,7 +130,7 @@ def balance_csv(balances, scale):
                 values = order_values(order, b.engine.per_cylinder_unit_n, scale)
                 rows += [
                     (f"{stage} order {order['order']}", name, value, unit)
-                    for name, value, unit in zip(_ORDER_QUANTITIES, values, units)
+                    for name, value, unit in zip(_ORDER_QUANTITIES, values, units, strict=True)
                 ]
         for i, shaft in enumerate(record.get("shafts", []), 1):
             rows += _records(f"shaft {i}", shaft)

@@ -5,6 +5,8 @@ rows)`` (rows of text; user text is made safe by the renderer), ``("figure", fil
 caption)``.
 """
 
+from typing import Literal
+
 from .. import __version__
 from ..units import Scale, rad_s_to_rpm
 from .compare import compare_parts
@@ -14,6 +16,13 @@ from .family import family_parts
 from .torque import torque_summary
 
 __all__ = ["PICTURES", "blocks"]
+
+#: the blocks, as the module text describes them
+Heading = tuple[Literal["h"], int, str]
+Paragraph = tuple[Literal["p"], str]
+Table = tuple[Literal["table"], list[str], list[list[str]]]
+Picture = tuple[Literal["figure"], str, str, str]
+Block = Heading | Paragraph | Table | Picture
 
 #: (file, kind, title, caption) of each picture, in the order they appear
 PICTURES = [
@@ -36,7 +45,8 @@ PICTURES = [
         "star.svg",
         "star",
         "Star of order {star}",
-        "Each cylinder's forward and backward phasor of order {star} at θ = 0, chained tip to tail; "
+        "Each cylinder's forward and backward phasor of order {star} at θ = 0, chained tip to "
+        "tail; "
         "the dashed line is the engine's resultant.",
     ),
     (
@@ -50,7 +60,8 @@ PICTURES = [
         "torque.svg",
         "torque",
         "Torques",
-        "Above, the inertia, gas (from the [gas] cycle) and total torque on the crankshaft over one "
+        "Above, the inertia, gas (from the [gas] cycle) and total torque on the crankshaft over "
+        "one "
         "cycle against the crank angle of throw 1, and the mean total torque (dashed); below, the "
         "amplitude of each order of the total torque up to the highest order analysed (half orders "
         "too for a four-stroke); N·m.",
@@ -58,14 +69,16 @@ PICTURES = [
 ]
 
 
-def blocks(comparison, balances, star_order, torques, scale=None, family=None, torsion=None):
+def blocks(
+    comparison, balances, star_order, torques, scale=None, family=None, torsion=None
+) -> list[Block]:
     """The report: engines, comparison tables, counterweights, torques (the
-    :class:`~balance_cli.analysis.torque.TorqueResult` of each engine), pictures; forces per cylinder,
-    moments and torques in ``scale``'s units (default N·m)."""
+    :class:`~balance_cli.analysis.torque.TorqueResult` of each engine), pictures; forces per
+    cylinder, moments and torques in ``scale``'s units (default N·m)."""
     scale = Scale() if scale is None else scale
     results = comparison.results
     count = f"{len(results)} engine{'s' if len(results) != 1 else ''}"
-    out = [
+    out: list[Block] = [
         ("h", 1, "Balance report"),
         (
             "p",
@@ -173,11 +186,11 @@ def blocks(comparison, balances, star_order, torques, scale=None, family=None, t
     return out
 
 
-def _torsion_blocks(torsion, scale):
+def _torsion_blocks(torsion, scale) -> list[Block]:
     """The torsion section: per engine with a [torsion] table, its first modes, the major
     criticals in the speed range and the largest vibratory torque per section (a note
     instead when openTorsion is missing)."""
-    out = [("h", 2, "Torsional vibration")]
+    out: list[Block] = [("h", 2, "Torsional vibration")]
     if isinstance(torsion, str):
         return out + [("p", torsion)]
     out.append(

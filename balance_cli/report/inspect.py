@@ -44,8 +44,10 @@ def _parts_lines(engine):
     parts = engine.parts
     if parts is not None:
         lines.append(
-            f"  parts:         piston {kg_to_g(parts.piston_kg):g} g; rod {kg_to_g(parts.rod_kg):g} g, "
-            f"centre of gravity {_mm(parts.rod_cg_m)} from the big end, J {_inertia(parts.rod_inertia_kgm2)}"
+            f"  parts:         piston {kg_to_g(parts.piston_kg):g} g; "
+            f"rod {kg_to_g(parts.rod_kg):g} g, "
+            f"centre of gravity {_mm(parts.rod_cg_m)} from the big end, "
+            f"J {_inertia(parts.rod_inertia_kgm2)}"
             + (
                 f"; link rod {kg_to_g(parts.link_kg):g} g, {_mm(parts.link_cg_m)}, "
                 f"j {_inertia(parts.link_inertia_kgm2)}"
@@ -128,7 +130,8 @@ def show_table(engine, firing):
         f"{rad_s_to_rpm(engine.speed_rad_s):g} rpm",
         f"  crank radius:  {_mm(engine.crank_radius_m)}, rod {_mm(engine.rod_length_m)}, "
         f"pin offset {_mm(engine.pin_offset_m)}",
-        f"  vertical:      {wrap_degrees(math.degrees(engine.vertical_axis_rad)):g}° from the reference axis "
+        f"  vertical:      {wrap_degrees(math.degrees(engine.vertical_axis_rad)):g}° "
+        "from the reference axis "
         f"({engine.vertical_origin})",
         f"  masses:        reciprocating {kg_to_g(engine.mean_reciprocating_kg):g} g mean per "
         f"cylinder, rotating {kg_to_g(engine.rotating_kg):g} g and crank "

@@ -28,7 +28,8 @@ def search_summary(result):
         f"{result.template.name} ({result.template.config_path or 'template'}): {what}; "
         f"objective {', '.join(str(t) for t in result.objective)}",
         f"{result.arrangements_total:,} arrangements with throw 1 at 0° "
-        f"({result.firing_orders_per_crank} firing order{'s' if result.firing_orders_per_crank != 1 else ''} "
+        f"({result.firing_orders_per_crank} firing order"
+        f"{'s' if result.firing_orders_per_crank != 1 else ''} "
         f"a crank), {result.arrangements_distinct:,} distinct; {result.evaluated:,} cranks "
         f"evaluated, {result.pruned:,} skipped by bound ({result.elapsed_s:.2f} s, "
         f"{result.workers} worker{'s' if result.workers != 1 else ''})",

@@ -32,7 +32,8 @@ def sweep_tables(result, fmt, units="N"):
     at = "" if result.speed_rpm is None else f" at {result.speed_rpm:g} rpm"
     title = (
         f"{heading}{safe(result.name)}{at}: {shown} against {safe(result.parameter.key)} "
-        f"({safe(result.config)}, {len(result.points)} point{'s' if len(result.points) != 1 else ''}, "
+        f"({safe(result.config)}, {len(result.points)} "
+        f"point{'s' if len(result.points) != 1 else ''}, "
         f"{result.samples} samples)"
     )
     headers = [_parameter_heading(result.parameter)] + [

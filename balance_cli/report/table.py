@@ -139,8 +139,9 @@ def order_parts(entries, scale, samples):
             forces,
             f"No free force in any order up to {top}."
             if not forces
-            else "Orders not listed are zero. fwd turns with the crank, bwd against it; max and min are "
-            "the semi-axes of the order's ellipse, axis the direction of max from the reference axis "
+            else "Orders not listed are zero. fwd turns with the crank, bwd against it; max and "
+            "min are the semi-axes of the order's ellipse, axis the direction of max from the "
+            "reference axis "
             "(— where the ellipse is a circle); vertical and horizontal are the amplitudes of the "
             f"components along the engine's vertical and across it ({samples} samples a "
             "revolution).",

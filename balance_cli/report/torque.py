@@ -81,7 +81,7 @@ def _order_table(series, scale, fmt, largest):
             figure(scale.moment(math.hypot(c, s))),
             f"{round_degrees(d['phase_deg'], 1):.1f}",
         ]
-        for (k, c, s), d in zip(series.orders, series.to_dict()["orders"])
+        for (k, c, s), d in zip(series.orders, series.to_dict()["orders"], strict=True)
         if math.hypot(c, s) >= 1e-3 * largest and largest > 0
     ]
     ml = scale.moment_label
@@ -108,11 +108,12 @@ def _guide_force_lines(guide, scale, fmt):
             figure(scale.moment(b["amplitude_Nm"])),
             phase(b),
         ]
-        for a, b in zip(h, x)
+        for a, b in zip(h, x, strict=True)
         if largest > 0 and max(a["amplitude_Nm"], b["amplitude_Nm"]) >= 1e-3 * largest
     ]
     return [
-        f"Guide-force moments (the couples of the pistons' (crossheads') guide forces with the main "
+        "Guide-force moments (the couples of the pistons' (crossheads') guide forces with the "
+        "main "
         f"bearings; H-type their sum, X-type their bimoment about the engine's centre over "
         f"L = {guide.lever_m:.4g} m, the rod length; amplitude·cos(kθ − phase); orders below "
         "a thousandth of the largest left out):",

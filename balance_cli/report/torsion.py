@@ -38,7 +38,7 @@ def torsion_tables(results, fmt, scale=None):
             + f"{r.orders.max():g}.",
             "",
         ]
-        rows = [[name, figure(j)] for name, j in zip(r.nodes, r.inertia_kgm2)]
+        rows = [[name, figure(j)] for name, j in zip(r.nodes, r.inertia_kgm2, strict=True)]
         out += ["Shaft line, free end first:", "", render(["Inertia", "J (kg·m²)"], rows, fmt), ""]
         out += [
             "Natural modes (relative amplitudes, the largest throw amplitude 1):",

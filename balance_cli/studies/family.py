@@ -271,7 +271,9 @@ def family(
             case["power"] = f"{n * power_per_cylinder_w!r} W"
         if n in firing_orders:
             order = list(firing_orders[n])
-            case["throws"] = [{**t, "phase": p} for t, p in zip(throws, _even_phases(order, n))]
+            case["throws"] = [
+                {**t, "phase": p} for t, p in zip(throws, _even_phases(order, n), strict=True)
+            ]
             case["firing_order"] = order
             result = analyse(build(case, path), samples, max_order)
             method, score = "given", None

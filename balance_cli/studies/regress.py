@@ -352,7 +352,9 @@ def _engine_rows(name, a, b, rtol):
     fa, fb = a["firing"], b["firing"]
     same("firing order", fa.get("order"), fb.get("order"))
     if fa.get("order") == fb.get("order"):
-        for cylinder, x, y in zip(fb["order"], fa.get("angles_deg", []), fb.get("angles_deg", [])):
+        for cylinder, x, y in zip(
+            fb["order"], fa.get("angles_deg", []), fb.get("angles_deg", []), strict=False
+        ):
             number(f"firing angle of cylinder {cylinder}", x, y, FIRING_CHANGE_DEG, "phase")
     same("firing uniform", fa.get("uniform"), fb.get("uniform"))
     same("sampling_ok", a.get("sampling_ok"), b.get("sampling_ok"))

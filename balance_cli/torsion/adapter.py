@@ -31,11 +31,11 @@ def assembly_of(line):
     ot = require_opentorsion()
     disks = [
         ot.Disk(i, float(j), c=float(c))
-        for i, (j, c) in enumerate(zip(line.inertia, line.node_damping))
+        for i, (j, c) in enumerate(zip(line.inertia, line.node_damping, strict=True))
     ]
     shafts = [
         ot.Shaft(i, i + 1, None, None, k=float(k), I=0.0, c=float(c))
-        for i, (k, c) in enumerate(zip(line.stiffness, line.section_damping))
+        for i, (k, c) in enumerate(zip(line.stiffness, line.section_damping, strict=True))
     ]
     if not shafts:
         raise AnalysisError(

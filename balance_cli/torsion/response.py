@@ -4,8 +4,8 @@ response, and their result.
 The shaft line and its solution are openTorsion's (Aalto University's library of disks and
 shafts: ``pip install 'engine-balance[torsion]'``); balance supplies the engine's side: each throw's
 inertia (or the mean reduced mass of the parts on it), and the excitation, each cylinder's exact
-tangential torque order by order (:func:`balance_cli.analysis.cylinders.cylinder_torques`), which carries
-its firing phase because it is given against the crank angle of throw 1.
+tangential torque order by order (:func:`balance_cli.analysis.cylinders.cylinder_torques`),
+which carries its firing phase because it is given against the crank angle of throw 1.
 
 The model, free end first: the ``front`` inertias (pulley, damper), the throws, the flywheel and
 the load, each joined to the next by a section of stiffness k (and damping c). At a speed Ω the
@@ -69,7 +69,10 @@ class Mode:
             "mode": self.number,
             "frequency_Hz": self.frequency_hz,
             "frequency_cpm": 60.0 * self.frequency_hz,
-            "shape": [{"node": name, "amplitude": float(a)} for name, a in zip(names, self.shape)],
+            "shape": [
+                {"node": name, "amplitude": float(a)}
+                for name, a in zip(names, self.shape, strict=True)
+            ],
             "throw_amplitudes": [float(a) for a in self.throw_amplitudes],
             "phase_vector_sums": [
                 {"order": k, "sum": v} for k, v in self.phase_vector_sums.items()
@@ -181,11 +184,12 @@ class TorsionResult:
             "cycle": engine.cycle,
             "excitation": "gas and inertia" if self.with_gas else "inertia",
             "nodes": [
-                {"node": n, "inertia_kgm2": float(j)} for n, j in zip(self.nodes, self.inertia_kgm2)
+                {"node": n, "inertia_kgm2": float(j)}
+                for n, j in zip(self.nodes, self.inertia_kgm2, strict=True)
             ],
             "sections": [
                 {"section": n, "stiffness_Nm_per_rad": float(k)}
-                for n, k in zip(self.sections, self.stiffness_nm_rad)
+                for n, k in zip(self.sections, self.stiffness_nm_rad, strict=True)
             ],
             "modes": [m.to_dict(self.nodes) for m in self.modes],
             "criticals": [c.to_dict() for c in self.criticals],
@@ -311,7 +315,7 @@ def torsional_vibration(
     }
     modes, criticals = [], []
     low, high = speeds.min(), speeds.max()
-    for i, (w, shape) in enumerate(zip(omega_n, vectors.T), 1):
+    for i, (w, shape) in enumerate(zip(omega_n, vectors.T, strict=True), 1):
         at_throws = shape[throw_nodes]
         biggest = int(np.argmax(np.abs(at_throws)))
         scale = at_throws[biggest] if at_throws[biggest] else shape[np.argmax(np.abs(shape))]
@@ -338,7 +342,7 @@ def torsional_vibration(
         d, b = model.shaft_diameter_m, model.shaft_bore_m
         # τ = T·r/J_p with r = D/2 and J_p = π·(D⁴ − d⁴)/32
         stress = peak * (d / 2) / (math.pi * (d**4 - b**4) / 32)
-    sections = tuple(f"{a}–{b}" for a, b in zip(line.names, line.names[1:]))
+    sections = tuple(f"{a}–{b}" for a, b in zip(line.names, line.names[1:], strict=False))
     return TorsionResult(
         engine,
         line.names,

@@ -374,7 +374,7 @@ def sweep(
         )
 
     points = []
-    for i, (engine, value, value_si) in enumerate(zip(engines, values, values_si)):
+    for i, (engine, value, value_si) in enumerate(zip(engines, values, values_si, strict=True)):
         try:
             result = analyse(engine, samples, max_order)
             record = _measure(
@@ -441,16 +441,19 @@ def _measure(result, wanted, param, value, samples, max_order, torque_of, inerti
             record[q.column] = largest_force
         elif q.name == "largest_moment":
             record[q.column] = largest_moment
-        elif q.name == "steadiness":
-            record[q.column] = torques.steadiness.factor
         else:
-            total = torques.total
-            record[q.column] = {
-                "torque_mean": total.mean,
-                "torque_max": total.max,
-                "torque_min": total.min,
-                "torque_range": total.range,
-            }[q.name]
+            # the steadiness or a torque: sweep gives torque_of when one is wanted
+            assert torques is not None
+            if q.name == "steadiness":
+                record[q.column] = torques.steadiness.factor
+            else:
+                total = torques.total
+                record[q.column] = {
+                    "torque_mean": total.mean,
+                    "torque_max": total.max,
+                    "torque_min": total.min,
+                    "torque_range": total.range,
+                }[q.name]
     return record
 
 

@@ -202,7 +202,8 @@ def _compressed(keys):
 
 def _sweepable(data):
     """The numeric scalars the parsed configuration ``data`` has, and those it may add."""
-    present, addable = [], []
+    present: list[str] = []
+    addable: list[str] = []
     for table, keys in SCHEMA.items():
         if table == "":
             for key in keys:
@@ -273,9 +274,11 @@ def parameter_of(data: dict, key: str, path: str = "<config>") -> Parameter:
             )
         if head not in SCHEMA[""]:
             problem = (
-                f"{head} is a table; name one of its keys, such as {head}.{next(iter(SCHEMA[head]))}"
+                f"{head} is a table; name one of its keys, such as "
+                f"{head}.{next(iter(SCHEMA[head]))}"
                 if head in SCHEMA
-                else f"[{head}] is an array of tables; name one of its keys with the table's number, "
+                else f"[{head}] is an array of tables; name one of its keys with the table's "
+                "number, "
                 f"such as {head}[1].{next(iter(SCHEMA[head + '[]']))}"
                 if head + "[]" in SCHEMA
                 else "no such key"
