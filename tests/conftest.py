@@ -51,11 +51,14 @@ def couples(tmp_path_factory):
     from balance_cli import analyse, load
 
     folder = tmp_path_factory.mktemp("couples")
-    engines = {"inline-3": inline_toml("In-line 3", [0, 120, 240], 100),
-               "twin": inline_toml("180° twin", [0, 180], 100, cycle=4),
-               "v8-cross": inline_toml("90° V8, cross-plane", [0, 90, 270, 180], 100, cycle=4,
-                                       banks=(-45, 45)),
-               "inline-24": inline_toml("In-line 24", [(105 * j) % 360 for j in range(24)], 90)}
+    engines = {
+        "inline-3": inline_toml("In-line 3", [0, 120, 240], 100),
+        "twin": inline_toml("180° twin", [0, 180], 100, cycle=4),
+        "v8-cross": inline_toml(
+            "90° V8, cross-plane", [0, 90, 270, 180], 100, cycle=4, banks=(-45, 45)
+        ),
+        "inline-24": inline_toml("In-line 24", [(105 * j) % 360 for j in range(24)], 90),
+    }
     results = {}
     for key, text in engines.items():
         path = folder / f"{key}.toml"
@@ -69,8 +72,11 @@ def gas_config(tmp_path_factory):
     """The car's in-line four with a [gas] cycle: a four-stroke with gas and half orders."""
     text = (CONFIGS / "inline-4-car.toml").read_text(encoding="utf-8")
     path = tmp_path_factory.mktemp("gas") / "inline-4-gas.toml"
-    path.write_text(text.replace('name = "In-line 4, car proportions"',
-                                 'name = "In-line 4, car, with gas"') + CAR_GAS, encoding="utf-8")
+    path.write_text(
+        text.replace('name = "In-line 4, car proportions"', 'name = "In-line 4, car, with gas"')
+        + CAR_GAS,
+        encoding="utf-8",
+    )
     return path
 
 
@@ -80,5 +86,12 @@ def torques(gas_config):
     from balance_cli import load
     from balance_cli.analysis.torque import torque
 
-    return [torque(load(path)) for path in (gas_config, V8, CONFIGS / "inline-4-marine.toml",
-                                            CONFIGS / "nakanishi-w12-60-2stroke.toml")]
+    return [
+        torque(load(path))
+        for path in (
+            gas_config,
+            V8,
+            CONFIGS / "inline-4-marine.toml",
+            CONFIGS / "nakanishi-w12-60-2stroke.toml",
+        )
+    ]

@@ -60,11 +60,14 @@ phase = 180
 z = "90 mm"
 """
 #: the twin's first cylinder alone
-SINGLE = (TWIN.replace('name = "test twin"', 'name = "test single"')
-          .replace("firing_order = [1, 2]\n", "").split("[[throws]]")[0] + "[[throws]]\nphase = 0\n")
+SINGLE = (
+    TWIN.replace('name = "test twin"', 'name = "test single"')
+    .replace("firing_order = [1, 2]\n", "")
+    .split("[[throws]]")[0]
+    + "[[throws]]\nphase = 0\n"
+)
 #: TWIN's (and SINGLE's) reciprocating mass, kg, crank radius, m, and throw spacing, m
 TWIN_RECIPROCATING_KG, TWIN_CRANK_RADIUS_M, TWIN_PITCH = 0.5, 0.040, 0.090
-
 
 
 def replaced(old, new, base=TWIN):
@@ -193,30 +196,48 @@ imep = "12 bar"
 def inline_toml(name, phases, pitch_mm, cycle=2, banks=(0,)):
     """An engine with reciprocating masses only (1 kg, r = 50 mm, 3000 rpm), one throw per
     phase, ``pitch_mm`` apart: m·r·ω² = 1·0.05·(100π)² N."""
-    text = (f'name = "{name}"\ncycle = {cycle}\nspeed = "3000 rpm"\ncrank_radius = "50 mm"\n'
-            'rod_length = "200 mm"\n\n[masses]\nreciprocating = "1 kg"\n')
+    text = (
+        f'name = "{name}"\ncycle = {cycle}\nspeed = "3000 rpm"\ncrank_radius = "50 mm"\n'
+        'rod_length = "200 mm"\n\n[masses]\nreciprocating = "1 kg"\n'
+    )
     text += "".join(f"\n[[banks]]\nangle = {b}\n" for b in banks)
-    return text + "".join(f'\n[[throws]]\nphase = {p}\nz = "{j * pitch_mm} mm"\n'
-                          for j, p in enumerate(phases))
+    return text + "".join(
+        f'\n[[throws]]\nphase = {p}\nz = "{j * pitch_mm} mm"\n' for j, p in enumerate(phases)
+    )
 
 
-MRW2 = 1.0 * 0.05 * (3000 * math.pi / 30) ** 2      # inline_toml's m·r·ω², N
-PITCH = 0.1                                          # d, m
+MRW2 = 1.0 * 0.05 * (3000 * math.pi / 30) ** 2  # inline_toml's m·r·ω², N
+PITCH = 0.1  # d, m
 
 
 def inline_template_text(n, pitch_mm=500):
     """An in-line two-stroke template of ``n`` throws, as a user would write it."""
     throws = "".join(f'[[throws]]\nz = "{j * pitch_mm} mm"\n' for j in range(n))
-    return (f'name = "In-line {n}"\ncycle = 2\nspeed = "300 rpm"\ncrank_radius = "150 mm"\n'
-            f'rod_length = "600 mm"\n[masses]\nreciprocating = "120 kg"\n[[banks]]\nangle = 0\n'
-            + throws)
+    return (
+        f'name = "In-line {n}"\ncycle = 2\nspeed = "300 rpm"\ncrank_radius = "150 mm"\n'
+        f'rod_length = "600 mm"\n[masses]\nreciprocating = "120 kg"\n[[banks]]\nangle = 0\n'
+        + throws
+    )
 
 
 # --- engines built in code ---------------------------------------------------------------------
 
 
-def make_engine(banks_deg, throws, *, r=0.08, l=0.28, m=1.0, rpm=1000.0, cycle=4, frame="fixed",
-                rotating=0.0, pin_offset=0.0, links=None, firing_order=None):
+def make_engine(
+    banks_deg,
+    throws,
+    *,
+    r=0.08,
+    rod=0.28,
+    m=1.0,
+    rpm=1000.0,
+    cycle=4,
+    frame="fixed",
+    rotating=0.0,
+    pin_offset=0.0,
+    links=None,
+    firing_order=None,
+):
     """A grid engine: one cylinder per (bank, throw), numbered bank by bank.
 
     ``throws`` is a list of (phase in degrees, z in metres); ``links`` is None or
@@ -231,14 +252,28 @@ def make_engine(banks_deg, throws, *, r=0.08, l=0.28, m=1.0, rpm=1000.0, cycle=4
             extra = {}
             if links is not None and b != links[0]:
                 master_bank, length, radius, knuckle = links
-                extra = dict(master=master_bank * len(throws) + t + 1, link_length_m=length,
-                             knuckle_radius_m=radius, knuckle_angle_rad=banks[b] - banks[master_bank],
-                             knuckle_kg=knuckle)
+                extra = dict(
+                    master=master_bank * len(throws) + t + 1,
+                    link_length_m=length,
+                    knuckle_radius_m=radius,
+                    knuckle_angle_rad=banks[b] - banks[master_bank],
+                    knuckle_kg=knuckle,
+                )
             cylinders.append(Cylinder(number, b + 1, t + 1, throw.z_m, m, **extra))
-    return Engine(name="test engine", cycle=cycle, speed_rad_s=rpm * math.pi / 30.0, crank_radius_m=r,
-                  rod_length_m=l, bank_angles_rad=banks, throws=throw_objs, cylinders=tuple(cylinders),
-                  rotating_kg=rotating, pin_offset_m=pin_offset, frame=frame,
-                  firing_order=firing_order)
+    return Engine(
+        name="test engine",
+        cycle=cycle,
+        speed_rad_s=rpm * math.pi / 30.0,
+        crank_radius_m=r,
+        rod_length_m=rod,
+        bank_angles_rad=banks,
+        throws=throw_objs,
+        cylinders=tuple(cylinders),
+        rotating_kg=rotating,
+        pin_offset_m=pin_offset,
+        frame=frame,
+        firing_order=firing_order,
+    )
 
 
 #: the opposed single's crank radius and rod, m, one piston's reciprocating mass, kg, and speed
@@ -251,7 +286,8 @@ def opposed_single(lead_deg=0.0, direction=1, rotating="0 kg", gas=""):
     180° − lead in its own sense (its piston `lead` later than the mirror image)."""
     import balance_cli as balance
 
-    return balance.loads(textwrap.dedent(f"""
+    return balance.loads(
+        textwrap.dedent(f"""
         name = "opposed single"
         cycle = 2
         speed = "{OPPOSED_RPM} rpm"
@@ -277,7 +313,8 @@ def opposed_single(lead_deg=0.0, direction=1, rotating="0 kg", gas=""):
         throw = 1
         opposed_throw = 2
         {gas}
-        """))
+        """)
+    )
 
 
 # --- second methods, apart from the library ----------------------------------------------------
@@ -290,8 +327,9 @@ def exact_b(q, k):
     rounding for periodic integrands)."""
     theta = np.linspace(0.0, 2 * np.pi, 4096, endpoint=False)
     root = np.sqrt(1 - q**2 * np.sin(theta) ** 2)
-    accel = (np.cos(theta) + q * np.cos(2 * theta) / root
-             + q**3 * np.sin(2 * theta) ** 2 / (4 * root**3))
+    accel = (
+        np.cos(theta) + q * np.cos(2 * theta) / root + q**3 * np.sin(2 * theta) ** 2 / (4 * root**3)
+    )
     return 2 * np.mean(accel * np.cos(k * theta))
 
 
@@ -347,8 +385,10 @@ def twin_file(tmp_path, text=TWIN, name="e.toml"):
 
 def strict_json(text):
     """JSON as the standard reads it: Infinity and NaN are not numbers there."""
+
     def refuse(constant):
         raise AssertionError(f"{constant} is not JSON")
+
     return json.loads(text, parse_constant=refuse)
 
 
@@ -373,6 +413,6 @@ def check_refused(result, code, words, before, folder):
     assert len(errors) == 1, result.stderr
     assert words in errors[0], errors[0]
     if code == 1:
-        assert result.stderr.count("\n") == 1, result.stderr    # exactly one line
+        assert result.stderr.count("\n") == 1, result.stderr  # exactly one line
     assert result.stdout == "", result.stdout
     assert snapshot(folder) == before

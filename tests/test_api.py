@@ -19,7 +19,7 @@ from tests.support import CONFIGS, PART3, ROOT, V12, make_engine
 
 def readme_python_blocks():
     text = (ROOT / "README.md").read_text(encoding="utf-8")
-    section = text[text.index("## Python API"):text.index("## Conventions")]
+    section = text[text.index("## Python API") : text.index("## Conventions")]
     return re.findall(r"```python\n(.*?)```", section, flags=re.S)
 
 
@@ -51,8 +51,9 @@ def test_a_snippet_with_text_defined_runs_and_raises_for_a_missing_plane():
     assert balance.loads(path.read_text(encoding="utf-8"), name="my.toml").config_path == "my.toml"
     result = balance.analyse(engine, samples=256, max_order=8)
     assert result.order(2).order == 2
-    with pytest.raises(balance.CounterweightError, match="planes names throw 6, but the engine "
-                                                         "has throws 1 to 4") as caught:
+    with pytest.raises(
+        balance.CounterweightError, match="planes names throw 6, but the engine has throws 1 to 4"
+    ) as caught:
         balance.counterweights(engine, planes=[1, 6], radius_m=0.06, balance_factor=None)
     assert caught.value.parameter == "planes"
     assert balance.plot.locus([result]).axes
@@ -73,13 +74,20 @@ def test_to_dict_with_a_reference_is_the_entry_of_a_comparison():
     assert [r.to_dict(comparison.reference) for r in results] == document["engines"]
 
 
-@pytest.mark.parametrize("args, kwargs", [
-    ([V12, "--planes", "1,6", "--radius", "60 mm", "--shafts", "6", "--test-masses"],
-     dict(planes=[1, 6], radius_m=0.06, shaft_orders=(6,), test_masses=True)),
-    ([CONFIGS / "bramo-323.toml", "--antivibrateur"], dict(antivibrateur_radius_m=0.040)),
-    ([CONFIGS / "inline-4-car.toml", "--balance-factor", "0.5", "--planes", "0 mm,264 mm"],
-     dict(balance_factor=0.5, planes=[balance.Plane(0.0), balance.Plane(0.264)])),
-])
+@pytest.mark.parametrize(
+    "args, kwargs",
+    [
+        (
+            [V12, "--planes", "1,6", "--radius", "60 mm", "--shafts", "6", "--test-masses"],
+            dict(planes=[1, 6], radius_m=0.06, shaft_orders=(6,), test_masses=True),
+        ),
+        ([CONFIGS / "bramo-323.toml", "--antivibrateur"], dict(antivibrateur_radius_m=0.040)),
+        (
+            [CONFIGS / "inline-4-car.toml", "--balance-factor", "0.5", "--planes", "0 mm,264 mm"],
+            dict(balance_factor=0.5, planes=[balance.Plane(0.0), balance.Plane(0.264)]),
+        ),
+    ],
+)
 def test_balance_to_dict_is_the_counterweight_entry(args, kwargs):
     (entry,) = cli_json("counterweight", *args, "--format", "json")["engines"]
     engine = balance.load(args[0])
@@ -143,8 +151,11 @@ def test_public_names_stay_what_they_are_once_every_module_is_loaded():
     replaced by the module as soon as the module is imported."""
     for module in pkgutil.walk_packages(balance.__path__, "balance_cli."):
         importlib.import_module(module.name)
-    modules = [name for name in balance.__all__
-               if name != "plot" and inspect.ismodule(getattr(balance, name))]
+    modules = [
+        name
+        for name in balance.__all__
+        if name != "plot" and inspect.ismodule(getattr(balance, name))
+    ]
     assert modules == []
     assert callable(balance.family) and callable(balance.sweep) and callable(balance.search)
 
@@ -162,12 +173,18 @@ def test_the_package_is_typed():
 
 
 def test_compare_does_not_import_matplotlib():
-    code = ("import sys; from balance_cli.cli import main\n"
-            "try:\n    main(['compare', sys.argv[1], '--format', 'json', '-o', sys.argv[2]])\n"
-            "except SystemExit:\n    pass\n"
-            "assert 'matplotlib' not in sys.modules, 'matplotlib imported'\n")
+    code = (
+        "import sys; from balance_cli.cli import main\n"
+        "try:\n    main(['compare', sys.argv[1], '--format', 'json', '-o', sys.argv[2]])\n"
+        "except SystemExit:\n    pass\n"
+        "assert 'matplotlib' not in sys.modules, 'matplotlib imported'\n"
+    )
     import tempfile
+
     with tempfile.TemporaryDirectory() as folder:
-        done = subprocess.run([sys.executable, "-c", code, str(PART3), f"{folder}/o.json"],
-                              capture_output=True, text=True)
+        done = subprocess.run(
+            [sys.executable, "-c", code, str(PART3), f"{folder}/o.json"],
+            capture_output=True,
+            text=True,
+        )
     assert done.returncode == 0, done.stderr

@@ -58,9 +58,11 @@ def test_every_exception_lives_in_errors_under_balance_error():
         tree = ast.parse(path.read_text(encoding="utf-8"))
         for node in ast.walk(tree):
             if isinstance(node, ast.ClassDef) and any(
-                    getattr(b, "id", getattr(b, "attr", "")).endswith(("Error", "Exception",
-                                                                       "Warning", "Unavailable"))
-                    for b in node.bases):
+                getattr(b, "id", getattr(b, "attr", "")).endswith(
+                    ("Error", "Exception", "Warning", "Unavailable")
+                )
+                for b in node.bases
+            ):
                 defined.append((path.relative_to(ROOT).as_posix(), node.name))
     assert defined and {p for p, _ in defined} == {"balance_cli/errors.py"}, defined
     errors = importlib.import_module("balance_cli.errors")
@@ -80,31 +82,51 @@ def test_what_users_read_and_write_is_numbered_from_one():
     assert all(t.crankshaft == 1 for t in engine.throws)
     with pytest.raises(balance.ModelError, match="throw is a number from 1, got 0"):
         balance.Cylinder(1, 1, 0, 0.0, 1.0)
-    built = balance.loads((CONFIGS / "inline-4-car.toml").read_text(encoding="utf-8")
-                          + '\n[[counterweights]]\nthrow = 3\nmass_radius = "0.01 kg*m"\n'
-                          'angle = 180\n', "weights.toml")
+    built = balance.loads(
+        (CONFIGS / "inline-4-car.toml").read_text(encoding="utf-8")
+        + '\n[[counterweights]]\nthrow = 3\nmass_radius = "0.01 kg*m"\n'
+        "angle = 180\n",
+        "weights.toml",
+    )
     assert built.counterweights[0].throw == 3 and built.counterweights[0].throw_index == 2
     torques = balance.cylinder_torques(engine)
     assert [c.throw for c in torques] == [c.throw for c in engine.cylinders]
 
 
-DIMENSIONAL = ("radius", "bore", "inertia", "speed", "speeds", "pitch", "power", "period",
-               "step", "offsets", "eccentricity")
+DIMENSIONAL = (
+    "radius",
+    "bore",
+    "inertia",
+    "speed",
+    "speeds",
+    "pitch",
+    "power",
+    "period",
+    "step",
+    "offsets",
+    "eccentricity",
+)
 UNITS = ("_m", "_kg", "_rad", "_deg", "_rpm", "_rad_s", "_w", "_nm", "_kgm2", "_pa")
 
 
 def unitless(function):
     """The parameters of ``function`` that name a dimensional quantity without its unit."""
-    return [p for p in inspect.signature(function).parameters
-            if p.startswith(DIMENSIONAL) or p.endswith(DIMENSIONAL)
-            if not p.endswith(UNITS)]
+    return [
+        p
+        for p in inspect.signature(function).parameters
+        if p.startswith(DIMENSIONAL) or p.endswith(DIMENSIONAL)
+        if not p.endswith(UNITS)
+    ]
 
 
 def test_parameters_carry_their_units():
     """SI, or the engineer's unit in the name: every parameter of a public function that is a
     length, mass, speed, angle, inertia or power ends in its unit."""
-    found = {name: unitless(getattr(balance, name)) for name in balance.__all__
-             if inspect.isfunction(getattr(balance, name))}
+    found = {
+        name: unitless(getattr(balance, name))
+        for name in balance.__all__
+        if inspect.isfunction(getattr(balance, name))
+    }
     assert len(found) > 20
     assert not {name: bad for name, bad in found.items() if bad}
 
@@ -127,19 +149,25 @@ def test_results_are_objects_with_to_dict_not_tuples(tmp_path):
     assert [c["cylinder"] for c in document["cylinders"]] == [c.number for c in engine.cylinders]
     assert torques.cylinder(3).number == 3 and len(torques) == engine.n_cylinders
 
-    without = balance.power_related_unbalance(balance.analyse(balance.load(CONFIGS / "inline-4-car.toml")))
+    without = balance.power_related_unbalance(
+        balance.analyse(balance.load(CONFIGS / "inline-4-car.toml"))
+    )
     assert not without.available and "no power" in without.note
     assert without.to_dict() == {"note": without.note}
 
     path = tmp_path / "torque.csv"
-    path.write_text("angle_deg,torque_Nm\n" + "".join(f"{a},{math.sin(math.radians(a))}\n"
-                                                      for a in range(0, 720, 10)))
+    path.write_text(
+        "angle_deg,torque_Nm\n"
+        + "".join(f"{a},{math.sin(math.radians(a))}\n" for a in range(0, 720, 10))
+    )
     curve = balance.read_cycle_csv(path, "torque")
     assert curve.cycle_deg == 720.0 and curve.quantity == "torque"
     assert json.loads(json.dumps(curve.to_dict()))["values_Nm"][9] == pytest.approx(1.0)
 
     configuration = balance.read_configuration(CONFIGS / "inline-4-car.toml")
     assert configuration.engine() == balance.load(CONFIGS / "inline-4-car.toml")
-    assert json.loads(json.dumps(configuration.to_dict()))["data"]["name"] == \
-        configuration.engine().name
+    assert (
+        json.loads(json.dumps(configuration.to_dict()))["data"]["name"]
+        == configuration.engine().name
+    )
     assert balance.Plane(0.1, 2).to_dict() == {"z_m": 0.1, "throw": 2}

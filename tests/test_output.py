@@ -32,7 +32,7 @@ def test_a_symbolic_link_is_written_through(tmp_path):
     write_text(link, "new")
     assert link.is_symlink() and os.readlink(link) == str(target)
     assert target.read_text() == "new"
-    assert stat.S_IMODE(target.stat().st_mode) == 0o640      # the file's permissions are kept
+    assert stat.S_IMODE(target.stat().st_mode) == 0o640  # the file's permissions are kept
     assert sorted(p.name for p in tmp_path.iterdir()) == ["link.txt", "real.txt"]
 
 
@@ -68,7 +68,9 @@ def test_a_device_error_is_one_output_error():
 
 def test_a_250_character_file_name_can_be_written(tmp_path):
     name = "r" * 245 + ".json"
-    result = invoke("compare", PART3 / "1a-v8-90-flat.toml", "--format", "json", "-o", tmp_path / name)
+    result = invoke(
+        "compare", PART3 / "1a-v8-90-flat.toml", "--format", "json", "-o", tmp_path / name
+    )
     assert result.exit_code == 0, result.output
     assert json.loads((tmp_path / name).read_text())["engines"][0]["cylinders"] == 8
     assert [p.name for p in tmp_path.iterdir()] == [name]

@@ -18,10 +18,13 @@ def private_imports(path):
     """(module, name) of every ``from X import _name`` in ``path`` (dunder names are not
     private)."""
     tree = ast.parse(path.read_text(encoding="utf-8"))
-    return [(node.module or "." * node.level, alias.name) for node in ast.walk(tree)
-            if isinstance(node, ast.ImportFrom)
-            for alias in node.names
-            if alias.name.startswith("_") and not alias.name.startswith("__")]
+    return [
+        (node.module or "." * node.level, alias.name)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.ImportFrom)
+        for alias in node.names
+        if alias.name.startswith("_") and not alias.name.startswith("__")
+    ]
 
 
 def test_there_are_modules_to_check():
@@ -29,14 +32,20 @@ def test_there_are_modules_to_check():
 
 
 def test_every_module_is_at_most_500_lines():
-    long = [f"{p.relative_to(PACKAGE.parent)}: {n} lines" for p in modules()
-            if (n := p.read_text(encoding="utf-8").count("\n")) > MOST_LINES]
+    long = [
+        f"{p.relative_to(PACKAGE.parent)}: {n} lines"
+        for p in modules()
+        if (n := p.read_text(encoding="utf-8").count("\n")) > MOST_LINES
+    ]
     assert not long, "split these by idea:\n" + "\n".join(long)
 
 
 def test_no_module_imports_another_modules_private_name():
-    found = [f"{p.relative_to(PACKAGE.parent)}: {name} from {module}"
-             for p in modules() for module, name in private_imports(p)]
+    found = [
+        f"{p.relative_to(PACKAGE.parent)}: {name} from {module}"
+        for p in modules()
+        for module, name in private_imports(p)
+    ]
     assert not found, "make these public in their home module:\n" + "\n".join(found)
 
 

@@ -23,11 +23,11 @@ from tests.support import invoke
     "text, dimension, si",
     [
         ("82.5 mm", "length", 0.0825),
-        ("5.5 in", "length", 0.1397),          # 5.5 × 25.4 mm, exact by definition of the inch
+        ("5.5 in", "length", 0.1397),  # 5.5 × 25.4 mm, exact by definition of the inch
         ("-1.5 m", "length", -1.5),
         ("1770.4 g", "mass", 1.7704),
         ("500 kg", "mass", 500.0),
-        ("1 lb", "mass", 0.45359237),          # exact by definition of the pound
+        ("1 lb", "mass", 0.45359237),  # exact by definition of the pound
         ("1650 rpm", "angular speed", 1650 * 2 * math.pi / 60),
         ("60 rev/min", "angular speed", 2 * math.pi),
         ("1e3 mm", "length", 1.0),
@@ -53,20 +53,28 @@ def test_bad_quantities_say_what_to_write(value, dimension, words):
         parse_quantity(value, dimension)
 
 
-@pytest.mark.parametrize("units, force, moment", [
-    ("N", 1.0, 1.0), ("kN", 1e3, 1e3), ("MN", 1e6, 1e6),
-    ("kgf", 9.80665, 9.80665),
-    # 1 lbf = 0.45359237 kg × 9.80665 m/s² = 4.4482216152605 N; 1 lbf·ft = that × 0.3048 m
-    ("lbf", 4.4482216152605, 1.3558179483314004),
-])
+@pytest.mark.parametrize(
+    "units, force, moment",
+    [
+        ("N", 1.0, 1.0),
+        ("kN", 1e3, 1e3),
+        ("MN", 1e6, 1e6),
+        ("kgf", 9.80665, 9.80665),
+        # 1 lbf = 0.45359237 kg × 9.80665 m/s² = 4.4482216152605 N; 1 lbf·ft = that × 0.3048 m
+        ("lbf", 4.4482216152605, 1.3558179483314004),
+    ],
+)
 def test_unit_systems_against_hand_conversion(units, force, moment):
     scale = Scale.of(False, units.upper() if units != "MN" else "Mn")
     assert scale.units == units
-    assert_allclose(scale.force(force * 123.0, 1.0), 123.0 if units != "N" else 123.0 * force,
-                    rtol=1e-15)
+    assert_allclose(
+        scale.force(force * 123.0, 1.0), 123.0 if units != "N" else 123.0 * force, rtol=1e-15
+    )
     assert_allclose(scale.moment(moment * 7.0), 7.0, rtol=1e-15)
-    assert UNIT_SYSTEMS[units][1] == {"N": "N·m", "kN": "kN·m", "MN": "MN·m", "kgf": "kgf·m",
-                                      "lbf": "lbf·ft"}[units]
+    assert (
+        UNIT_SYSTEMS[units][1]
+        == {"N": "N·m", "kN": "kN·m", "MN": "MN·m", "kgf": "kgf·m", "lbf": "lbf·ft"}[units]
+    )
 
 
 def test_significant_figures():
@@ -83,9 +91,13 @@ def test_unit_names_in_any_case_unless_ambiguous():
     assert parse_quantity("2 KG", "mass") == 2.0
     # 1 psi = 6894.757293168 Pa; P here is no prefix
     assert parse_quantity("1 PSI", "pressure") == pytest.approx(6894.757293168, rel=1e-15)
-    for text, dimension, meant in (("5 Mm", "length", "'mm'"), ("5 mpa", "pressure", "'MPa'"),
-                                   ("0.05 M", "length", "'m'"), ("5 MBAR", "pressure", "'mbar'"),
-                                   ("1 kg*Mm^2", "moment of inertia", "'kg*mm^2'")):
+    for text, dimension, meant in (
+        ("5 Mm", "length", "'mm'"),
+        ("5 mpa", "pressure", "'MPa'"),
+        ("0.05 M", "length", "'m'"),
+        ("5 MBAR", "pressure", "'mbar'"),
+        ("1 kg*Mm^2", "moment of inertia", "'kg*mm^2'"),
+    ):
         with pytest.raises(balance.UnitError) as caught:
             parse_quantity(text, dimension)
         assert "milli" in str(caught.value) and "mega" in str(caught.value)

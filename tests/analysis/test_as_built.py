@@ -126,7 +126,8 @@ V8_WEIGHTS = textwrap.dedent(f"""\
 def lanchester(mass_radius, angle_deg=180.0, extra=""):
     """[[shafts]]: a pair at ±2× crank speed, each with one mass of ``mass_radius`` kg·m at
     ``angle_deg`` in its own sense of turning, at z̄ (the default)."""
-    return "".join(textwrap.dedent(f"""\
+    return "".join(
+        textwrap.dedent(f"""\
 
         [[shafts]]
         ratio = {ratio}
@@ -134,7 +135,9 @@ def lanchester(mass_radius, angle_deg=180.0, extra=""):
         [[shafts.masses]]
         mass_radius = "{float(mass_radius)!r} kg*m"
         angle = {float(angle_deg)!r}
-    """) for ratio in (2, -2))
+    """)
+        for ratio in (2, -2)
+    )
 
 
 ONE_WEIGHT = textwrap.dedent("""\
@@ -159,31 +162,57 @@ BAD = [
     # (text, key named, words of the fix)
     (ONE_WEIGHT.replace("throw = 1\n", ""), "counterweights[1].throw", "missing"),
     (ONE_WEIGHT.replace("angle = 180\n", ""), "counterweights[1].angle", "missing"),
-    (ONE_WEIGHT.replace('mass = "1 kg"\n', ""), "counterweights[1].mass",
-     "missing; give mass with radius"),
-    (ONE_WEIGHT.replace('radius = "40 mm"\n', ""), "counterweights[1].radius",
-     "missing; a mass needs its radius"),
-    (ONE_WEIGHT + 'mass_radius = "0.04 kg*m"\n', "counterweights[1].mass",
-     "give mass with radius, or mass_radius, not both"),
-    (ONE_WEIGHT.replace("throw = 1", "throw = 5"), "counterweights[1].throw",
-     "must be between 1 and 4"),
-    (ONE_WEIGHT.replace("throw = 1", "throw = 0"), "counterweights[1].throw",
-     "must be between 1 and 4"),
-    (ONE_WEIGHT.replace('"1 kg"', '"1 kg*m"'), "counterweights[1].mass",
-     "is an unbalance, but a mass is needed"),
+    (
+        ONE_WEIGHT.replace('mass = "1 kg"\n', ""),
+        "counterweights[1].mass",
+        "missing; give mass with radius",
+    ),
+    (
+        ONE_WEIGHT.replace('radius = "40 mm"\n', ""),
+        "counterweights[1].radius",
+        "missing; a mass needs its radius",
+    ),
+    (
+        ONE_WEIGHT + 'mass_radius = "0.04 kg*m"\n',
+        "counterweights[1].mass",
+        "give mass with radius, or mass_radius, not both",
+    ),
+    (
+        ONE_WEIGHT.replace("throw = 1", "throw = 5"),
+        "counterweights[1].throw",
+        "must be between 1 and 4",
+    ),
+    (
+        ONE_WEIGHT.replace("throw = 1", "throw = 0"),
+        "counterweights[1].throw",
+        "must be between 1 and 4",
+    ),
+    (
+        ONE_WEIGHT.replace('"1 kg"', '"1 kg*m"'),
+        "counterweights[1].mass",
+        "is an unbalance, but a mass is needed",
+    ),
     (ONE_WEIGHT + 'colour = "red"\n', "counterweights[1].colour", "unknown key"),
     (ONE_SHAFT.replace("ratio = 2", "ratio = 0"), "shafts[1].ratio", "must not be 0"),
     (ONE_SHAFT.replace("ratio = 2", "ratio = 1.5"), "shafts[1].ratio", "expected a whole number"),
     (ONE_SHAFT.replace("ratio = 2\n", ""), "shafts[1].ratio", "missing"),
     (ONE_SHAFT.split("[[shafts.masses]]")[0], "shafts[1].masses", "missing"),
-    (ONE_SHAFT.replace('eccentricity = "10 mm"\n', 'mass_radius = "0.01 kg*m"\n'),
-     "shafts[1].masses[1].mass", "give mass with eccentricity, or mass_radius, not both"),
-    (ONE_SHAFT.replace('eccentricity = "10 mm"', 'eccentricity = "10 kg"'),
-     "shafts[1].masses[1].eccentricity", "is a mass, but a length is needed"),
-    (ONE_SHAFT.replace('ratio = 2', 'ratio = 2\nlateral = "1 bananas"'), "shafts[1].lateral",
-     "unknown unit"),
-    ('frame = "rotary"\n' + ONE_WEIGHT, "counterweights",
-     "cannot be given for a rotary engine"),
+    (
+        ONE_SHAFT.replace('eccentricity = "10 mm"\n', 'mass_radius = "0.01 kg*m"\n'),
+        "shafts[1].masses[1].mass",
+        "give mass with eccentricity, or mass_radius, not both",
+    ),
+    (
+        ONE_SHAFT.replace('eccentricity = "10 mm"', 'eccentricity = "10 kg"'),
+        "shafts[1].masses[1].eccentricity",
+        "is a mass, but a length is needed",
+    ),
+    (
+        ONE_SHAFT.replace("ratio = 2", 'ratio = 2\nlateral = "1 bananas"'),
+        "shafts[1].lateral",
+        "unknown unit",
+    ),
+    ('frame = "rotary"\n' + ONE_WEIGHT, "counterweights", "cannot be given for a rotary engine"),
     ('frame = "rotary"\n' + ONE_SHAFT, "shafts", "cannot be given for a rotary engine"),
 ]
 
@@ -203,12 +232,15 @@ def written_matches_report(tmp_path, body, *options):
 def assert_same_orders(records, result, unit):
     """Every order of the loaded engine equals the command's record of it."""
     engine = result.engine
-    for record, order in zip(records, result.shaking.orders):
+    for record, order in zip(records, result.shaking.orders, strict=True):
         got = order.to_dict(engine.noise_floor_n, engine.noise_floor_nm, engine.vertical_axis_rad)
         for part, key in (("force", "N"), ("moment", "Nm")):
             for which in ("forward", "backward"):
-                assert_allclose(got[part][f"{which}_{key}"], record[part][f"{which}_{key}"],
-                                atol=1e-9 * unit * (1 if part == "force" else D))
+                assert_allclose(
+                    got[part][f"{which}_{key}"],
+                    record[part][f"{which}_{key}"],
+                    atol=1e-9 * unit * (1 if part == "force" else D),
+                )
 
 
 def test_cross_plane_v8_end_web_counterweights_cancel_the_forward_primary():
@@ -227,10 +259,12 @@ def test_cross_plane_v8_end_web_counterweights_cancel_the_forward_primary():
     assert_allclose(after.moment_backward, before.moment_backward, atol=SAME * unit * D)
     for k in range(2, 9):
         assert_allclose(built.order(k).force_forward, bare.order(k).force_forward, atol=SAME * unit)
-        assert_allclose(built.order(k).force_backward, bare.order(k).force_backward,
-                        atol=SAME * unit)
-        assert_allclose(built.order(k).moment_forward, bare.order(k).moment_forward,
-                        atol=SAME * unit * D)
+        assert_allclose(
+            built.order(k).force_backward, bare.order(k).force_backward, atol=SAME * unit
+        )
+        assert_allclose(
+            built.order(k).moment_forward, bare.order(k).moment_forward, atol=SAME * unit * D
+        )
 
 
 def test_counterweight_command_proposes_nothing_more_for_the_balanced_v8(tmp_path):
@@ -264,7 +298,7 @@ def test_a_counterweight_loads_the_main_bearings_not_the_pins():
     plain, weighted = balance.torque(bare), balance.torque(built)
     added = weighted.main_bearings.order(1)[0] - plain.main_bearings.order(1)[0]
     assert_allclose(added, mr * W**2 * np.exp(1j * phi), rtol=1e-9)
-    for a, b in zip(plain.pins, weighted.pins):
+    for a, b in zip(plain.pins, weighted.pins, strict=True):
         assert_allclose(b.force_n, a.force_n, atol=SAME * M * R * W**2 * 8)
     # a mass turning at constant radius and speed: no inertia or tilting torque
     assert_allclose(weighted.frame.curve, plain.frame.curve, atol=1e-9 * M * R**2 * W**2 * 8)
@@ -277,7 +311,8 @@ def test_mass_rows_follow_the_pins_with_their_owner_codes():
     engine = balance.loads(V8 + V8_WEIGHTS).replace(
         crank_kg=0.1,
         counterweights=(CounterweightMass(2, 0.02, math.radians(30.0), radius_m=0.05),),
-        balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(0.01, 0.0, eccentricity_m=0.02),)),))
+        balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(0.01, 0.0, eccentricity_m=0.02),)),),
+    )
     masses = linkage_state(engine, engine_angles(64)).masses
     owners = list(masses.cylinder)
     assert owners[-2:] == [COUNTERWEIGHT, BALANCER]
@@ -306,16 +341,20 @@ def test_lanchester_pair_cancels_the_inline_four_secondary_force_exactly():
     second = 4 * M * R * W**2 * b2
     before, after = balance.analyse(bare).order(2), balance.analyse(built).order(2)
     assert_allclose(before.force_forward + before.force_backward, second, rtol=1e-9)
-    assert_allclose([abs(after.force_forward), abs(after.force_backward)], [0, 0],
-                    atol=CANCEL * second)
-    assert_allclose([abs(after.moment_forward), abs(after.moment_backward)], [0, 0],
-                    atol=CANCEL * second * D)
+    assert_allclose(
+        [abs(after.force_forward), abs(after.force_backward)], [0, 0], atol=CANCEL * second
+    )
+    assert_allclose(
+        [abs(after.moment_forward), abs(after.moment_backward)], [0, 0], atol=CANCEL * second * D
+    )
     for k in (1, 3, 4, 6):
-        assert_allclose(balance.analyse(built).order(k).force_backward,
-                        balance.analyse(bare).order(k).force_backward, atol=SAME * second)
+        assert_allclose(
+            balance.analyse(built).order(k).force_backward,
+            balance.analyse(bare).order(k).force_backward,
+            atol=SAME * second,
+        )
     plain, shafted = balance.torque(bare), balance.torque(built)
-    assert_allclose(shafted.main_bearings.force_n, plain.main_bearings.force_n,
-                    atol=SAME * second)
+    assert_allclose(shafted.main_bearings.force_n, plain.main_bearings.force_n, atol=SAME * second)
     # centred shafts: no rolling moment, so the frame torque is the engine's own
     assert_allclose(shafted.frame.curve, plain.frame.curve, atol=1e-9 * second * R)
 
@@ -358,8 +397,9 @@ def test_offset_shaft_rolling_moment_by_hand(tmp_path):
     plain, shafted = balance.torque(bare), balance.torque(built)
     frame = np.subtract(shafted.frame.order(2), plain.frame.order(2))
     assert_allclose(frame, [c, s], atol=1e-9 * scale)
-    assert_allclose(np.subtract(shafted.inertia.order(2), plain.inertia.order(2)), [0, 0],
-                    atol=1e-9 * scale)
+    assert_allclose(
+        np.subtract(shafted.inertia.order(2), plain.inertia.order(2)), [0, 0], atol=1e-9 * scale
+    )
     phasor = rolling_moment_phasor(1j * a, me * 4 * W**2 * np.exp(1j * alpha), 2)
     assert_allclose([phasor.real, -phasor.imag], [c, s], atol=1e-12 * scale)
     moment = built_shafts(built)[0].rolling_moment
@@ -379,7 +419,7 @@ def test_bad_as_built_tables_get_one_clear_message(tmp_path, text, key, words):
     """Each mistake names the file and the key, says what to do, exits 1 without a traceback
     and writes no output file."""
     if text.startswith("frame"):
-        body = V8.replace('cycle = 4', text.split("\n")[0] + "\ncycle = 4") + text.split("\n", 1)[1]
+        body = V8.replace("cycle = 4", text.split("\n")[0] + "\ncycle = 4") + text.split("\n", 1)[1]
     else:
         body = V8 + text
     path = write(tmp_path, body)
@@ -395,7 +435,9 @@ def test_bad_as_built_tables_get_one_clear_message(tmp_path, text, key, words):
 def test_library_model_errors_name_the_field():
     """Built in code, the model checks as the reader does and names its own fields."""
     engine = balance.loads(V8)
-    with pytest.raises(balance.ModelError, match=r"counterweight 1 is on throw 9, but the engine has throws 1 to 4") as caught:
+    with pytest.raises(
+        balance.ModelError, match=r"counterweight 1 is on throw 9, but the engine has throws 1 to 4"
+    ) as caught:
         engine.replace(counterweights=(CounterweightMass(9, 0.01, 0.0),))
     assert caught.value.parameter == "counterweights"
     with pytest.raises(balance.ModelError) as caught:
@@ -432,12 +474,20 @@ def test_write_round_trip_of_the_ideal_v8_counterweights(tmp_path):
     assert_allclose([w.mass_radius_kgm for w in weights], [V8_MR, V8_MR], rtol=1e-9)
     assert_allclose([w.radius_m for w in weights], [0.05, 0.05])
     # measured from their own pins: 198.43° from throw 1's, −161.57° from throw 4's
-    assert_allclose([math.remainder(math.degrees(w.angle_rad) - a, 360) for w, a in
-                     zip(weights, (180 + ALPHA_DEG, ALPHA_DEG - 180))], [0, 0], atol=1e-9)
+    assert_allclose(
+        [
+            math.remainder(math.degrees(w.angle_rad) - a, 360)
+            for w, a in zip(weights, (180 + ALPHA_DEG, ALPHA_DEG - 180), strict=True)
+        ],
+        [0, 0],
+        atol=1e-9,
+    )
     # run again on the written file: nothing more to add
     again = invoke("counterweight", tmp_path / "balanced.toml", "--format", "json")
-    assert [w["mass_kg"] for w in json.loads(again.output)["engines"][0]["counterweights"]] \
-        == [0.0, 0.0]
+    assert [w["mass_kg"] for w in json.loads(again.output)["engines"][0]["counterweights"]] == [
+        0.0,
+        0.0,
+    ]
 
 
 def test_write_round_trip_adds_to_what_is_built(tmp_path):
@@ -446,8 +496,15 @@ def test_write_round_trip_adds_to_what_is_built(tmp_path):
     reported (the residual after the counterweights, then after the shafts)."""
     body = I4 + ONE_WEIGHT.replace('"1 kg"', '"0.2 kg"')
     entry, result, loaded = written_matches_report(
-        tmp_path, body, "--planes", "20 mm,280 mm", "--shafts", "2,4", "--shaft-offset",
-        "2:100 mm,-50 mm")
+        tmp_path,
+        body,
+        "--planes",
+        "20 mm,280 mm",
+        "--shafts",
+        "2,4",
+        "--shaft-offset",
+        "2:100 mm,-50 mm",
+    )
     unit = M * R * W**2
     assert_same_orders(entry["after_shafts"]["orders"], result, unit)
     assert len(loaded.counterweights) == 3
@@ -461,9 +518,12 @@ def test_write_round_trip_adds_to_what_is_built(tmp_path):
     # the written shaft's rolling moment is the one reported for the proposal
     reported = next(s for s in entry["balancer_shafts"] if s["speed_ratio"] == 2)
     rebuilt = next(s for s in built_shafts(loaded) if s.speed_ratio == 2)
-    assert_allclose([rebuilt.rolling_moment.cos_nm, rebuilt.rolling_moment.sin_nm],
-                    [reported["rolling_moment"]["cos_Nm"], reported["rolling_moment"]["sin_Nm"]],
-                    rtol=1e-9, atol=1e-9 * unit * 0.1)
+    assert_allclose(
+        [rebuilt.rolling_moment.cos_nm, rebuilt.rolling_moment.sin_nm],
+        [reported["rolling_moment"]["cos_Nm"], reported["rolling_moment"]["sin_Nm"]],
+        rtol=1e-9,
+        atol=1e-9 * unit * 0.1,
+    )
 
 
 def test_balance_factor_counts_the_built_counterweights(tmp_path):
@@ -472,17 +532,21 @@ def test_balance_factor_counts_the_built_counterweights(tmp_path):
     body = I4 + ONE_WEIGHT
     entry, result, loaded = written_matches_report(tmp_path, body, "--balance-factor", "0.5")
     assert_same_orders(entry["residual"]["orders"], result, M * R * W**2)
-    again = invoke("counterweight", tmp_path / "balanced.toml", "--balance-factor", "0.5",
-                "--format", "json")
+    again = invoke(
+        "counterweight", tmp_path / "balanced.toml", "--balance-factor", "0.5", "--format", "json"
+    )
     assert again.exit_code == 0, again.output
     weights = json.loads(again.output)["engines"][0]["counterweights"]
     assert_allclose([w["mass_kg"] for w in weights], [0, 0], atol=1e-12)
 
 
-@pytest.mark.parametrize("extra, words", [
-    (("--antivibrateur",), "antivibrateur"),
-    (("--output", "SAME"), "needs a file of its own"),
-])
+@pytest.mark.parametrize(
+    "extra, words",
+    [
+        (("--antivibrateur",), "antivibrateur"),
+        (("--output", "SAME"), "needs a file of its own"),
+    ],
+)
 def test_write_refusals_leave_no_file(tmp_path, extra, words):
     path = write(tmp_path, V8)
     target = tmp_path / "out.toml"
@@ -518,8 +582,9 @@ def test_show_lists_what_is_built(tmp_path):
 def test_search_refuses_a_template_with_counterweights(tmp_path):
     """A counterweight is sized for one crank; the search chooses the crank: refused, naming
     the tables to remove."""
-    template = "\n".join(line for line in I4.splitlines()
-                         if not line.startswith(("phase", "firing_order")))
+    template = "\n".join(
+        line for line in I4.splitlines() if not line.startswith(("phase", "firing_order"))
+    )
     path = write(tmp_path, template + "\n" + ONE_WEIGHT)
     result = invoke("search", path)
     assert result.exit_code == 1
@@ -534,15 +599,33 @@ def test_sweep_turns_a_built_counterweight(tmp_path):
     first-order force is 2·|c₁| = 2·(m + ROT)·r·ω²·√10/3."""
     path = write(tmp_path, V8 + V8_WEIGHTS)
     right = ALPHA_DEG - 180
-    result = invoke("sweep", path, "--vary", "counterweights[2].angle", "--values",
-                 f"{right!r},{right + 180!r}", "--quantity", "F1,M1", "--format", "json")
+    result = invoke(
+        "sweep",
+        path,
+        "--vary",
+        "counterweights[2].angle",
+        "--values",
+        f"{right!r},{right + 180!r}",
+        "--quantity",
+        "F1,M1",
+        "--format",
+        "json",
+    )
     assert result.exit_code == 0, result.output
     points = json.loads(result.output)["points"]
     unit = (M + ROT) * R * W**2
-    assert_allclose([p["F1_N"] for p in points], [0.0, 2 * unit * math.sqrt(10) / 3],
-                    rtol=1e-9, atol=CANCEL * unit)
-    assert_allclose([p["M1_Nm"] for p in points], [0.0, math.sqrt(10) * unit * D],
-                    rtol=1e-9, atol=CANCEL * unit * D)
+    assert_allclose(
+        [p["F1_N"] for p in points],
+        [0.0, 2 * unit * math.sqrt(10) / 3],
+        rtol=1e-9,
+        atol=CANCEL * unit,
+    )
+    assert_allclose(
+        [p["M1_Nm"] for p in points],
+        [0.0, math.sqrt(10) * unit * D],
+        rtol=1e-9,
+        atol=CANCEL * unit * D,
+    )
 
 
 def test_backward_shaft_above_the_crank_rolls_the_engine_by_hand():
@@ -551,13 +634,17 @@ def test_backward_shaft_above_the_crank_rolls_the_engine_by_hand():
     F = m·e·(2ω)²·e^{−i(2θ+α)}. Rolling moment Im(x̄·F) = v·Im F = −4·v·m·e·ω²·sin(2θ + α)
     = c·cos 2θ + s·sin 2θ with c = −4·v·m·e·ω²·sin α, s = −4·v·m·e·ω²·cos α."""
     me, alpha, v = 0.003, math.radians(40.0), -0.08
-    engine = balance.loads(I4).replace(balancer_shafts=(BalancerShaftSpec(
-        -2, (BalancerMass(me, alpha),), vertical_m=v),))
+    engine = balance.loads(I4).replace(
+        balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(me, alpha),), vertical_m=v),)
+    )
     scale = 4 * abs(v) * me * W**2
-    expected = [-scale * math.copysign(1, v) * math.sin(alpha),
-                -scale * math.copysign(1, v) * math.cos(alpha)]
-    frame = np.subtract(balance.torque(engine).frame.order(2),
-                        balance.torque(balance.loads(I4)).frame.order(2))
+    expected = [
+        -scale * math.copysign(1, v) * math.sin(alpha),
+        -scale * math.copysign(1, v) * math.cos(alpha),
+    ]
+    frame = np.subtract(
+        balance.torque(engine).frame.order(2), balance.torque(balance.loads(I4)).frame.order(2)
+    )
     assert_allclose(frame, expected, atol=1e-9 * scale)
     moment = built_shafts(engine)[0].rolling_moment
     assert_allclose([moment.cos_nm, moment.sin_nm], expected, atol=1e-12 * scale)
@@ -572,11 +659,14 @@ def test_reduced_mass_counts_known_radii_only():
     mean = balance.torque(bare, bearings=False).reduced_mass.mean_kgm2
     known = bare.replace(
         counterweights=(CounterweightMass(1, 0.02, math.pi, radius_m=0.05),),
-        balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(0.01, 0.0, eccentricity_m=0.02),)),))
+        balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(0.01, 0.0, eccentricity_m=0.02),)),),
+    )
     added = balance.torque(known, bearings=False).reduced_mass.mean_kgm2 - mean
     assert_allclose(added, 0.02 * 0.05 + 0.01 * 0.02 * 4, rtol=1e-9)
-    unknown = bare.replace(counterweights=(CounterweightMass(1, 0.02, math.pi),),
-                           balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(0.01, 0.0),)),))
+    unknown = bare.replace(
+        counterweights=(CounterweightMass(1, 0.02, math.pi),),
+        balancer_shafts=(BalancerShaftSpec(-2, (BalancerMass(0.01, 0.0),)),),
+    )
     added = balance.torque(unknown, bearings=False).reduced_mass.mean_kgm2 - mean
     assert 0 <= added <= 1.001e-6 * (0.02 + 0.01 * 4)
 
@@ -607,17 +697,23 @@ def test_a_counterweight_turns_with_its_own_crankshaft(direction):
     built = bare.replace(counterweights=(CounterweightMass(2, me, alpha, radius_m=0.06),))
     expected = me * OMEGA**2 * np.exp(1j * (beta + alpha) * direction)
     before, after = balance.analyse(bare).order(1), balance.analyse(built).order(1)
-    added = (after.force_forward - before.force_forward if direction == 1
-             else after.force_backward - before.force_backward)
-    other = (after.force_backward - before.force_backward if direction == 1
-             else after.force_forward - before.force_forward)
+    added = (
+        after.force_forward - before.force_forward
+        if direction == 1
+        else after.force_backward - before.force_backward
+    )
+    other = (
+        after.force_backward - before.force_backward
+        if direction == 1
+        else after.force_forward - before.force_forward
+    )
     assert_allclose(added, expected, rtol=1e-9)
     assert abs(other) < 1e-9 * abs(expected)
     plain, weighted = balance.torque(bare), balance.torque(built)
     first = [np.asarray(t.crankshafts[0].main_bearings.force_n) for t in (plain, weighted)]
     second = [t.crankshafts[1].main_bearings for t in (plain, weighted)]
     assert_allclose(first[1], first[0], atol=1e-9 * abs(expected))
-    part = 0 if direction == 1 else 1    # PinForce.order gives (forward, backward)
+    part = 0 if direction == 1 else 1  # PinForce.order gives (forward, backward)
     change = second[1].order(1)[part] - second[0].order(1)[part]
     assert_allclose(change, expected, rtol=1e-9)
 
@@ -635,7 +731,9 @@ def test_the_shipped_lanchester_engine_cancels_its_secondary_force_and_frame_tor
     balanced = balance.load(CONFIGS / "inline-4-car-lanchester.toml")
     omega = car.speed_rad_s
     p = 4 * me * omega**2
-    change = np.subtract(balance.torque(balanced).frame.order(2), balance.torque(car).frame.order(2))
+    change = np.subtract(
+        balance.torque(balanced).frame.order(2), balance.torque(car).frame.order(2)
+    )
     assert_allclose(change, [0.0, -p * (h_plus - h_minus)], atol=1e-9 * p * 0.14)
     second = 4 * 0.55 * 0.043 * omega**2 * exact_b(43 / 143, 2)
     left = balance.analyse(balanced).order(2)
@@ -667,7 +765,8 @@ def test_a_built_shaft_at_crank_speed_counts_towards_the_balance_factor():
     counterweight does: a single cylinder (0.6 kg reciprocating, 0.3 kg rotating, r = 45 mm)
     whose built +1 shaft carries 13.5 kg·mm (0.3 kg at the crank radius) opposite the pin needs,
     for a balance factor 0.5 (0.3 + 0.5·0.6 = 0.6 kg at r), only 0.3 kg more."""
-    engine = balance.loads(textwrap.dedent("""
+    engine = balance.loads(
+        textwrap.dedent("""
         name = "one with a primary shaft"
         cycle = 4
         speed = "3000 rpm"
@@ -685,7 +784,8 @@ def test_a_built_shaft_at_crank_speed_counts_towards_the_balance_factor():
         [[shafts.masses]]
         mass_radius = "13.5 kg*mm"
         angle = 180
-        """))
+        """)
+    )
     result = balance.counterweights(engine, planes=[1], balance_factor=0.5)
     assert_allclose(sum(c.mass_kg for c in result.counterweights), 0.3, rtol=1e-9)
 
@@ -696,7 +796,8 @@ def test_the_text_gives_the_built_shafts_rolling_moment(tmp_path):
     to |c|·F = 0.0671 m·394.8 N = 26.5 N·m; the text says so beside the built shaft, and that
     the proposed shafts (none offset) roll nothing."""
     path = tmp_path / "four.toml"
-    path.write_text(textwrap.dedent("""
+    path.write_text(
+        textwrap.dedent("""
         name = "four with a shaft"
         cycle = 4
         speed = "3000 rpm"
@@ -724,7 +825,8 @@ def test_the_text_gives_the_built_shafts_rolling_moment(tmp_path):
         [[shafts.masses]]
         mass_radius = "0.001 kg*m"
         angle = 33
-        """))
+        """)
+    )
     result = invoke("counterweight", path, "--shafts", "2")
     assert result.exit_code == 0, result.output
     assert "Rolling moment about the crank axis of the shafts as built" in result.output

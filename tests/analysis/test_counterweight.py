@@ -42,7 +42,9 @@ def bramo_with_angular_eccentricity(epsilon, rho=6.0):
             psi = phi
             for _ in range(60):  # fixed point of ψ = Φ + asin(ε·λ·sin ψ)
                 psi = phi + math.asin(epsilon * lam * math.sin(psi))
-            radius = (engine.rod_length_m - c.link_length_m) / (1 - 0.5 * lam**2 * f1 * math.sin(psi) ** 2)
+            radius = (engine.rod_length_m - c.link_length_m) / (
+                1 - 0.5 * lam**2 * f1 * math.sin(psi) ** 2
+            )
             c = dataclasses.replace(c, knuckle_angle_rad=psi, knuckle_radius_m=radius)
         cylinders.append(c)
     return dataclasses.replace(engine, cylinders=tuple(cylinders))
@@ -61,14 +63,18 @@ def test_nakanishi_v12_counterweights_on_throws_1_and_6():
     """§ 4: m_w = (2√3/5)·(r/r_w)·{m_p + (2a + b)·m_c + m_k}; afterwards nothing below the 6th."""
     engine = load(V12)
     r_w = 0.060
-    result = counterweights(engine, [plane_at_throw(engine, 1), plane_at_throw(engine, 6)],
-                            radius_m=r_w,
-                     max_order=8)
-    expected = 2 * math.sqrt(3) / 5 * (engine.crank_radius_m / r_w) * (M_P + (2 * A + B) * M_C + M_K)
+    result = counterweights(
+        engine, [plane_at_throw(engine, 1), plane_at_throw(engine, 6)], radius_m=r_w, max_order=8
+    )
+    expected = (
+        2 * math.sqrt(3) / 5 * (engine.crank_radius_m / r_w) * (M_P + (2 * A + B) * M_C + M_K)
+    )
     for weight in result.counterweights:
         assert_allclose(weight.mass_kg, expected, rtol=1e-9)
     # opposite each other: a pure couple
-    assert_allclose(abs(result.counterweights[0].angle_deg - result.counterweights[1].angle_deg), 180, atol=1e-9)
+    assert_allclose(
+        abs(result.counterweights[0].angle_deg - result.counterweights[1].angle_deg), 180, atol=1e-9
+    )
     assert_nothing_below(result.residual, 6, engine.unit_force_n * engine.n_cylinders)
 
 
@@ -98,10 +104,19 @@ def test_bramo_counterweight_is_fraeys_de_veubeke_s1():
     assert_allclose(weight.mass_kg, 31.6764, atol=0.0012)
     # the same from the formula with the configuration's own masses; m by (13) from them
     links = [c for c in engine.cylinders if c.is_link]
-    m = (-sum(c.knuckle_kg * c.knuckle_radius_m * math.cos(engine.bank_angles_rad[c.bank_index])
-              for c in links) / engine.rod_length_m)
-    formula = (engine.rotating_kg + sum(c.knuckle_kg for c in links)
-               + 0.5 * sum(c.reciprocating_kg for c in engine.cylinders) + 0.5 * m)
+    m = (
+        -sum(
+            c.knuckle_kg * c.knuckle_radius_m * math.cos(engine.bank_angles_rad[c.bank_index])
+            for c in links
+        )
+        / engine.rod_length_m
+    )
+    formula = (
+        engine.rotating_kg
+        + sum(c.knuckle_kg for c in links)
+        + 0.5 * sum(c.reciprocating_kg for c in engine.cylinders)
+        + 0.5 * m
+    )
     assert_allclose(m, 0.1386, atol=5e-5)
     assert_allclose(weight.mass_kg, formula, atol=0.0005)
     assert_allclose(weight.angle_deg, 180.0, atol=1e-9)  # opposite the crank pin
@@ -123,12 +138,18 @@ def test_bramo_antivibrateur():
     s2 = abs(plain.residual.orders[1].force_forward) / r_omega2
     me_kg_mm = result.antivibrateur.mass_eccentricity_kgm * 1000
     assert_allclose(me_kg_mm / 43.45, s2 / 2.17276, rtol=3e-4)
-    assert abs(result.residual.orders[1].force_forward) < 1e-9 * r_omega2   # S2: 100 % reduction
-    assert_allclose(result.residual.orders[0].force_backward, plain.residual.orders[0].force_backward,
-                    rtol=1e-12)
+    assert abs(result.residual.orders[1].force_forward) < 1e-9 * r_omega2  # S2: 100 % reduction
+    assert_allclose(
+        result.residual.orders[0].force_backward,
+        plain.residual.orders[0].force_backward,
+        rtol=1e-12,
+    )
     # its mass rides on the pin: the counterweight grows by exactly M
-    assert_allclose(result.counterweights[0].mass_kg - plain.counterweights[0].mass_kg,
-                    result.antivibrateur.mass_kg, rtol=1e-9)
+    assert_allclose(
+        result.counterweights[0].mass_kg - plain.counterweights[0].mass_kg,
+        result.antivibrateur.mass_kg,
+        rtol=1e-9,
+    )
 
 
 def test_inline4_lanchester_pair():
@@ -159,7 +180,12 @@ def test_shaft_pairs_cancel_a_moment():
     # each: the backward couple ½·m·r·ω²·0.1 m over the 0.1 m between the planes, at ω²
     assert_allclose(backward[0].mass_eccentricity_kgm, 0.5 * 1.0 * engine.crank_radius_m, rtol=1e-9)
     first = result.after_shafts.orders[0]
-    for value in (first.force_forward, first.force_backward, first.moment_forward, first.moment_backward):
+    for value in (
+        first.force_forward,
+        first.force_backward,
+        first.moment_forward,
+        first.moment_backward,
+    ):
         assert abs(value) < 1e-9 * engine.unit_force_n
 
 
@@ -176,7 +202,7 @@ def test_single_cylinder_balance_factor(factor):
 
 
 def test_half_balanced_single_leaves_a_constant_force_turning_backward():
-    engine = make_engine([0], [(0, 0.0)], r=0.05, l=0.2)
+    engine = make_engine([0], [(0, 0.0)], r=0.05, rod=0.2)
     residual = counterweights(engine, balance_factor=0.5, max_order=8).residual
     first = residual.orders[0]
     theta = np.linspace(0, 2 * np.pi, 360, endpoint=False)
@@ -198,16 +224,19 @@ def test_shaft_with_test_masses_runs_balanced_on_the_machine():
     own m_k, a forward first order Σ (m_test + m_k)·r·ω²·e^{iβ_j} and its moment about z̄;
     the engine's counterweights (m·ρ·ω²·e^{iφ} in their planes) must cancel both exactly."""
     engine = load(V12)
-    result = counterweights(engine, [plane_at_throw(engine, 1), plane_at_throw(engine, 6)],
-                            test_masses=True)
+    result = counterweights(
+        engine, [plane_at_throw(engine, 1), plane_at_throw(engine, 6)], test_masses=True
+    )
     omega2, r, z_mean = engine.speed_rad_s**2, engine.crank_radius_m, engine.mean_z_m
     force = moment = 0j
-    for throw, mass in zip(engine.throws, result.test_masses_kg):
+    for throw, mass in zip(engine.throws, result.test_masses_kg, strict=True):
         phasor = (mass + engine.crank_kg) * r * omega2 * np.exp(1j * throw.phase_rad)
         force += phasor
         moment += (throw.z_m - z_mean) * phasor
     for weight in result.counterweights:
-        phasor = weight.mass_kg * weight.radius_m * omega2 * np.exp(1j * np.radians(weight.angle_deg))
+        phasor = (
+            weight.mass_kg * weight.radius_m * omega2 * np.exp(1j * np.radians(weight.angle_deg))
+        )
         force += phasor
         moment += (weight.plane.z_m - z_mean) * phasor
     scale = engine.per_cylinder_unit_n
@@ -219,17 +248,22 @@ def test_one_plane_cancels_the_force_and_reports_the_moment_left():
     result = counterweights(engine, [plane_at_throw(engine, 1)])
     first = result.residual.orders[0]
     assert abs(first.force_forward) < 1e-9 * engine.unit_force_n
-    assert_allclose(abs(first.moment_forward), abs(result.original.orders[0].moment_forward), rtol=1e-9)
+    assert_allclose(
+        abs(first.moment_forward), abs(result.original.orders[0].moment_forward), rtol=1e-9
+    )
 
 
-@pytest.mark.parametrize("kwargs, words", [
-    (dict(planes=[Plane(0.0, 1), Plane(0.0, 1)]), "coincide"),
-    (dict(planes=[Plane(0.0), Plane(0.1), Plane(0.2)]), "one plane"),
-    (dict(radius_m=0.0), "greater than zero"),
-    (dict(radius_m=-0.05), "greater than zero"),
-    (dict(shaft_orders=(99,)), r"outside the orders analysed \(1 to 8"),
-    (dict(antivibrateur_radius_m=0.04), "single-throw"),
-])
+@pytest.mark.parametrize(
+    "kwargs, words",
+    [
+        (dict(planes=[Plane(0.0, 1), Plane(0.0, 1)]), "coincide"),
+        (dict(planes=[Plane(0.0), Plane(0.1), Plane(0.2)]), "one plane"),
+        (dict(radius_m=0.0), "greater than zero"),
+        (dict(radius_m=-0.05), "greater than zero"),
+        (dict(shaft_orders=(99,)), r"outside the orders analysed \(1 to 8"),
+        (dict(antivibrateur_radius_m=0.04), "single-throw"),
+    ],
+)
 def test_bad_requests(kwargs, words):
     with pytest.raises(CounterweightError, match=words):
         counterweights(load(V12), **kwargs)
@@ -275,15 +309,22 @@ def test_180_twin_couple_one_counter_rotating_shaft_with_two_masses():
     assert shaft.speed_ratio == -1 and shaft.order == 1 and len(shaft.masses) == 2
     front, rear = sorted(shaft.masses, key=lambda x: x.z_m)
     assert_allclose([front.z_m, rear.z_m], [-s / 2, s / 2], atol=1e-15)
-    assert_allclose([front.mass_eccentricity_kgm, rear.mass_eccentricity_kgm],
-                    [m * r * d / (2 * s)] * 2, rtol=1e-9)
+    assert_allclose(
+        [front.mass_eccentricity_kgm, rear.mass_eccentricity_kgm],
+        [m * r * d / (2 * s)] * 2,
+        rtol=1e-9,
+    )
     assert_allclose(front.phase_deg, 180.0, atol=1e-9)
-    assert_allclose(math.cos(math.radians(rear.phase_deg)), 1.0, atol=1e-12)   # 0° or 360°−ε
+    assert_allclose(math.cos(math.radians(rear.phase_deg)), 1.0, atol=1e-12)  # 0° or 360°−ε
     assert_allclose(front.mass_kg(0.02), m * r * d / (2 * s) / 0.02, rtol=1e-12)
     # exact: nothing of order 1 is left, force or moment
     first = result.after_shafts.orders[0]
-    for value in (first.force_forward, first.force_backward, first.moment_forward,
-                  first.moment_backward):
+    for value in (
+        first.force_forward,
+        first.force_backward,
+        first.moment_forward,
+        first.moment_backward,
+    ):
         assert abs(value) < 1e-9 * engine.unit_force_n * d
     # the per-mass list stays as before: two entries of speed ratio −1
     assert [x.speed_ratio for x in result.shafts] == [-1, -1]
@@ -312,8 +353,12 @@ def test_270_twin_one_counter_rotating_shaft_cancels_each_cylinder_in_its_plane(
     # the shaft's force is the two masses' sum: |½m·r·ω²·(−1 + i)| = m·r·ω²/√2
     assert_allclose(shaft.force_n, m * r * engine.speed_rad_s**2 / math.sqrt(2), rtol=1e-9)
     first = result.after_shafts.orders[0]
-    for value in (first.force_forward, first.force_backward, first.moment_forward,
-                  first.moment_backward):
+    for value in (
+        first.force_forward,
+        first.force_backward,
+        first.moment_forward,
+        first.moment_backward,
+    ):
         assert abs(value) < 1e-9 * engine.unit_force_n * d
 
 
@@ -330,10 +375,12 @@ def test_lanchester_pair_at_different_heights_makes_a_rolling_couple():
     engine, result, p = _inline4_pair({2: (a, h1), -2: (-a, h2)})
     plus, minus = result.balancer_shafts
     assert (plus.speed_ratio, minus.speed_ratio) == (2, -2)
-    assert_allclose([plus.rolling_moment.cos_nm, plus.rolling_moment.sin_nm], [-a * p, h1 * p],
-                    rtol=1e-9)
-    assert_allclose([minus.rolling_moment.cos_nm, minus.rolling_moment.sin_nm], [a * p, -h2 * p],
-                    rtol=1e-9)
+    assert_allclose(
+        [plus.rolling_moment.cos_nm, plus.rolling_moment.sin_nm], [-a * p, h1 * p], rtol=1e-9
+    )
+    assert_allclose(
+        [minus.rolling_moment.cos_nm, minus.rolling_moment.sin_nm], [a * p, -h2 * p], rtol=1e-9
+    )
     assert_allclose(plus.rolling_moment.amplitude_nm, abs(p) * math.hypot(a, h1), rtol=1e-9)
     (pair,) = result.rolling_moments
     assert pair.order == 2 and pair.speed_ratios == (2, -2)
@@ -344,8 +391,12 @@ def test_lanchester_pair_at_different_heights_makes_a_rolling_couple():
     assert_allclose(pair.phase_deg, 270.0, atol=1e-9)
     # the offsets change no free force or moment: still nothing of order 2 left
     second = result.after_shafts.orders[1]
-    for value in (second.force_forward, second.force_backward, second.moment_forward,
-                  second.moment_backward):
+    for value in (
+        second.force_forward,
+        second.force_backward,
+        second.moment_forward,
+        second.moment_backward,
+    ):
         assert abs(value) < 1e-9 * engine.unit_force_n
 
 
@@ -374,30 +425,38 @@ def test_offset_follows_the_engine_vertical(vertical_deg, cos_sin):
     """Shaft +2 alone off the axis, lateral a, height 0; force P·e^{2iθ} in the reference
     frame. Lateral lies at v + 90° from the reference axis: x = a·i·e^{iv}. With v = 0,
     M = Im(−i·a·P·e^{2iθ}) = −a·P·cos 2θ; with v = 90°, x = −a and M = −a·P·sin 2θ."""
-    engine = dataclasses.replace(load(CONFIGS / "inline-4-car.toml"),
-                                 vertical_rad=math.radians(vertical_deg))
+    engine = dataclasses.replace(
+        load(CONFIGS / "inline-4-car.toml"), vertical_rad=math.radians(vertical_deg)
+    )
     a = 0.1
     result = counterweights(engine, shaft_orders=(2,), shaft_offsets_m={2: (a, 0.0)})
     plus, minus = result.balancer_shafts
-    p = plus.force_n * math.cos(math.radians(plus.masses[0].phase_deg))   # signed: −|P|
-    assert_allclose([plus.rolling_moment.cos_nm, plus.rolling_moment.sin_nm],
-                    [a * p * cos_sin[0], a * p * cos_sin[1]], atol=1e-9 * abs(p) * a)
+    p = plus.force_n * math.cos(math.radians(plus.masses[0].phase_deg))  # signed: −|P|
+    assert_allclose(
+        [plus.rolling_moment.cos_nm, plus.rolling_moment.sin_nm],
+        [a * p * cos_sin[0], a * p * cos_sin[1]],
+        atol=1e-9 * abs(p) * a,
+    )
     assert minus.centred and minus.rolling_moment.amplitude_nm == 0.0
 
 
-@pytest.mark.parametrize("offsets, words", [
-    ((0.1,), "pairs"),
-    ("0.1,0.2", "pairs"),
-    ((0.1, "0.2"), "lengths in metres"),
-    ((0.1, math.nan), "not a finite number"),
-    ({3: (0.1, 0.1)}, "speed ratio 3"),
-    ({0: (0.1, 0.1)}, "speed ratio 0"),
-    ({True: (0.1, 0.1)}, "speed ratio True"),
-])
+@pytest.mark.parametrize(
+    "offsets, words",
+    [
+        ((0.1,), "pairs"),
+        ("0.1,0.2", "pairs"),
+        ((0.1, "0.2"), "lengths in metres"),
+        ((0.1, math.nan), "not a finite number"),
+        ({3: (0.1, 0.1)}, "speed ratio 3"),
+        ({0: (0.1, 0.1)}, "speed ratio 0"),
+        ({True: (0.1, 0.1)}, "speed ratio True"),
+    ],
+)
 def test_bad_shaft_offsets(offsets, words):
     with pytest.raises(CounterweightError, match=words) as info:
-        counterweights(load(CONFIGS / "inline-4-car.toml"), shaft_orders=(2,),
-                       shaft_offsets_m=offsets)
+        counterweights(
+            load(CONFIGS / "inline-4-car.toml"), shaft_orders=(2,), shaft_offsets_m=offsets
+        )
     assert info.value.parameter == "shaft_offsets_m"
 
 
@@ -423,12 +482,16 @@ def test_antivibrateur_mass_counts_with_a_balance_factor():
     plain = balance.counterweights(engine, balance_factor=0.5)
     rotor = balance.counterweights(engine, balance_factor=0.5, antivibrateur_radius_m=0.04)
     unit = engine.per_cylinder_unit_n
-    for a, b in ((plain.residual.order(1).force_forward, rotor.residual.order(1).force_forward),
-                 (plain.residual.order(1).force_backward, rotor.residual.order(1).force_backward)):
+    for a, b in (
+        (plain.residual.order(1).force_forward, rotor.residual.order(1).force_forward),
+        (plain.residual.order(1).force_backward, rotor.residual.order(1).force_backward),
+    ):
         assert abs(a - b) < 1e-9 * unit
-    assert_allclose(rotor.counterweights[0].mass_kg - plain.counterweights[0].mass_kg,
-                    rotor.antivibrateur.mass_kg * engine.crank_radius_m / rotor.counterweights[0].radius_m,
-                    rtol=1e-9)
+    assert_allclose(
+        rotor.counterweights[0].mass_kg - plain.counterweights[0].mass_kg,
+        rotor.antivibrateur.mass_kg * engine.crank_radius_m / rotor.counterweights[0].radius_m,
+        rtol=1e-9,
+    )
 
 
 def test_counterweight_angle_is_measured_from_throw_one():

@@ -20,12 +20,12 @@ from tests.support import OPPOSED_R as R
 from tests.support import OPPOSED_RPM as RPM
 
 
-def travel_harmonic(k, r=R, l=L, n=4096):
+def travel_harmonic(k, r=R, rod=L, n=4096):
     """a_k of one piston's travel s(θ) = r·cos θ + √(l² − r²·sin²θ) = Σ a_k cos kθ, by the
     trapezoidal rule on the closed form (spectrally exact for a smooth periodic function): a
     method independent of balance's linkage and Fourier engine."""
     theta = 2 * np.pi * np.arange(n) / n
-    s = r * np.cos(theta) + np.sqrt(l**2 - (r * np.sin(theta)) ** 2)
+    s = r * np.cos(theta) + np.sqrt(rod**2 - (r * np.sin(theta)) ** 2)
     return 2 * np.mean(s * np.cos(k * theta))
 
 
@@ -35,9 +35,11 @@ GAS = '[gas]\nbore = "105 mm"\ncompression_ratio = 17\nimep = "8 bar"'
 def flat8_pair(gear_phase_deg, direction, crank=(0, 180, 0, 180), pitch=0.1):
     """Two flat-8s (180° V with two rods a pin, four throws), one above the other, geared 1:1."""
     throws = "\n".join(f'[[throws]]\nphase = {p}\nz = "{i * pitch} m"' for i, p in enumerate(crank))
-    throws += "\n" + "\n".join(f'[[throws]]\nphase = {p}\nz = "{i * pitch} m"\ncrankshaft = 2'
-                               for i, p in enumerate(crank))
-    return balance.loads(textwrap.dedent(f"""
+    throws += "\n" + "\n".join(
+        f'[[throws]]\nphase = {p}\nz = "{i * pitch} m"\ncrankshaft = 2' for i, p in enumerate(crank)
+    )
+    return balance.loads(
+        textwrap.dedent(f"""
         name = "H16"
         cycle = 4
         speed = "{RPM} rpm"
@@ -54,7 +56,10 @@ def flat8_pair(gear_phase_deg, direction, crank=(0, 180, 0, 180), pitch=0.1):
         y = "-250 mm"
         direction = {direction}
         phase = {gear_phase_deg}
-        """) + throws + "\n")
+        """)
+        + throws
+        + "\n"
+    )
 
 
 def deltic_by_hand(engine, samples=720):
@@ -70,20 +75,30 @@ def deltic_by_hand(engine, samples=720):
             throw = engine.throws[throw_index]
             shaft = engine.crankshafts[throw.crankshaft_index]
             centre = complex(shaft.x_m, shaft.y_m)
-            pin = engine.crank_radius_m * np.exp(1j * shaft.direction * (theta + shaft.phase_rad
-                                                                         + throw.phase_rad))
+            pin = engine.crank_radius_m * np.exp(
+                1j * shaft.direction * (theta + shaft.phase_rad + throw.phase_rad)
+            )
             axis = np.exp(1j * (engine.bank_angles_rad[c.bank_index] + turn))
             local = pin / axis
             s = local.real + np.sqrt(engine.rod_length_m**2 - local.imag**2)
             positions.append(centre + s * axis)
             masses.append(c.reciprocating_kg)
             zs.append(c.z_m)
-            positions.append(centre + pin)         # the big ends at the pin
-            masses.append(engine.rotating_kg / 2)   # each throw's rotating mass, per rod
+            positions.append(centre + pin)  # the big ends at the pin
+            masses.append(engine.rotating_kg / 2)  # each throw's rotating mass, per rod
             zs.append(throw.z_m)
     x = np.array(positions)
-    acc = (-np.roll(x, -2, 1) + 16 * np.roll(x, -1, 1) - 30 * x + 16 * np.roll(x, 1, 1)
-           - np.roll(x, 2, 1)) / (12 * h**2) * engine.speed_rad_s**2
+    acc = (
+        (
+            -np.roll(x, -2, 1)
+            + 16 * np.roll(x, -1, 1)
+            - 30 * x
+            + 16 * np.roll(x, 1, 1)
+            - np.roll(x, 2, 1)
+        )
+        / (12 * h**2)
+        * engine.speed_rad_s**2
+    )
     forces = -np.array(masses)[:, None] * acc
     z = np.array(zs)
     zbar = np.mean([c.z_m for c in engine.cylinders])
@@ -91,13 +106,15 @@ def deltic_by_hand(engine, samples=720):
     out = []
     for k in range(1, 9):
         fw, bw = np.exp(-1j * k * theta), np.exp(1j * k * theta)
-        out.append((np.mean(force * fw), np.mean(force * bw), np.mean(moment * fw),
-                    np.mean(moment * bw)))
+        out.append(
+            (np.mean(force * fw), np.mean(force * bw), np.mean(moment * fw), np.mean(moment * bw))
+        )
     return out
 
 
 def one_cylinder(top="", bank="", cylinder=""):
-    return balance.loads(textwrap.dedent(f"""
+    return balance.loads(
+        textwrap.dedent(f"""
         name = "one"
         cycle = 4
         speed = "3000 rpm"
@@ -116,7 +133,8 @@ def one_cylinder(top="", bank="", cylinder=""):
         bank = 1
         throw = 1
         {cylinder}
-        """))
+        """)
+    )
 
 
 BASE = """
@@ -153,15 +171,20 @@ def test_an_exhaust_lead_leaves_order_k_residuals_by_hand(lead):
     Odd orders above 1 vanish (the square root has even harmonics only); a_1 = r exactly."""
     result = balance.analyse(opposed_single(lead))
     eps = math.radians(lead)
-    assert_allclose(travel_harmonic(1), R, rtol=1e-12)   # the closed form's first harmonic
+    assert_allclose(travel_harmonic(1), R, rtol=1e-12)  # the closed form's first harmonic
     for k in range(1, 9):
         expected = M * OMEGA**2 * k**2 * abs(travel_harmonic(k)) * 2 * abs(math.sin(k * eps / 2))
         o = result.order(k)
         # rtol: the trapezoidal rule and the FFT agree to rounding; atol: the noise floor
-        assert_allclose(abs(o.force_forward) + abs(o.force_backward), expected,
-                        rtol=1e-9, atol=1e-9 * M * R * OMEGA**2)
-        assert_allclose(abs(o.force_forward), abs(o.force_backward), rtol=1e-9,
-                        atol=1e-9 * M * R * OMEGA**2)
+        assert_allclose(
+            abs(o.force_forward) + abs(o.force_backward),
+            expected,
+            rtol=1e-9,
+            atol=1e-9 * M * R * OMEGA**2,
+        )
+        assert_allclose(
+            abs(o.force_forward), abs(o.force_backward), rtol=1e-9, atol=1e-9 * M * R * OMEGA**2
+        )
         if expected > 1e-6 * M * R * OMEGA**2:
             # along the bore (the reference axis): the ellipse's axis at 0° (or 180°)
             record = result.to_dict()["orders"][k - 1]["force"]
@@ -199,10 +222,14 @@ def test_each_crankshaft_carries_its_own_pistons_torque():
     result = balance.torque(engine)
     first, second = result.crankshafts
     assert (first.number, second.number, first.direction) == (1, 2, 1)
-    assert_allclose(first.torque.curve + second.torque.curve, result.total.curve,
-                    atol=1e-9 * np.abs(result.total.curve).max())
+    assert_allclose(
+        first.torque.curve + second.torque.curve,
+        result.total.curve,
+        atol=1e-9 * np.abs(result.total.curve).max(),
+    )
     # the inertia alone: a plain single cylinder of the same piston
-    plain = balance.loads(textwrap.dedent(f"""
+    plain = balance.loads(
+        textwrap.dedent(f"""
         name = "plain"
         cycle = 2
         speed = "{RPM} rpm"
@@ -214,7 +241,8 @@ def test_each_crankshaft_carries_its_own_pistons_torque():
         angle = 0
         [[throws]]
         phase = 0
-        """))
+        """)
+    )
     inertia_only = balance.torque(opposed_single(0.0))
     reference = balance.torque(plain).inertia.curve
     for shaft in inertia_only.crankshafts:
@@ -248,8 +276,7 @@ def test_h16_primary_couples_add_or_cancel_by_the_gear_phase(direction):
     one = 4 * M * R * OMEGA**2 * d
     for phase, expected in ((0, 2 * one), (180, 0.0)):
         o = balance.analyse(flat8_pair(phase, direction)).order(1)
-        assert_allclose(abs(o.moment_forward) + abs(o.moment_backward), expected,
-                        atol=1e-9 * one)
+        assert_allclose(abs(o.moment_forward) + abs(o.moment_backward), expected, atol=1e-9 * one)
         assert abs(o.force_forward) + abs(o.force_backward) < 1e-9 * one / d
 
 
@@ -263,19 +290,22 @@ def test_the_deltic_lead_closes_round_the_triangle_only_with_one_shaft_reversed(
     Deltic has that 20° lead in all eighteen bores, its inner dead centres 10° after the exhaust
     pistons' and 20° apart all round."""
     from balance_cli.kinematics.linkage import pin_angle
+
     engine = balance.load("configs/today/opposed-piston/napier-deltic-d18.toml")
     assert [s.direction for s in engine.crankshafts] == [1, -1, -1]
 
     def dead_centre(throw, bore_deg):
         d = engine.crankshaft_of(throw).direction
-        own = d * math.degrees(pin_angle(engine, throw, 0.0))   # P, in its own sense
+        own = d * math.degrees(pin_angle(engine, throw, 0.0))  # P, in its own sense
         return (d * bore_deg - own) % 360
 
     tdc = tdc_angles(engine)
     for c in engine.cylinders:
         alpha = math.degrees(engine.bank_angles_rad[c.bank_index])
-        exhaust, inlet = (dead_centre(c.throw_index, alpha),
-                          dead_centre(c.opposed_throw_index, alpha + 180))
+        exhaust, inlet = (
+            dead_centre(c.throw_index, alpha),
+            dead_centre(c.opposed_throw_index, alpha + 180),
+        )
         assert_allclose((inlet - exhaust) % 360, 20.0, atol=1e-9)
         assert_allclose((tdc[c.number] - exhaust) % 360, 10.0, atol=1e-5)
     assert_allclose(firing_sequence(engine).intervals_deg, [20.0] * 18, atol=1e-5)
@@ -308,8 +338,8 @@ def test_vr6_offsets_make_the_published_22_degree_split_fire_evenly():
     engine = balance.load(VR6)
     delta = math.degrees(math.asin(0.0125 / (0.164 + 0.04515)))
     split = math.degrees(engine.throws[5].phase_rad - engine.throws[0].phase_rad)
-    assert_allclose(split, 15 + 2 * delta, atol=1e-4)   # the file's phases, to 4 decimals
-    assert abs(split - 22.0) < 0.5                        # published to the degree
+    assert_allclose(split, 15 + 2 * delta, atol=1e-4)  # the file's phases, to 4 decimals
+    assert abs(split - 22.0) < 0.5  # published to the degree
     assert_allclose(firing_sequence(engine).intervals_deg, [120.0] * 6, atol=2e-4)
 
 
@@ -318,21 +348,27 @@ def test_vr6_without_its_offsets_fires_unevenly_by_twice_the_offset_angle():
     in the order 1-5-3-6-2-4 (bank 1, 1, 1, 2, 2, 2) the intervals from bank 1 to bank 2 and back
     are 120 ∓ 2·asin(e/(l + r)) = 120 ∓ 6.85°."""
     engine = balance.load(VR6)
-    plain = engine.replace(cylinders=tuple(
-        balance.Cylinder(c.number, c.bank, c.throw, c.z_m, c.reciprocating_kg, pin_offset_m=0.0)
-        for c in engine.cylinders))
+    plain = engine.replace(
+        cylinders=tuple(
+            balance.Cylinder(c.number, c.bank, c.throw, c.z_m, c.reciprocating_kg, pin_offset_m=0.0)
+            for c in engine.cylinders
+        )
+    )
     two = 2 * math.degrees(math.asin(0.0125 / (0.164 + 0.04515)))
-    assert_allclose(firing_sequence(plain).intervals_deg,
-                    [120, 120, 120 - two, 120, 120, 120 + two], atol=2e-4)
+    assert_allclose(
+        firing_sequence(plain).intervals_deg, [120, 120, 120 - two, 120, 120, 120 + two], atol=2e-4
+    )
 
 
 def test_pin_offset_by_engine_bank_or_cylinder_is_one_offset():
     """The global key is the default, a bank's overrides it and a cylinder's overrides both; the
     offset (towards the rotation) puts the dead centre asin(e/(l + r)) after the pin passes the
     axis, where crank and rod are in line."""
-    offsets = [one_cylinder(top='pin_offset = "5 mm"'),
-               one_cylinder(top='pin_offset = "-9 mm"', bank='pin_offset = "5 mm"'),
-               one_cylinder(bank='pin_offset = "-9 mm"', cylinder='pin_offset = "5 mm"')]
+    offsets = [
+        one_cylinder(top='pin_offset = "5 mm"'),
+        one_cylinder(top='pin_offset = "-9 mm"', bank='pin_offset = "5 mm"'),
+        one_cylinder(bank='pin_offset = "-9 mm"', cylinder='pin_offset = "5 mm"'),
+    ]
     records = [balance.analyse(e).to_dict()["orders"] for e in offsets]
     assert records[0] == records[1] == records[2]
     expected = math.degrees(math.asin(0.005 / 0.18))
@@ -340,32 +376,72 @@ def test_pin_offset_by_engine_bank_or_cylinder_is_one_offset():
         assert_allclose(tdc_angles(engine)[1], expected, atol=1e-5)
 
 
-@pytest.mark.parametrize("text, key, words", [
-    ('[[crankshafts]]\nx = "1 m"\n[[throws]]\nphase = 0\n', "crankshafts[1].x", "reference"),
-    ('[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\ndirection = 0\n[[throws]]\nphase = 0\n',
-     "crankshafts[2].direction", "must be 1"),
-    ('[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\ndirection = 2\n[[throws]]\nphase = 0\n',
-     "crankshafts[2].direction", "between -1 and 1"),
-    ('[[throws]]\nphase = 0\ncrankshaft = 2\n', "throws[1].crankshaft", "between 1 and 1"),
-    ('[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\n[[throws]]\nphase = 0\n', "crankshafts[2]",
-     "carries no throw"),
-    ('[[crankshafts]]\n[[crankshafts]]\n[[throws]]\nphase = 0\n[[throws]]\nphase = 0\n'
-     'crankshaft = 2\n', "crankshafts[2]", "shares its axis"),
-    ('[[crankshafts]]\n[[crankshafts]]\ny = "1 m"\n[[throws]]\nphase = 0\n[[throws]]\n'
-     'phase = 180\ncrankshaft = 2\n[[cylinders]]\nnumber = 1\nbank = 1\nthrow = 1\n'
-     'opposed_throw = 2\n', "cylinders[1]", "off the axis"),
-    ('[[crankshafts]]\n[[crankshafts]]\nx = "0.5 m"\n[[throws]]\nphase = 0\n[[throws]]\n'
-     'phase = 180\ncrankshaft = 2\n[[cylinders]]\nnumber = 1\nbank = 1\nthrow = 1\n'
-     'opposed_throw = 2\n', "cylinders[1]", "could meet"),
-    ('[[throws]]\nphase = 0\n[[throws]]\nphase = 180\n[[cylinders]]\nnumber = 1\nbank = 1\n'
-     'throw = 1\nopposed_throw = 2\n', "cylinders[1]", "same crankshaft"),
-    ('[[throws]]\nphase = 0\n[[cylinders]]\nnumber = 1\nbank = 1\nthrow = 1\n'
-     'opposed_reciprocating = "1 kg"\n', "cylinders[1].opposed_reciprocating", "opposed_throw"),
-    ('[[throws]]\nphase = 0\n[[cylinders]]\nnumber = 1\nbank = 1\nthrow = 1\n'
-     'pin_offset = "250 mm"\n', "cylinders[1]", "offset smaller"),
-    ('frame = "rotary"\n[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\n[[throws]]\nphase = 0\n'
-     '[[throws]]\nphase = 0\ncrankshaft = 2\n', "crankshafts", "rotary"),
-])
+@pytest.mark.parametrize(
+    "text, key, words",
+    [
+        ('[[crankshafts]]\nx = "1 m"\n[[throws]]\nphase = 0\n', "crankshafts[1].x", "reference"),
+        (
+            '[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\ndirection = 0\n[[throws]]\nphase = 0\n',
+            "crankshafts[2].direction",
+            "must be 1",
+        ),
+        (
+            '[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\ndirection = 2\n[[throws]]\nphase = 0\n',
+            "crankshafts[2].direction",
+            "between -1 and 1",
+        ),
+        ("[[throws]]\nphase = 0\ncrankshaft = 2\n", "throws[1].crankshaft", "between 1 and 1"),
+        (
+            '[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\n[[throws]]\nphase = 0\n',
+            "crankshafts[2]",
+            "carries no throw",
+        ),
+        (
+            "[[crankshafts]]\n[[crankshafts]]\n[[throws]]\nphase = 0\n[[throws]]\nphase = 0\n"
+            "crankshaft = 2\n",
+            "crankshafts[2]",
+            "shares its axis",
+        ),
+        (
+            '[[crankshafts]]\n[[crankshafts]]\ny = "1 m"\n[[throws]]\nphase = 0\n[[throws]]\n'
+            "phase = 180\ncrankshaft = 2\n[[cylinders]]\nnumber = 1\nbank = 1\nthrow = 1\n"
+            "opposed_throw = 2\n",
+            "cylinders[1]",
+            "off the axis",
+        ),
+        (
+            '[[crankshafts]]\n[[crankshafts]]\nx = "0.5 m"\n[[throws]]\nphase = 0\n[[throws]]\n'
+            "phase = 180\ncrankshaft = 2\n[[cylinders]]\nnumber = 1\nbank = 1\nthrow = 1\n"
+            "opposed_throw = 2\n",
+            "cylinders[1]",
+            "could meet",
+        ),
+        (
+            "[[throws]]\nphase = 0\n[[throws]]\nphase = 180\n[[cylinders]]\nnumber = 1\nbank = 1\n"
+            "throw = 1\nopposed_throw = 2\n",
+            "cylinders[1]",
+            "same crankshaft",
+        ),
+        (
+            "[[throws]]\nphase = 0\n[[cylinders]]\nnumber = 1\nbank = 1\nthrow = 1\n"
+            'opposed_reciprocating = "1 kg"\n',
+            "cylinders[1].opposed_reciprocating",
+            "opposed_throw",
+        ),
+        (
+            "[[throws]]\nphase = 0\n[[cylinders]]\nnumber = 1\nbank = 1\nthrow = 1\n"
+            'pin_offset = "250 mm"\n',
+            "cylinders[1]",
+            "offset smaller",
+        ),
+        (
+            'frame = "rotary"\n[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\n[[throws]]\nphase = 0\n'
+            "[[throws]]\nphase = 0\ncrankshaft = 2\n",
+            "crankshafts",
+            "rotary",
+        ),
+    ],
+)
 def test_bad_crankshafts_and_opposed_pistons_are_named(text, key, words):
     # top-level keys go before the first table
     top = "\n".join(line for line in text.splitlines() if line.startswith("frame"))
@@ -376,9 +452,14 @@ def test_bad_crankshafts_and_opposed_pistons_are_named(text, key, words):
     assert words in str(info.value)
 
 
-@pytest.mark.parametrize("config", ["configs/today/opposed-piston/napier-deltic-d18.toml",
-                                    "configs/today/opposed-piston/junkers-jumo-205.toml",
-                                    "configs/today/h/brm-h16.toml"])
+@pytest.mark.parametrize(
+    "config",
+    [
+        "configs/today/opposed-piston/napier-deltic-d18.toml",
+        "configs/today/opposed-piston/junkers-jumo-205.toml",
+        "configs/today/h/brm-h16.toml",
+    ],
+)
 def test_each_crankshafts_torque_is_r_times_its_pins_tangential_forces(config):
     """Two methods per crankshaft: its torque from the kinetic energy of the parts it drives
     (−½ω²·dμ_s/dθ plus the gas on its pistons) and r times the tangential forces of the rods
@@ -388,34 +469,49 @@ def test_each_crankshafts_torque_is_r_times_its_pins_tangential_forces(config):
     result = balance.torque(engine)
     unit = engine.per_cylinder_unit_n * engine.crank_radius_m
     for shaft in result.crankshafts:
-        pins = [p for p, t in zip(result.pins, engine.throws) if t.crankshaft == shaft.number]
+        pins = [
+            p
+            for p, t in zip(result.pins, engine.throws, strict=True)
+            if t.crankshaft == shaft.number
+        ]
         from_pins = sum(engine.crank_radius_m * p.tangential.curve for p in pins)
         # the virtual shifts' finite differences are good to about 1e-11 of the forces
         assert np.abs(from_pins - shaft.torque.curve).max() < 1e-9 * unit
-        assert_allclose(shaft.main_bearings.force_n, sum(p.force_n for p in pins),
-                        atol=1e-9 * unit / engine.crank_radius_m)
+        assert_allclose(
+            shaft.main_bearings.force_n,
+            sum(p.force_n for p in pins),
+            atol=1e-9 * unit / engine.crank_radius_m,
+        )
     assert result.main_bearings is None and result.guide is None
 
 
 def test_an_opposed_cylinder_cannot_carry_a_link_rod():
-    text = BASE + ('[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\n[[throws]]\nphase = 0\n'
-                   '[[throws]]\nphase = 180\ncrankshaft = 2\n[[cylinders]]\nnumber = 1\nbank = 1\n'
-                   'throw = 1\nopposed_throw = 2\n[[cylinders]]\nnumber = 2\nbank = 1\nthrow = 1\n'
-                   'z = "50 mm"\nmaster = 1\nlink_length = "250 mm"\nknuckle_radius = "60 mm"\n'
-                   'knuckle_angle = 30\n')
+    text = BASE + (
+        '[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\n[[throws]]\nphase = 0\n'
+        "[[throws]]\nphase = 180\ncrankshaft = 2\n[[cylinders]]\nnumber = 1\nbank = 1\n"
+        "throw = 1\nopposed_throw = 2\n[[cylinders]]\nnumber = 2\nbank = 1\nthrow = 1\n"
+        'z = "50 mm"\nmaster = 1\nlink_length = "250 mm"\nknuckle_radius = "60 mm"\n'
+        "knuckle_angle = 30\n"
+    )
     with pytest.raises(ConfigError, match="opposed-piston cylinder, whose rods are plain"):
         balance.loads(text, name="bad.toml")
 
 
-@pytest.mark.parametrize("extra, words", [
-    # the far throw half a metre along the shaft from the bore it drives
-    ('[[throws]]\nphase = 180\ncrankshaft = 2\nz = "500 mm"\n', "same bore"),
-    # the far throw at 0° moves its piston with the near one: no compression
-    ('[[throws]]\nphase = 0\ncrankshaft = 2\n', "move together"),
-])
+@pytest.mark.parametrize(
+    "extra, words",
+    [
+        # the far throw half a metre along the shaft from the bore it drives
+        ('[[throws]]\nphase = 180\ncrankshaft = 2\nz = "500 mm"\n', "same bore"),
+        # the far throw at 0° moves its piston with the near one: no compression
+        ("[[throws]]\nphase = 0\ncrankshaft = 2\n", "move together"),
+    ],
+)
 def test_impossible_opposed_bores_are_refused(extra, words):
-    text = BASE + ('[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\n[[throws]]\nphase = 0\n' + extra
-                   + '[[cylinders]]\nnumber = 1\nbank = 1\nthrow = 1\nopposed_throw = 2\n')
+    text = BASE + (
+        '[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\n[[throws]]\nphase = 0\n'
+        + extra
+        + "[[cylinders]]\nnumber = 1\nbank = 1\nthrow = 1\nopposed_throw = 2\n"
+    )
     with pytest.raises(ConfigError, match=words) as info:
         balance.loads(text, name="bad.toml")
     assert info.value.key == "cylinders[1]"
@@ -424,10 +520,12 @@ def test_impossible_opposed_bores_are_refused(extra, words):
 def test_a_third_piston_in_an_opposed_bore_is_refused():
     """Cylinder 2 on a bank pointing back along cylinder 1's bore, from the far crankshaft,
     would sit where cylinder 1's opposed piston runs."""
-    text = BASE + ('[[banks]]\nangle = 180\n[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\n'
-                   '[[throws]]\nphase = 0\n[[throws]]\nphase = 180\ncrankshaft = 2\n'
-                   '[[cylinders]]\nnumber = 1\nbank = 1\nthrow = 1\nopposed_throw = 2\n'
-                   '[[cylinders]]\nnumber = 2\nbank = 2\nthrow = 2\n')
+    text = BASE + (
+        '[[banks]]\nangle = 180\n[[crankshafts]]\n[[crankshafts]]\nx = "1 m"\n'
+        "[[throws]]\nphase = 0\n[[throws]]\nphase = 180\ncrankshaft = 2\n"
+        "[[cylinders]]\nnumber = 1\nbank = 1\nthrow = 1\nopposed_throw = 2\n"
+        "[[cylinders]]\nnumber = 2\nbank = 2\nthrow = 2\n"
+    )
     with pytest.raises(ConfigError, match="sits in the bore of cylinder 1") as info:
         balance.loads(text, name="bad.toml")
     assert info.value.key == "cylinders[2]"
@@ -455,7 +553,8 @@ def test_the_readmes_mirror_image_rule_for_a_slanted_bore(direction, gamma, gear
     turning d at gear phase φ_s: no free reciprocating force of any order."""
     g = math.radians(gamma)
     far = (direction * (gamma + 180.0) - gamma - gear + 180.0) % 360.0 - 180.0
-    engine = balance.loads(textwrap.dedent(f"""
+    engine = balance.loads(
+        textwrap.dedent(f"""
         name = "slanted"
         cycle = 2
         speed = "{RPM} rpm"
@@ -481,7 +580,8 @@ def test_the_readmes_mirror_image_rule_for_a_slanted_bore(direction, gamma, gear
         bank = 1
         throw = 1
         opposed_throw = 2
-        """))
+        """)
+    )
     result = balance.analyse(engine)
     for k in range(1, 9):
         o = result.order(k)
@@ -498,15 +598,35 @@ def test_the_jumo_205s_bores_by_hand():
     lower, upper = engine.throws[one.throw_index], engine.throws[one.opposed_throw_index]
     lead = math.degrees(math.remainder(math.pi - (upper.phase_rad - lower.phase_rad), 2 * math.pi))
     assert_allclose(lead, 11.0, atol=1e-12)
-    m, r, l, omega = one.reciprocating_kg, engine.crank_radius_m, engine.rod_length_m, engine.speed_rad_s
+    m, r, rod, omega = (
+        one.reciprocating_kg,
+        engine.crank_radius_m,
+        engine.rod_length_m,
+        engine.speed_rad_s,
+    )
     for phase, eps in ((lower.phase_rad + math.pi, 0.0), (upper.phase_rad, math.radians(lead))):
         bore = engine.replace(
             throws=(balance.Throw(lower.phase_rad, 0.0), balance.Throw(phase, 0.0, 2)),
             cylinders=(balance.Cylinder(1, 1, 1, 0.0, m, opposed_throw=2),),
-            rotating_kg=0.0, firing_order=None, power_w=None, gas=None)
+            rotating_kg=0.0,
+            firing_order=None,
+            power_w=None,
+            gas=None,
+        )
         result = balance.analyse(bore)
         for k in range(1, 9):
             o = result.order(k)
-            expected = m * omega**2 * k**2 * abs(travel_harmonic(k, r, l)) * 2 * abs(math.sin(k * eps / 2))
-            assert_allclose(abs(o.force_forward) + abs(o.force_backward), expected, rtol=1e-9,
-                            atol=1e-9 * m * r * omega**2)
+            expected = (
+                m
+                * omega**2
+                * k**2
+                * abs(travel_harmonic(k, r, rod))
+                * 2
+                * abs(math.sin(k * eps / 2))
+            )
+            assert_allclose(
+                abs(o.force_forward) + abs(o.force_backward),
+                expected,
+                rtol=1e-9,
+                atol=1e-9 * m * r * omega**2,
+            )

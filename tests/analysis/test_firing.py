@@ -58,8 +58,12 @@ def test_two_stroke_fires_at_every_tdc_and_may_fire_two_together():
 
 def test_library_firing_figures():
     """Library engines: car in-line 4 every 180°, Part III W12 every 60°, in-line 12 every 60°."""
-    for name, interval in [("inline-4-car.toml", 180), ("inline-12.toml", 60),
-                           ("tanaka-part3/2a-w12-60.toml", 60), ("tanaka-part3/3-inline-6.toml", 120)]:
+    for name, interval in [
+        ("inline-4-car.toml", 180),
+        ("inline-12.toml", 60),
+        ("tanaka-part3/2a-w12-60.toml", 60),
+        ("tanaka-part3/3-inline-6.toml", 120),
+    ]:
         fire = firing(load(CONFIGS / name))
         assert fire.uniform, name
         assert_allclose(fire.intervals_deg, [interval] * len(fire.order), atol=1e-6)
@@ -74,10 +78,19 @@ def test_eighteen_cylinder_two_row_radial_fires_every_40_degrees():
     rear = [(20 + 40 * i, 1) for i in range(9)]
     banks = tuple(math.radians(a) for a, _ in front + rear)
     throws = (Throw(0.0, 0.0), Throw(math.pi, 0.15))
-    cylinders = tuple(Cylinder(i + 1, i + 1, t + 1, throws[t].z_m, 1.0)
-                      for i, (_, t) in enumerate(front + rear))
-    engine = Engine(name="two-row radial", cycle=4, speed_rad_s=200.0, crank_radius_m=0.08,
-                    rod_length_m=0.3, bank_angles_rad=banks, throws=throws, cylinders=cylinders)
+    cylinders = tuple(
+        Cylinder(i + 1, i + 1, t + 1, throws[t].z_m, 1.0) for i, (_, t) in enumerate(front + rear)
+    )
+    engine = Engine(
+        name="two-row radial",
+        cycle=4,
+        speed_rad_s=200.0,
+        crank_radius_m=0.08,
+        rod_length_m=0.3,
+        bank_angles_rad=banks,
+        throws=throws,
+        cylinders=cylinders,
+    )
     fire = firing(engine)
     assert fire.uniform
     assert_allclose(fire.intervals_deg, [40.0] * 18, atol=1e-6)

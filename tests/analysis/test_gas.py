@@ -16,9 +16,10 @@ from tests.support import CONFIGS, invoke, make_engine
 
 
 def engine_with_gas(throws, imep_bar=12.0, cycle=4):
-    engine = make_engine([0], throws, r=0.045, l=0.15, m=0.5, rpm=3000.0, cycle=cycle)
-    return dataclasses.replace(engine, gas=GasCycle(bore_m=0.086, compression_ratio=10.0,
-                                                    imep_pa=imep_bar * 1e5))
+    engine = make_engine([0], throws, r=0.045, rod=0.15, m=0.5, rpm=3000.0, cycle=cycle)
+    return dataclasses.replace(
+        engine, gas=GasCycle(bore_m=0.086, compression_ratio=10.0, imep_pa=imep_bar * 1e5)
+    )
 
 
 def test_gas_torque_of_an_even_inline_six_has_only_orders_of_three():
@@ -65,23 +66,26 @@ def test_a_pressure_curve_from_a_file_gives_the_parametric_torque(tmp_path):
 
     curve = cycle_pressure(engine.gas, travel(CYCLE_GRID_DEG), 720.0)
     angles = np.arange(0, 720, 0.25)
-    rows = ["angle_deg,pressure_bar"] + [f"{float(a)!r},{float(p) / 1e5!r}"
-                                         for a, p in zip(angles, curve.at(angles))]
+    rows = ["angle_deg,pressure_bar"] + [
+        f"{float(a)!r},{float(p) / 1e5!r}" for a, p in zip(angles, curve.at(angles), strict=True)
+    ]
     path = tmp_path / "p.csv"
     path.write_text("\n".join(rows) + "\n")
     pressure = read_pressure_csv(path, 720.0)
     plain = dataclasses.replace(engine, gas=dataclasses.replace(engine.gas))
     from_file = torque(plain, max_order=6, pressure=pressure)
     largest = max(math.hypot(c, s) for _, c, s in reference.gas.orders)
-    for (k, c1, s1), (_, c2, s2) in zip(reference.gas.orders, from_file.gas.orders):
+    for (k, c1, s1), (_, c2, s2) in zip(reference.gas.orders, from_file.gas.orders, strict=True):
         assert math.hypot(c1 - c2, s1 - s2) < 1e-3 * largest, k
 
 
 def test_an_isothermal_exponent_is_refused(tmp_path):
     text = (CONFIGS / "abc-dragonfly.toml").read_text(encoding="utf-8")
     path = tmp_path / "e.toml"
-    path.write_text(text.replace('imep = "9 bar"', 'imep = "9 bar"\npolytropic_exponent = 1.0'),
-                    encoding="utf-8")
+    path.write_text(
+        text.replace('imep = "9 bar"', 'imep = "9 bar"\npolytropic_exponent = 1.0'),
+        encoding="utf-8",
+    )
     with pytest.raises(balance.ConfigError, match="gas.polytropic_exponent"):
         balance.load(path)
 
@@ -101,11 +105,13 @@ def test_torque_checks_the_bore_as_the_command_does(bore):
 
     engine = balance.load(CONFIGS / "abc-dragonfly.toml")
     angles = np.arange(0.0, 720.0, 2.0)
-    curve = balance.PressureCurve(angles, 1e5 + 4e6 * np.exp(-((angles - 10) / 30) ** 2), 720.0)
-    if bore is None:   # the control: the [gas] bore, given explicitly, gives the [gas] torque
+    curve = balance.PressureCurve(angles, 1e5 + 4e6 * np.exp(-(((angles - 10) / 30) ** 2)), 720.0)
+    if bore is None:  # the control: the [gas] bore, given explicitly, gives the [gas] torque
         np.testing.assert_allclose(
             balance.torque(engine, pressure=curve, bore_m=0.1397, bearings=False).gas.mean,
-            balance.torque(engine, pressure=curve, bearings=False).gas.mean, rtol=1e-12)
+            balance.torque(engine, pressure=curve, bearings=False).gas.mean,
+            rtol=1e-12,
+        )
         return
     with pytest.raises(balance.BalanceError) as caught:
         balance.torque(engine, pressure=curve, bore_m=bore, bearings=False)
@@ -120,15 +126,17 @@ def test_a_sharp_pressure_curve_warns_that_the_gas_torque_is_not_converged(tmp_p
 
     import balance_cli as balance
 
-    text = ('name = "one"\ncycle = 4\nspeed = "3000 rpm"\ncrank_radius = "40 mm"\n'
-            'rod_length = "140 mm"\n[masses]\nreciprocating = "500 g"\n[gas]\nbore = "80 mm"\n'
-            'compression_ratio = 100\ncombustion_duration = 1\nimep = "10 bar"\n'
-            '[[banks]]\nangle = 0\n[[throws]]\nphase = 0\n')
+    text = (
+        'name = "one"\ncycle = 4\nspeed = "3000 rpm"\ncrank_radius = "40 mm"\n'
+        'rod_length = "140 mm"\n[masses]\nreciprocating = "500 g"\n[gas]\nbore = "80 mm"\n'
+        'compression_ratio = 100\ncombustion_duration = 1\nimep = "10 bar"\n'
+        "[[banks]]\nangle = 0\n[[throws]]\nphase = 0\n"
+    )
     engine = balance.loads(text, "one.toml")
     exact = 10e5 * math.pi / 4 * 0.08**2 * 0.08 / (4 * math.pi)
     with pytest.warns(balance.SamplingWarning, match="gas torque is not converged at 256"):
         coarse = balance.torque(engine, bearings=False)
-    assert abs(coarse.gas.mean / exact - 1) > 1e-2       # the aliasing warned about
+    assert abs(coarse.gas.mean / exact - 1) > 1e-2  # the aliasing warned about
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         fine = balance.torque(engine, samples=2048, bearings=False)

@@ -42,13 +42,17 @@ imep = "20 bar"
 
 
 def engine_text(phases, pitch_m=1.02, gas=True, cycle=2, offset="0 mm", firing=None):
-    text = HEAD.format(name=f"crosshead {len(phases)}", cycle=cycle, offset=offset,
-                       firing="" if firing is None else f"firing_order = {list(firing)}")
+    text = HEAD.format(
+        name=f"crosshead {len(phases)}",
+        cycle=cycle,
+        offset=offset,
+        firing="" if firing is None else f"firing_order = {list(firing)}",
+    )
     if gas:
         text += GAS
     text += "\n[[banks]]\nangle = 0\n"
     for j, phase in enumerate(phases):
-        text += f"\n[[throws]]\nphase = {phase}\nz = \"{j * pitch_m * 1000:g} mm\"\n"
+        text += f'\n[[throws]]\nphase = {phase}\nz = "{j * pitch_m * 1000:g} mm"\n'
     return text
 
 
@@ -68,7 +72,7 @@ def template_text(n, gas=False):
         text += GAS
     text += "\n[[banks]]\nangle = 0\n"
     for j in range(n):
-        text += f"\n[[throws]]\nz = \"{j * 1020}.0 mm\"\n"
+        text += f'\n[[throws]]\nz = "{j * 1020}.0 mm"\n'
     return text
 
 
@@ -99,21 +103,24 @@ def test_the_couple_is_the_lever_times_the_guide_force_without_offset():
     result = torque(engine, samples=256, max_order=16)
     own = result.guide.cylinders[0]
     theta = np.radians(own.force.theta_deg)
-    r, l = engine.crank_radius_m, engine.rod_length_m
-    s = r * np.cos(theta) + np.sqrt(l**2 - (r * np.sin(theta)) ** 2)
+    r, rod = engine.crank_radius_m, engine.rod_length_m
+    s = r * np.cos(theta) + np.sqrt(rod**2 - (r * np.sin(theta)) ** 2)
     peak = np.abs(own.couple.curve).max()
     np.testing.assert_allclose(own.couple.curve, s * own.force.curve, rtol=0, atol=1e-12 * peak)
 
 
-@pytest.mark.parametrize("path", ["marine-6-2stroke.toml", "inline-4-marine.toml",
-                                  "abc-dragonfly.toml", "bramo-323.toml"])
+@pytest.mark.parametrize(
+    "path",
+    ["marine-6-2stroke.toml", "inline-4-marine.toml", "abc-dragonfly.toml", "bramo-323.toml"],
+)
 def test_the_couples_add_up_to_the_frame_reaction(path):
     """A whole engine, link rods and gas included (the Dragonfly's [gas], the BRAMO's
     [parts]): Σ couples = frame reaction torque, to 1e-9 of its peak."""
     result = torque(balance.load(CONFIGS / path), samples=256, max_order=8)
     peak = np.abs(result.frame.curve).max()
-    np.testing.assert_allclose(result.guide.h_type.curve, result.frame.curve, rtol=0,
-                               atol=1e-9 * peak)
+    np.testing.assert_allclose(
+        result.guide.h_type.curve, result.frame.curve, rtol=0, atol=1e-9 * peak
+    )
 
 
 def test_a_rotary_has_no_guide_force_moments():
@@ -135,7 +142,7 @@ def test_regular_firing_h_type_is_n_times_one_cylinder(n, samples):
     for k in range(1, 2 * n + 1):
         if k % n == 0:
             assert abs(harmonic(h, k) - n * harmonic(one, k)) < 1e-9 * scale
-            assert abs(harmonic(one, k)) > 1e-3 * scale   # not a vacuous match
+            assert abs(harmonic(one, k)) > 1e-3 * scale  # not a vacuous match
         else:
             assert abs(harmonic(h, k)) < 1e-9 * scale
 
@@ -157,9 +164,16 @@ def test_x_type_of_a_mirror_symmetric_six_against_a_hand_bimoment():
     z = np.arange(6) * pitch
     for k in range(1, 13):
         c = harmonic(one, k)
-        expected = sum(c * cmath.exp(1j * k * math.radians(b)) * (zj - z.mean())
-                       for b, zj in zip(phases, z)) / lever
-        assert abs(harmonic(result.x_type, k) - expected) <= 1e-9 * abs(c) * pitch * 6 / lever + 1e-9
+        expected = (
+            sum(
+                c * cmath.exp(1j * k * math.radians(b)) * (zj - z.mean())
+                for b, zj in zip(phases, z, strict=True)
+            )
+            / lever
+        )
+        assert (
+            abs(harmonic(result.x_type, k) - expected) <= 1e-9 * abs(c) * pitch * 6 / lever + 1e-9
+        )
         if k % 6 == 0:
             assert abs(harmonic(result.x_type, k)) <= 1e-9 * abs(c) * pitch / lever + 1e-9
     c3 = harmonic(one, 3)
@@ -183,8 +197,9 @@ def test_the_json_keys():
     assert [c["cylinder"] for c in entry["cylinders"]] == [1, 2, 3, 4]
     assert {"max_force_N", "max_couple_Nm", "z_m"} <= set(entry["cylinders"][0])
     guide = result.guide.cylinders[0]
-    np.testing.assert_allclose(entry["cylinders"][0]["max_couple_Nm"], np.abs(guide.couple_curve).max(),
-                    rtol=1e-15)
+    np.testing.assert_allclose(
+        entry["cylinders"][0]["max_couple_Nm"], np.abs(guide.couple_curve).max(), rtol=1e-15
+    )
     assert "amplitude_N" in guide.force.to_dict()["orders"][0]
 
 
@@ -197,15 +212,27 @@ def test_the_search_finds_the_least_x_type_moment(tmp_path, n, objective):
     path = tmp_path / "t.toml"
     path.write_text(template_text(n))
     template = balance.load_template(path)
-    terms = [(int(t.split(":")[0][1:]), float(t.split(":")[1]) if ":" in t else 1.0)
-             for t in objective.split(",")]
+    terms = [
+        (int(t.split(":")[0][1:]), float(t.split(":")[1]) if ":" in t else 1.0)
+        for t in objective.split(",")
+    ]
 
     def score(phases):
-        return sum(w * abs(sum(cmath.exp(1j * k * math.radians(b)) * (j - (n + 1) / 2)
-                               for j, b in enumerate(phases))) for k, w in terms)
+        return sum(
+            w
+            * abs(
+                sum(
+                    cmath.exp(1j * k * math.radians(b)) * (j - (n + 1) / 2)
+                    for j, b in enumerate(phases)
+                )
+            )
+            for k, w in terms
+        )
 
-    best = min(score((0,) + tuple(360 * p / n for p in perm))
-               for perm in itertools.permutations(range(1, n)))
+    best = min(
+        score((0,) + tuple(360 * p / n for p in perm))
+        for perm in itertools.permutations(range(1, n))
+    )
     result = search(template, objective, top=3, workers=1, samples=256, max_order=8)
     assert result.exhaustive
     first = result.arrangements[0]
@@ -214,10 +241,14 @@ def test_the_search_finds_the_least_x_type_moment(tmp_path, n, objective):
     # the listed coefficient comes from the arrangement's own torques
     k = terms[-1][0]
     guide = torque(first.engine, samples=256, max_order=8).guide
-    one = abs(harmonic(torque(crosshead([0], gas=False), samples=256, max_order=8)
-                       .guide.cylinders[0].couple, k))
+    one = abs(
+        harmonic(
+            torque(crosshead([0], gas=False), samples=256, max_order=8).guide.cylinders[0].couple, k
+        )
+    )
     assert first.coefficients[f"X{k}"] == pytest.approx(
-        abs(harmonic(guide.x_type, k)) * guide.lever_m / (one * 1.02), abs=1e-9)
+        abs(harmonic(guide.x_type, k)) * guide.lever_m / (one * 1.02), abs=1e-9
+    )
 
 
 def test_the_search_with_gas_agrees_with_the_arrangements_own_torques(tmp_path):
@@ -234,9 +265,14 @@ def test_the_search_with_gas_agrees_with_the_arrangements_own_torques(tmp_path):
         assert values["H6"] == pytest.approx(6.0, abs=1e-9)
 
 
-@pytest.mark.parametrize("objective,message", [
-    ("H4+", "no forward or backward part"), ("X1.5", "whole orders only"),
-    ("H0.5:2", "whole orders only")])
+@pytest.mark.parametrize(
+    "objective,message",
+    [
+        ("H4+", "no forward or backward part"),
+        ("X1.5", "whole orders only"),
+        ("H0.5:2", "whole orders only"),
+    ],
+)
 def test_guide_terms_refused(objective, message):
     template = balance.load_template(CONFIGS.parent / "templates" / "inline-6-4stroke.toml")
     with pytest.raises(AnalysisError, match=message) as caught:
@@ -258,8 +294,7 @@ def test_a_cancelled_throw_couple_is_no_unit():
     """The two cylinders of a 90° V throw cancel each other's order-2 couple to rounding: that
     order has no unit (H2 = X2 = 0), and the rounding must not weigh in the score. Once it did
     (a unit of 1e-10 N·m), and the listed scores came out of order (3.46 above 3.0)."""
-    template = balance.load_template(CONFIGS.parent / "templates" /
-                                     "nakanishi-v12-90-2stroke.toml")
+    template = balance.load_template(CONFIGS.parent / "templates" / "nakanishi-v12-90-2stroke.toml")
     result = search(template, "F1,F2,H2,X1,X2", top=6, workers=1)
     scores = [a.score for a in result.arrangements]
     assert scores == sorted(scores)
@@ -273,12 +308,16 @@ def test_guide_force_moments_take_each_cylinders_own_offset():
     bank's, each cylinder's) is one engine: the guide-force moments, which carry the offset
     times the gas force, agree exactly (they differed by 20 % when only the top-level key was
     read)."""
+
     def four(top="", bank="", cylinder=""):
-        cylinders = "\n".join(f"[[cylinders]]\nnumber = {i}\nbank = 1\nthrow = {i}\n{cylinder}"
-                              for i in range(1, 5))
-        throws = "\n".join(f'[[throws]]\nphase = {p}\nz = "{i * 100} mm"'
-                           for i, p in enumerate((0, 180, 180, 0)))
-        return balance.loads(textwrap.dedent(f"""
+        cylinders = "\n".join(
+            f"[[cylinders]]\nnumber = {i}\nbank = 1\nthrow = {i}\n{cylinder}" for i in range(1, 5)
+        )
+        throws = "\n".join(
+            f'[[throws]]\nphase = {p}\nz = "{i * 100} mm"' for i, p in enumerate((0, 180, 180, 0))
+        )
+        return balance.loads(
+            textwrap.dedent(f"""
             name = "four"
             cycle = 4
             speed = "3000 rpm"
@@ -295,10 +334,21 @@ def test_guide_force_moments_take_each_cylinders_own_offset():
             [[banks]]
             angle = 0
             {bank}
-            """) + throws + "\n" + cylinders + "\n")
-    results = [balance.torque(e).guide for e in (four(top='pin_offset = "5 mm"'),
-                                                  four(bank='pin_offset = "5 mm"'),
-                                                  four(cylinder='pin_offset = "5 mm"'))]
+            """)
+            + throws
+            + "\n"
+            + cylinders
+            + "\n"
+        )
+
+    results = [
+        balance.torque(e).guide
+        for e in (
+            four(top='pin_offset = "5 mm"'),
+            four(bank='pin_offset = "5 mm"'),
+            four(cylinder='pin_offset = "5 mm"'),
+        )
+    ]
     for other in results[1:]:
         assert_allclose(other.x_type.curve, results[0].x_type.curve, rtol=0, atol=1e-9)
         assert_allclose(other.h_type.curve, results[0].h_type.curve, rtol=0, atol=1e-9)

@@ -45,7 +45,9 @@ def test_marine_six_pru_of_its_second_order_couple():
     assert 120 < second["vertical_Nm_per_kW"] < 220 and second["vertical_class"] == "likely"
     assert second["horizontal_Nm"] == 0.0 and second["horizontal_class"] == "not relevant"
     # the first order of this firing order is zero, with and without counterweights
-    assert pru["orders"][0]["vertical_Nm"] == 0.0 and pru["first_order_balanced"]["vertical_Nm"] == 0.0
+    assert (
+        pru["orders"][0]["vertical_Nm"] == 0.0 and pru["first_order_balanced"]["vertical_Nm"] == 0.0
+    )
 
 
 def test_twin_first_order_as_built_and_with_its_rotating_masses_balanced():
@@ -55,11 +57,12 @@ def test_twin_first_order_as_built_and_with_its_rotating_masses_balanced():
     rotating masses balanced M1V = m·r·ω²·d, M1H = 0. PRU divides by the power: 50 kW."""
     text = TWIN.replace('reciprocating = "500 g"', 'reciprocating = "500 g"\nrotating = "300 g"')
     engine = balance.loads('power = "50 kW"\n' + text)
-    unit = 0.040 * (3000 * math.pi / 30) ** 2 * 0.090      # r·ω²·d
+    unit = 0.040 * (3000 * math.pi / 30) ** 2 * 0.090  # r·ω²·d
     pru = balance.analyse(engine).to_dict()["pru"]
     built, balanced = pru["orders"][0], pru["first_order_balanced"]
-    assert_allclose([built["vertical_Nm"], built["horizontal_Nm"]], [0.8 * unit, 0.3 * unit],
-                    rtol=1e-9)
+    assert_allclose(
+        [built["vertical_Nm"], built["horizontal_Nm"]], [0.8 * unit, 0.3 * unit], rtol=1e-9
+    )
     assert_allclose(balanced["vertical_Nm"], 0.5 * unit, rtol=1e-9)
     assert balanced["horizontal_Nm"] == 0.0
     assert_allclose(built["vertical_Nm_per_kW"], 0.8 * unit / 50.0, rtol=1e-9)
@@ -85,8 +88,11 @@ def test_a_power_given_at_another_speed_is_not_used_unless_given_again():
     assert record["pru"] is None and "105 rpm" in record["pru_note"]
     text = invoke("compare", MARINE, "--speed", "90 rpm").output
     assert "Not computed: the power is given at 105 rpm" in text
-    given = json.loads(invoke("compare", MARINE, "--speed", "90 rpm", "--power", "12000 kW",
-                           "--format", "json").output)["engines"][0]
+    given = json.loads(
+        invoke(
+            "compare", MARINE, "--speed", "90 rpm", "--power", "12000 kW", "--format", "json"
+        ).output
+    )["engines"][0]
     assert given["pru"]["power_source"] == "given" and given["power_kW"] == 12000.0
     # the moment follows n²: (90/105)² of the file speed's
     fast = balance.analyse(balance.load(MARINE)).to_dict()["pru"]["orders"][1]["vertical_Nm"]
@@ -95,10 +101,20 @@ def test_a_power_given_at_another_speed_is_not_used_unless_given_again():
 
 def test_classes_by_default_and_set():
     assert [pru_class(v) for v in (0, 59.9, 60, 119, 120, 219.9, 220, 1e6)] == [
-        "not relevant", "not relevant", "unlikely", "unlikely", "likely", "likely",
-        "most likely", "most likely"]
-    assert DEFAULT_PRU_CLASSES[:3] == ((60.0, "not relevant"), (120.0, "unlikely"),
-                                      (220.0, "likely"))
+        "not relevant",
+        "not relevant",
+        "unlikely",
+        "unlikely",
+        "likely",
+        "likely",
+        "most likely",
+        "most likely",
+    ]
+    assert DEFAULT_PRU_CLASSES[:3] == (
+        (60.0, "not relevant"),
+        (120.0, "unlikely"),
+        (220.0, "likely"),
+    )
     classes = check_classes((50, 100, 150))
     assert pru_class(124.4, classes) == "likely"
     for bad in ((100, 50, 200), (60, 120), (0, 1, 2), ("x", 1, 2), (math.nan, 1, 2)):
@@ -111,8 +127,9 @@ def test_classes_by_default_and_set():
 
 
 def test_pru_orders_and_errors():
-    record = json.loads(invoke("compare", MARINE, "--pru-orders", "2,4", "--format",
-                            "json").output)["engines"][0]
+    record = json.loads(
+        invoke("compare", MARINE, "--pru-orders", "2,4", "--format", "json").output
+    )["engines"][0]
     assert [e["order"] for e in record["pru"]["orders"]] == [2, 4]
     for bad in ("0", "9", "x"):
         out = invoke("compare", MARINE, "--pru-orders", bad)
@@ -127,8 +144,11 @@ def test_pru_orders_and_errors():
 def test_no_power_no_table_and_a_rotary_has_no_balanced_first_order():
     out = invoke("compare", CONFIGS / "inline-4-car.toml")
     assert "Power related unbalance" not in out.output
-    record = json.loads(invoke("compare", CONFIGS / "clerget-rotary.toml", "--power", "97 kW",
-                            "--format", "json").output)["engines"][0]
+    record = json.loads(
+        invoke(
+            "compare", CONFIGS / "clerget-rotary.toml", "--power", "97 kW", "--format", "json"
+        ).output
+    )["engines"][0]
     assert record["pru"]["first_order_balanced"] is None
 
 
@@ -140,8 +160,9 @@ def test_milliwatts_and_megawatts_are_not_guessed():
 
 
 def test_an_order_asked_twice_is_judged_once():
-    record = json.loads(invoke("compare", MARINE, "--pru-orders", "2,2", "--format",
-                            "json").output)["engines"][0]
+    record = json.loads(
+        invoke("compare", MARINE, "--pru-orders", "2,2", "--format", "json").output
+    )["engines"][0]
     assert [e["order"] for e in record["pru"]["orders"]] == [2]
 
 
@@ -150,7 +171,7 @@ def test_a_sweep_of_power_gives_the_pru_by_hand():
     without a PRU quantity is refused; a sweep of speed does not carry the file's power to
     other speeds."""
     swept = balance.sweep(str(MARINE), "power", ["10 MW", "20 MW"], quantities="M2V,PRU2V")
-    for point, kw in zip(swept.points, (1e4, 2e4)):
+    for point, kw in zip(swept.points, (1e4, 2e4), strict=True):
         assert_allclose(point["PRU2V_Nm_per_kW"], point["M2V_Nm"] / kw, rtol=1e-12)
     with pytest.raises(balance.SweepError, match="PRU"):
         balance.sweep(str(MARINE), "power", ["10 MW", "20 MW"], quantities="M2V")
@@ -164,15 +185,24 @@ def test_torque_gives_the_indicated_power_of_a_pressure_file_or_gas_cycle(tmp_pa
     is converged to about 5e-5)."""
     engine = balance.load(CONFIGS / "abc-dragonfly.toml")
     torques = balance.torque(engine)
-    assert_allclose(torques.indicated_power_kw, torques.gas.mean * engine.speed_rad_s / 1e3,
-                    rtol=1e-15)
+    assert_allclose(
+        torques.indicated_power_kw, torques.gas.mean * engine.speed_rad_s / 1e3, rtol=1e-15
+    )
     compared = balance.analyse(engine).to_dict()["power_kW"]
     assert_allclose(torques.indicated_power_kw, compared, rtol=1e-4)
-    document = json.loads(invoke("torque", CONFIGS / "abc-dragonfly.toml", "--format",
-                                 "json").output)
-    assert_allclose(document["engines"][0]["indicated_power_kW"], torques.indicated_power_kw,
-                    rtol=1e-12)
-    assert "Indicated power (mean gas torque × ω): 282.1 kW." in invoke(
-        "torque", CONFIGS / "abc-dragonfly.toml").output
-    assert json.loads(invoke("torque", CONFIGS / "inline-4-car.toml", "--format",
-                          "json").output)["engines"][0]["indicated_power_kW"] is None
+    document = json.loads(
+        invoke("torque", CONFIGS / "abc-dragonfly.toml", "--format", "json").output
+    )
+    assert_allclose(
+        document["engines"][0]["indicated_power_kW"], torques.indicated_power_kw, rtol=1e-12
+    )
+    assert (
+        "Indicated power (mean gas torque × ω): 282.1 kW."
+        in invoke("torque", CONFIGS / "abc-dragonfly.toml").output
+    )
+    assert (
+        json.loads(invoke("torque", CONFIGS / "inline-4-car.toml", "--format", "json").output)[
+            "engines"
+        ][0]["indicated_power_kW"]
+        is None
+    )

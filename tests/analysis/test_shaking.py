@@ -41,7 +41,7 @@ def _richardson_second_derivative(f, x, h, levels):
 def single_cylinder_harmonics(q, max_order):
     """B_k of one plain slider-crank (checked against the series in
     test_harmonics_match_the_series_to_its_truncation_error)."""
-    engine = make_engine([0], [(0, 0.0)], r=0.08, l=0.08 / q)
+    engine = make_engine([0], [(0, 0.0)], r=0.08, rod=0.08 / q)
     result = shaking(engine, samples=256, max_order=max_order)
     return {o.order: 2 * o.force_forward.real / engine.unit_force_n for o in result.orders}
 
@@ -55,7 +55,7 @@ def test_harmonics_match_the_series_to_its_truncation_error(q):
     m·r·ω². The rod's correction √(l² − r² sin²θ) is even, so odd orders above the first
     are exactly zero.
     """
-    engine = make_engine([0], [(0, 0.0)], r=0.08, l=0.08 / q)
+    engine = make_engine([0], [(0, 0.0)], r=0.08, rod=0.08 / q)
     result = shaking(engine, samples=256, max_order=8)
     unit = engine.unit_force_n
     expected = series(q)
@@ -70,12 +70,13 @@ def test_harmonics_match_second_differences_of_the_exact_positions():
     """The time signal rebuilt from the orders equals −m·ẍ by Richardson-extrapolated
     central differences of the exact linkage (h = 0.02 rad, four levels: truncation far
     below 1e-10, rounding about 1e-12 of m·r·ω²)."""
-    engine = make_engine([30], [(0, 0.0)], r=0.08, l=0.26, pin_offset=0.01)
+    engine = make_engine([30], [(0, 0.0)], r=0.08, rod=0.26, pin_offset=0.01)
     samples = 128
     result = shaking(engine, samples=samples, max_order=20)
     angles = 2 * np.pi * np.arange(samples) / samples
-    acceleration = _richardson_second_derivative(lambda a: linkage_state(engine, a).masses.positions[0],
-                                                 angles, 0.02, 4)
+    acceleration = _richardson_second_derivative(
+        lambda a: linkage_state(engine, a).masses.positions[0], angles, 0.02, 4
+    )
     direct = -engine.cylinders[0].reciprocating_kg * acceleration * engine.speed_rad_s**2
     from_orders = result.force()
     assert_allclose(from_orders / engine.unit_force_n, direct / engine.unit_force_n, atol=1e-9)
@@ -89,7 +90,7 @@ def test_orders_survive_only_next_to_multiples_of_n(n):
     q = 0.3
     max_order = 2 * n + 2
     b = single_cylinder_harmonics(q, max_order)
-    engine = make_engine([360 * i / n for i in range(n)], [(0, 0.0)], r=0.08, l=0.08 / q)
+    engine = make_engine([360 * i / n for i in range(n)], [(0, 0.0)], r=0.08, rod=0.08 / q)
     result = shaking(engine, samples=256, max_order=max_order)
     unit = engine.unit_force_n
     for order in result.orders:
@@ -112,7 +113,7 @@ def test_radial_primary_turns_forward_with_the_crank_at_half_n():
 def test_three_cylinder_radial_secondary_turns_backward():
     """n = 3: k = 2 ≡ −1 (mod 3), so 1.5·B2·m·r·ω² backward (B2 ≈ λ for small λ)."""
     q = 0.25
-    engine = make_engine([0, 120, 240], [(0, 0.0)], r=0.08, l=0.08 / q)
+    engine = make_engine([0, 120, 240], [(0, 0.0)], r=0.08, rod=0.08 / q)
     second = shaking(engine).orders[1]
     b2 = q + q**3 / 4 + 15 * q**5 / 128
     # first omitted term of B2: 35q⁷/512, relative below q⁶/10
@@ -121,18 +122,22 @@ def test_three_cylinder_radial_secondary_turns_backward():
     assert math.isclose(b2, q, rel_tol=0.02)
 
 
-@pytest.mark.parametrize("config", ["tanaka-part3/5a-radial-9.toml", "bramo-323.toml",
-                                    "inline-4-car.toml", "clerget-rotary.toml"])
+@pytest.mark.parametrize(
+    "config",
+    ["tanaka-part3/5a-radial-9.toml", "bramo-323.toml", "inline-4-car.toml", "clerget-rotary.toml"],
+)
 def test_odd_and_even_samples_give_the_same_orders(config):
     engine = balance.load(CONFIGS / config)
     reference = balance.analyse(engine, samples=256, max_order=8)
     unit = engine.per_cylinder_unit_n
     for samples in (101, 255, 1001, 1024):
         result = balance.analyse(engine, samples=samples, max_order=8)
-        for ours, theirs in zip(result.shaking.orders, reference.shaking.orders):
-            for a, b in ((ours.force_forward, theirs.force_forward),
-                         (ours.force_backward, theirs.force_backward),
-                         (ours.moment_forward, theirs.moment_forward)):
+        for ours, theirs in zip(result.shaking.orders, reference.shaking.orders, strict=True):
+            for a, b in (
+                (ours.force_forward, theirs.force_forward),
+                (ours.force_backward, theirs.force_backward),
+                (ours.moment_forward, theirs.moment_forward),
+            ):
                 assert abs(a - b) < 1e-10 * unit, (samples, ours.order)
         # the resultant's largest magnitude comes from the padded synthesis, odd or even
         assert_allclose(result.largest_force_n, reference.largest_force_n, rtol=1e-7)

@@ -25,17 +25,27 @@ def random_engine(seed, frame="fixed"):
     n_banks = int(rng.integers(1, 4))
     n_throws = int(rng.integers(1, 5))
     r = rng.uniform(0.03, 0.1)
-    l = r * rng.uniform(3.0, 5.0)
+    rod = r * rng.uniform(3.0, 5.0)
     links = None
     if n_banks > 1 and rng.random() < 0.6:
         # a link rod a bit shorter than the master rod, pinned well inside the big end
-        links = (int(rng.integers(0, n_banks)), l - rng.uniform(0.5, 0.9) * r,
-                 rng.uniform(0.5, 0.9) * r, rng.uniform(0.0, 0.5))
+        links = (
+            int(rng.integers(0, n_banks)),
+            rod - rng.uniform(0.5, 0.9) * r,
+            rng.uniform(0.5, 0.9) * r,
+            rng.uniform(0.0, 0.5),
+        )
     engine = make_engine(
         sorted(rng.uniform(-180, 180, n_banks)),
         [(rng.uniform(0, 360), rng.uniform(-0.3, 0.3)) for _ in range(n_throws)],
-        r=r, l=l, m=rng.uniform(0.5, 3.0), rpm=rng.uniform(500, 5000), frame=frame,
-        rotating=rng.uniform(0.0, 2.0), pin_offset=rng.uniform(-0.1, 0.1) * r, links=links,
+        r=r,
+        rod=rod,
+        m=rng.uniform(0.5, 3.0),
+        rpm=rng.uniform(500, 5000),
+        frame=frame,
+        rotating=rng.uniform(0.0, 2.0),
+        pin_offset=rng.uniform(-0.1, 0.1) * r,
+        links=links,
     )
     check_assembly(engine)
     return engine
@@ -56,7 +66,7 @@ def test_mirror_symmetric_crankshaft_has_no_free_moments(seed):
     throws = half + [(phase, -z) for phase, z in reversed(half)]
     banks = sorted(rng.uniform(-90, 90, int(rng.integers(1, 3))))
     links = (0, 0.22, 0.05, 0.4) if len(banks) > 1 else None
-    engine = make_engine(banks, throws, r=0.08, l=0.28, rotating=1.2, links=links)
+    engine = make_engine(banks, throws, r=0.08, rod=0.28, rotating=1.2, links=links)
     result = shaking(engine, SAMPLES, MAX_ORDER)
     tol = 1e-10 * scale(engine)
     for order in result.orders:
@@ -76,13 +86,19 @@ def test_time_domain_resultant_equals_the_sum_of_its_orders(engine):
         return masses.masses_kg @ masses.positions
 
     h, levels = 0.02, 4
-    table = [(weighted(angles + h / 2**i) - 2 * weighted(angles) + weighted(angles - h / 2**i))
-             / (h / 2**i) ** 2 for i in range(levels)]
+    table = [
+        (weighted(angles + h / 2**i) - 2 * weighted(angles) + weighted(angles - h / 2**i))
+        / (h / 2**i) ** 2
+        for i in range(levels)
+    ]
     for j in range(1, levels):
         table = [(4**j * table[i + 1] - table[i]) / (4**j - 1) for i in range(len(table) - 1)]
     direct = -table[0] * engine.speed_rad_s**2
-    summed = sum(o.force_forward * np.exp(1j * o.order * angles)
-                 + o.force_backward * np.exp(-1j * o.order * angles) for o in result.orders)
+    summed = sum(
+        o.force_forward * np.exp(1j * o.order * angles)
+        + o.force_backward * np.exp(-1j * o.order * angles)
+        for o in result.orders
+    )
     assert_allclose(summed / scale(engine), direct / scale(engine), atol=1e-9)
 
 

@@ -68,18 +68,26 @@ def test_flywheel_for_a_target():
     assert_allclose(inertia, 50 * 2 * 120.0 / (OMEGA**2 * 4), rtol=0.01)
 
 
-@pytest.mark.parametrize("kwargs, words", [
-    (dict(inertia_kgm2=0.0), "inertia_kgm2 must be a number greater than zero"),
-    (dict(inertia_kgm2=math.inf), "inertia_kgm2 is invalid"),
-    (dict(speed_rad_s=-3.0), "speed_rad_s must be a number greater than zero"),
-    (dict(load="brake"), "load must be one of propeller, constant"),
-    (dict(torque_nm=[1.0, 2.0]), "torque_nm must be at least 8 finite values"),
-    (dict(torque_nm=-sinusoid()), "torque_nm has a mean of -80 N·m: a propeller absorbs"),
-    (dict(inertia_kgm2=1e-9), "inertia_kgm2 is too small for this torque"),
-])
+@pytest.mark.parametrize(
+    "kwargs, words",
+    [
+        (dict(inertia_kgm2=0.0), "inertia_kgm2 must be a number greater than zero"),
+        (dict(inertia_kgm2=math.inf), "inertia_kgm2 is invalid"),
+        (dict(speed_rad_s=-3.0), "speed_rad_s must be a number greater than zero"),
+        (dict(load="brake"), "load must be one of propeller, constant"),
+        (dict(torque_nm=[1.0, 2.0]), "torque_nm must be at least 8 finite values"),
+        (dict(torque_nm=-sinusoid()), "torque_nm has a mean of -80 N·m: a propeller absorbs"),
+        (dict(inertia_kgm2=1e-9), "inertia_kgm2 is too small for this torque"),
+    ],
+)
 def test_steadiness_refuses_what_cannot_be(kwargs, words):
-    arguments = dict(torque_nm=sinusoid(), period_deg=720.0, inertia_kgm2=0.3, speed_rad_s=OMEGA,
-                     load="propeller")
+    arguments = dict(
+        torque_nm=sinusoid(),
+        period_deg=720.0,
+        inertia_kgm2=0.3,
+        speed_rad_s=OMEGA,
+        load="propeller",
+    )
     arguments.update(kwargs)
     with pytest.raises(AnalysisError, match=words):
         steadiness(**arguments)
@@ -131,5 +139,6 @@ def test_a_target_just_above_one_half_gives_the_least_steadiness():
     least = float(re.search(r"\(about ([0-9.e+-]+),", str(caught.value)).group(1))
     assert 0.5 < least < 5
     inertia = flywheel_for(least * 1.01, torque, 720.0, omega)
-    np.testing.assert_allclose(steadiness(torque, 720.0, inertia, omega).factor, least * 1.01,
-                               rtol=1e-3)
+    np.testing.assert_allclose(
+        steadiness(torque, 720.0, inertia, omega).factor, least * 1.01, rtol=1e-3
+    )

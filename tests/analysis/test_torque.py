@@ -13,8 +13,8 @@ from tests.support import CONFIGS, make_engine
 from tests.validation.reference import fraeys_newton_euler
 
 
-def single(r=0.05, l=0.2, m=1.0, rpm=3000.0, **extra):
-    return make_engine([0], [(0, 0.0)], r=r, l=l, m=m, rpm=rpm, cycle=2, **extra)
+def single(r=0.05, rod=0.2, m=1.0, rpm=3000.0, **extra):
+    return make_engine([0], [(0, 0.0)], r=r, rod=rod, m=m, rpm=rpm, cycle=2, **extra)
 
 
 def test_single_cylinder_inertia_torque_by_a_second_method():
@@ -24,11 +24,11 @@ def test_single_cylinder_inertia_torque_by_a_second_method():
     kinematics: agreement to 1e-10 of m·r²·ω² (the spectral derivative's rounding, about 1e-13
     of the positions, grows with the square of the highest orders), and μ = m·x'² to 1e-12
     of m·r²."""
-    r, l, m, rpm = 0.05, 0.2, 1.3, 2500.0
-    engine = single(r, l, m, rpm)
+    r, rod, m, rpm = 0.05, 0.2, 1.3, 2500.0
+    engine = single(r, rod, m, rpm)
     result = torque(engine, samples=256, max_order=20)
     omega = rpm * math.pi / 30
-    q = r / l
+    q = r / rod
     theta = np.radians(result.inertia.theta_deg)
     s, c = np.sin(theta), np.cos(theta)
     d = np.sqrt(1 - q**2 * s**2)
@@ -45,9 +45,9 @@ def test_single_cylinder_inertia_torque_against_the_classic_series(lam):
     first term of its series in λ; the next terms are of relative order λ² (sin θ, sin 3θ), λ
     (sin 2θ: −½ − λ²/32…) and λ² (sin 4θ), bounded here by 2·λ² of the coefficient."""
     r = 0.05
-    result = torque(single(r=r, l=r / lam), max_order=4)
+    result = torque(single(r=r, rod=r / lam), max_order=4)
     unit = r**2 * (3000 * math.pi / 30) ** 2
-    for k, expected in ((1, lam / 4), (2, -0.5), (3, -3 * lam / 4), (4, -lam**2 / 4)):
+    for k, expected in ((1, lam / 4), (2, -0.5), (3, -3 * lam / 4), (4, -(lam**2) / 4)):
         cos, sin = result.inertia.order(k)
         assert abs(cos) < 1e-12 * unit
         assert abs(sin / unit - expected) <= 2 * lam**2 * abs(expected)
@@ -57,7 +57,9 @@ def test_single_cylinder_inertia_torque_against_the_classic_series(lam):
 def test_a_centred_piston_has_no_tilting_and_the_frame_takes_the_reverse_torque():
     result = torque(single(), max_order=8)
     assert result.tilting.range == 0.0
-    assert_allclose(result.frame.curve, -result.total.curve, atol=1e-9 * np.abs(result.total.curve).max())
+    assert_allclose(
+        result.frame.curve, -result.total.curve, atol=1e-9 * np.abs(result.total.curve).max()
+    )
 
 
 @pytest.mark.parametrize("config", sorted(p.relative_to(CONFIGS) for p in CONFIGS.rglob("*.toml")))
@@ -80,7 +82,7 @@ def test_the_tangential_pin_forces_give_the_torque(config):
 def test_a_radial_with_plain_rods_has_only_orders_of_n(n):
     """Σ over n cylinders at 360°/n of one cylinder's μ(θ − ψ_i) keeps only orders that are
     multiples of n (Margoulis § 2; Tanaka Part I § 6, "balanced out if single obliquity")."""
-    engine = make_engine([360 * i / n for i in range(n)], [(0, 0.0)], r=0.05, l=0.2)
+    engine = make_engine([360 * i / n for i in range(n)], [(0, 0.0)], r=0.05, rod=0.2)
     result = torque(engine, max_order=2 * n)
     unit = engine.per_cylinder_unit_n * engine.crank_radius_m
     for k, cos, sin in result.inertia.orders:
@@ -89,7 +91,7 @@ def test_a_radial_with_plain_rods_has_only_orders_of_n(n):
     mu = result.reduced_mass.curve_kgm2
     c = np.abs(np.fft.rfft(mu)) / len(mu)
     assert all(c[k] < 1e-13 * mu.mean() for k in range(1, n))
-    assert c[n] > 1e-10 * mu.mean()   # of order λ^(n−1): small, but there
+    assert c[n] > 1e-10 * mu.mean()  # of order λ^(n−1): small, but there
 
 
 @pytest.mark.parametrize("cylinders", [4, 5, 6, 7, 8, 9])
@@ -98,13 +100,13 @@ def test_margoulis_reduced_mass_of_evenly_firing_four_strokes(cylinders):
     μ has every order; the N together keep order k only when 2k/N is whole. So μ is constant
     up to his fourth series for odd N > 3 and even N > 6, and varies for N = 4 and 6."""
     phases = [(720 * j / cylinders) % 360 for j in range(cylinders)]
-    engine = make_engine([0], [(p, 0.1 * j) for j, p in enumerate(phases)], r=0.05, l=0.25)
+    engine = make_engine([0], [(p, 0.1 * j) for j, p in enumerate(phases)], r=0.05, rod=0.25)
     mu = torque(engine, max_order=8).reduced_mass.curve_kgm2
     c = np.abs(np.fft.rfft(mu)) / len(mu)
     for k in range(1, 9):
         if (2 * k) % cylinders:
             assert c[k] < 1e-13 * mu.mean(), k
-        elif k <= 4:   # Margoulis's four series; beyond them the terms are of order λ^k
+        elif k <= 4:  # Margoulis's four series; beyond them the terms are of order λ^k
             assert c[k] > 1e-6 * mu.mean(), k
     varies_below_fourth = any(c[k] > 1e-6 * mu.mean() for k in (1, 2, 3))
     assert varies_below_fourth == (cylinders in (4, 6))
@@ -135,10 +137,13 @@ def test_bramo_against_newton_euler():
         assert abs(ours / (r * w**2) - expected) < 1e-9 * 32, k
 
 
-@pytest.mark.parametrize("old, new, key", [
-    ('link_cg = "138.5 mm"                # h, from the knuckle pin\n', "", "parts.link_cg"),
-    ('link_inertia = "0.0141264 kg*m^2"   # j\n', "", "parts.link_inertia"),
-])
+@pytest.mark.parametrize(
+    "old, new, key",
+    [
+        ('link_cg = "138.5 mm"                # h, from the knuckle pin\n', "", "parts.link_cg"),
+        ('link_inertia = "0.0141264 kg*m^2"   # j\n', "", "parts.link_inertia"),
+    ],
+)
 def test_link_rods_need_all_their_part_data(tmp_path, old, new, key):
     """A link rod's centre of gravity or inertia left out would silently be zero (15 % off μ)."""
     text = (CONFIGS / "bramo-323.toml").read_text(encoding="utf-8")

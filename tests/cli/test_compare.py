@@ -20,7 +20,11 @@ from tests.support import (
 
 def test_unknown_reference_lists_the_engines():
     result = invoke("compare", PART3, "--reference", "Zeppelin")
-    assert result.exit_code != 0 and "matches no engine" in result.output and "60° W12" in result.output
+    assert (
+        result.exit_code != 0
+        and "matches no engine" in result.output
+        and "60° W12" in result.output
+    )
 
 
 def test_compare_json_contract(tmp_path):
@@ -32,22 +36,47 @@ def test_compare_json_contract(tmp_path):
     engines = document["engines"]
     assert len(engines) == 9
     v8 = engines[0]
-    for key in ("name", "config", "cylinders", "cycle", "frame", "speed_rpm", "unit_force_N",
-                "firing", "orders", "percent_of_reference"):
+    for key in (
+        "name",
+        "config",
+        "cylinders",
+        "cycle",
+        "frame",
+        "speed_rpm",
+        "unit_force_N",
+        "firing",
+        "orders",
+        "percent_of_reference",
+    ):
         assert key in v8
     assert set(v8["firing"]) >= {"order", "angles_deg", "intervals_deg", "uniform"}
     assert [o["order"] for o in v8["orders"]] == [1, 2, 3, 4, 5, 6]
-    assert set(v8["orders"][0]["force"]) >= {"forward_N", "forward_deg", "backward_N",
-                                            "backward_deg", "max_N", "min_N"}
-    assert set(v8["orders"][0]["moment"]) >= {"forward_Nm", "forward_deg", "backward_Nm",
-                                             "backward_deg", "max_Nm", "min_Nm"}
+    assert set(v8["orders"][0]["force"]) >= {
+        "forward_N",
+        "forward_deg",
+        "backward_N",
+        "backward_deg",
+        "max_N",
+        "min_N",
+    }
+    assert set(v8["orders"][0]["moment"]) >= {
+        "forward_Nm",
+        "forward_deg",
+        "backward_Nm",
+        "backward_deg",
+        "max_Nm",
+        "min_Nm",
+    }
     assert v8["orders"][0]["force"]["max_N"] == 0.0  # zero orders are listed, as exact zeros
     second = v8["orders"][1]["force"]["max_N"] / v8["unit_force_N"] / v8["cylinders"]
     assert abs(second - 0.215) < 0.0005
     assert v8["speed_rpm"] == pytest.approx(1250.0, rel=1e-12)
     assert v8["firing"]["intervals_deg"] == pytest.approx([90.0] * 8, abs=1e-6)
-    assert [round(e["percent_of_reference"]) for e in engines if e["name"] in
-            ("60° W12", "9-cylinder rotary")] == [71, 16]
+    assert [
+        round(e["percent_of_reference"])
+        for e in engines
+        if e["name"] in ("60° W12", "9-cylinder rotary")
+    ] == [71, 16]
 
 
 def test_compare_table_markdown_csv():
@@ -74,19 +103,30 @@ def test_reference_by_prefix_changes_the_percentages():
 def test_ambiguous_reference_lists_only_the_matches(tmp_path):
     for name in ("Alpha one", "Alpha two", "Beta"):
         (tmp_path / f"{name.replace(' ', '_')}.toml").write_text(
-            replaced('"test twin"', f'"{name}"'), encoding="utf-8")
+            replaced('"test twin"', f'"{name}"'), encoding="utf-8"
+        )
     before = snapshot(tmp_path)
     result = invoke("compare", tmp_path, "--reference", "alpha", "-o", tmp_path / "o.txt")
-    check_refused(result, 1, "--reference 'alpha' matches several engines: Alpha one; Alpha two;",
-                  before, tmp_path)
+    check_refused(
+        result,
+        1,
+        "--reference 'alpha' matches several engines: Alpha one; Alpha two;",
+        before,
+        tmp_path,
+    )
     assert "Beta" not in result.stderr
 
 
 def test_two_engines_of_one_name_are_refused_by_compare(tmp_path):
     config = twin_file(tmp_path)
     before = snapshot(tmp_path)
-    check_refused(invoke("compare", config, config, "-o", tmp_path / "o.json"), 1,
-                  "name 'test twin' more than once", before, tmp_path)
+    check_refused(
+        invoke("compare", config, config, "-o", tmp_path / "o.json"),
+        1,
+        "name 'test twin' more than once",
+        before,
+        tmp_path,
+    )
 
 
 def test_percent_of_a_balanced_reference_is_not_available(tmp_path):
@@ -99,13 +139,16 @@ def test_percent_of_a_balanced_reference_is_not_available(tmp_path):
     table = invoke("compare", boxer, PART3 / "1a-v8-90-flat.toml").stdout
     assert "n/a" in table and "e+" not in table
     # the other way round the boxer is 0 % of the V8
-    engines = json.loads(invoke("compare", PART3 / "1a-v8-90-flat.toml", boxer,
-                                "--format", "json").stdout)["engines"]
+    engines = json.loads(
+        invoke("compare", PART3 / "1a-v8-90-flat.toml", boxer, "--format", "json").stdout
+    )["engines"]
     assert [e["percent_of_reference"] for e in engines] == [100.0, 0.0]
 
 
 def test_every_angle_of_the_library_is_in_its_range():
-    document = json.loads(invoke("compare", CONFIGS, "--format", "json", "--max-order", "12").stdout)
+    document = json.loads(
+        invoke("compare", CONFIGS, "--format", "json", "--max-order", "12").stdout
+    )
     for engine in document["engines"]:
         for order in engine["orders"]:
             for part, unit in (("force", "N"), ("moment", "Nm")):
@@ -116,7 +159,9 @@ def test_every_angle_of_the_library_is_in_its_range():
                     assert values["axis_deg"] is None
                 else:
                     assert 0.0 <= values["axis_deg"] < 180.0
-                assert 0.0 <= values["forward_deg"] < 360.0 and 0.0 <= values["backward_deg"] < 360.0
+                assert (
+                    0.0 <= values["forward_deg"] < 360.0 and 0.0 <= values["backward_deg"] < 360.0
+                )
                 assert values[f"min_{unit}"] == 0.0 or values[f"min_{unit}"] >= floor
         assert all(0.0 <= a < 180.0 * engine["cycle"] for a in engine["firing"]["angles_deg"])
 
@@ -142,14 +187,14 @@ def test_compare_in_lbf_round_trips_to_the_json_in_newtons(twin):
         return [cell.replace(" ", "") for cell in re.split(r"\s{2,}", line)]
 
     row = first_row(forces.split("Free forces by order (in lbf)")[1])
-    assert row[1] == "2"    # the twin's primary forces cancel: its first row is order 2
+    assert row[1] == "2"  # the twin's primary forces cancel: its first row is order 2
     # four significant figures: within 5e-4 of the value
-    assert_allclose(float(row[4]) * 4.4482216152605, data["orders"][1]["force"]["max_N"],
-                    rtol=5e-4)
+    assert_allclose(float(row[4]) * 4.4482216152605, data["orders"][1]["force"]["max_N"], rtol=5e-4)
     row = first_row(moments)
     assert row[1] == "1"
-    assert_allclose(float(row[4]) * 1.3558179483314004, data["orders"][0]["moment"]["max_Nm"],
-                    rtol=5e-4)
+    assert_allclose(
+        float(row[4]) * 1.3558179483314004, data["orders"][0]["moment"]["max_Nm"], rtol=5e-4
+    )
 
 
 def test_percentages_beyond_a_thousand_are_ratios(twin):
@@ -157,6 +202,9 @@ def test_percentages_beyond_a_thousand_are_ratios(twin):
     multiple (×), not "6199.2 %"."""
     out = invoke("compare", "--reference", "In-line 6", "configs/tanaka-part3", twin)
     assert out.exit_code == 0, out.output
-    row = [line for line in out.output.split("Largest free force and moment")[1].splitlines()
-           if line.startswith("test twin")][0]
+    row = [
+        line
+        for line in out.output.split("Largest free force and moment")[1].splitlines()
+        if line.startswith("test twin")
+    ][0]
     assert "×" in row and " %" not in row

@@ -20,8 +20,12 @@ def as_ordinary_user(args):
     needs to start, so root's private folders do not matter)."""
     if os.geteuid() != 0:
         result = invoke(*args)
-        return {"code": result.exit_code, "stdout": result.stdout, "stderr": result.stderr,
-                "exception": type(result.exception).__name__}
+        return {
+            "code": result.exit_code,
+            "stdout": result.stdout,
+            "stderr": result.stderr,
+            "exception": type(result.exception).__name__,
+        }
     read, write = os.pipe()
     pid = os.fork()
     if pid == 0:  # pragma: no cover - the child
@@ -31,8 +35,12 @@ def as_ordinary_user(args):
             os.setgid(65534)
             os.setuid(65534)
             result = invoke(*args)
-            payload = {"code": result.exit_code, "stdout": result.stdout, "stderr": result.stderr,
-                       "exception": type(result.exception).__name__}
+            payload = {
+                "code": result.exit_code,
+                "stdout": result.stdout,
+                "stderr": result.stderr,
+                "exception": type(result.exception).__name__,
+            }
             os.write(write, json.dumps(payload).encode())
         finally:
             os._exit(0)
@@ -74,8 +82,9 @@ def test_missing_file_and_empty_folder(tmp_path):
 def test_unwritable_output_leaves_nothing(tmp_path):
     blocker = tmp_path / "file"
     blocker.write_text("x")
-    result = invoke("compare", PART3 / "1a-v8-90-flat.toml", "--output",
-                    blocker / "sub" / "out.json")
+    result = invoke(
+        "compare", PART3 / "1a-v8-90-flat.toml", "--output", blocker / "sub" / "out.json"
+    )
     assert result.exit_code != 0 and "cannot create the folder" in result.output
     assert isinstance(result.exception, SystemExit), result.exception
 
@@ -117,16 +126,26 @@ def test_output_that_is_a_folder(tmp_path):
     config.write_text(TWIN, encoding="utf-8")
     (tmp_path / "out").mkdir()
     before = snapshot(tmp_path)
-    check_refused(invoke("compare", config, "-o", tmp_path / "out"), 1, "is a folder; give a file name",
-                  before, tmp_path)
+    check_refused(
+        invoke("compare", config, "-o", tmp_path / "out"),
+        1,
+        "is a folder; give a file name",
+        before,
+        tmp_path,
+    )
 
 
 def test_output_below_a_file(tmp_path):
     config = tmp_path / "e.toml"
     config.write_text(TWIN, encoding="utf-8")
     before = snapshot(tmp_path)
-    check_refused(invoke("compare", config, "-o", tmp_path / "e.toml" / "sub" / "o.json"), 1,
-                  "cannot create the folder", before, tmp_path)
+    check_refused(
+        invoke("compare", config, "-o", tmp_path / "e.toml" / "sub" / "o.json"),
+        1,
+        "cannot create the folder",
+        before,
+        tmp_path,
+    )
 
 
 @pytest.mark.skipif(not os.path.exists("/dev/full"), reason="no /dev/full on this system")
@@ -134,17 +153,32 @@ def test_device_is_written_directly_and_its_error_reported(tmp_path):
     config = tmp_path / "e.toml"
     config.write_text(TWIN, encoding="utf-8")
     before = snapshot(tmp_path)
-    check_refused(invoke("compare", config, "-o", "/dev/full"), 1,
-                  "cannot write '/dev/full': No space left on device", before, tmp_path)
-    assert stat.S_ISCHR(os.stat("/dev/full").st_mode)   # still the device
+    check_refused(
+        invoke("compare", config, "-o", "/dev/full"),
+        1,
+        "cannot write '/dev/full': No space left on device",
+        before,
+        tmp_path,
+    )
+    assert stat.S_ISCHR(os.stat("/dev/full").st_mode)  # still the device
 
 
 def test_missing_inputs_and_empty_folder(tmp_path):
     before = snapshot(tmp_path)
-    check_refused(invoke("compare", tmp_path / "nothing.toml", "-o", tmp_path / "o"), 1,
-                  "no such file; check the path", before, tmp_path)
-    check_refused(invoke("compare", tmp_path, "-o", tmp_path / "o"), 1,
-                  "no .toml configuration found in this folder", before, tmp_path)
+    check_refused(
+        invoke("compare", tmp_path / "nothing.toml", "-o", tmp_path / "o"),
+        1,
+        "no such file; check the path",
+        before,
+        tmp_path,
+    )
+    check_refused(
+        invoke("compare", tmp_path, "-o", tmp_path / "o"),
+        1,
+        "no .toml configuration found in this folder",
+        before,
+        tmp_path,
+    )
     check_refused(invoke("show", tmp_path), 1, "is a folder; give a .toml file", before, tmp_path)
 
 
@@ -179,15 +213,29 @@ def test_file_without_read_permission(shared_folder):
     check_user_refused(outcome, "cannot read the file (Permission denied)", before, shared_folder)
 
 
-@pytest.mark.parametrize("make, words", [
-    (lambda d: (os.symlink(d / "loopB", d / "loopA"), os.symlink(d / "loopA", d / "loopB"),
-                d / "loopA")[2], "Too many levels of symbolic links"),
-    (lambda d: (os.symlink("/nonexistent-balance/dir/f.txt", d / "dangling"), d / "dangling")[1],
-     "whose folder does not exist"),
-    (lambda d: "", "the output path is empty"),
-    (lambda d: str(d / "pic.json") + os.sep, "is a folder; give a file name"),
-    (lambda d: d / ("a" * 300 + ".json"), "File name too long"),
-])
+@pytest.mark.parametrize(
+    "make, words",
+    [
+        (
+            lambda d: (
+                os.symlink(d / "loopB", d / "loopA"),
+                os.symlink(d / "loopA", d / "loopB"),
+                d / "loopA",
+            )[2],
+            "Too many levels of symbolic links",
+        ),
+        (
+            lambda d: (
+                os.symlink("/nonexistent-balance/dir/f.txt", d / "dangling"),
+                d / "dangling",
+            )[1],
+            "whose folder does not exist",
+        ),
+        (lambda d: "", "the output path is empty"),
+        (lambda d: str(d / "pic.json") + os.sep, "is a folder; give a file name"),
+        (lambda d: d / ("a" * 300 + ".json"), "File name too long"),
+    ],
+)
 def test_odd_output_paths(tmp_path, make, words):
     config = twin_file(tmp_path)
     output = make(tmp_path)
@@ -216,8 +264,9 @@ def test_a_read_only_output_file_is_not_replaced_even_by_root(tmp_path):
     locked.write_text("keep me")
     locked.chmod(0o444)
     before = snapshot(tmp_path)
-    check_refused(invoke("compare", config, "-o", locked), 1, "the file is read-only", before,
-                  tmp_path)
+    check_refused(
+        invoke("compare", config, "-o", locked), 1, "the file is read-only", before, tmp_path
+    )
 
 
 def test_a_fifo_named_like_a_configuration_is_refused_not_waited_for(tmp_path):
@@ -225,7 +274,7 @@ def test_a_fifo_named_like_a_configuration_is_refused_not_waited_for(tmp_path):
     folder.mkdir()
     twin_file(folder)
     os.mkfifo(folder / "z.toml")
-    result = invoke("compare", folder, "--format", "json")    # the FIFO in a folder: skipped
+    result = invoke("compare", folder, "--format", "json")  # the FIFO in a folder: skipped
     assert result.exit_code == 0 and len(json.loads(result.stdout)["engines"]) == 1
     result = invoke("compare", folder / "z.toml")
     assert result.exit_code == 1 and "is not a regular file" in result.stderr
@@ -237,14 +286,25 @@ def test_standard_output_errors_are_one_line(tmp_path):
 
     config = twin_file(tmp_path)
     code = "from balance_cli.cli import main; main()"
-    full = subprocess.run([sys.executable, "-c", code, "compare", str(config)],
-                          stdout=open("/dev/full", "w"), stderr=subprocess.PIPE, text=True)
+    full = subprocess.run(
+        [sys.executable, "-c", code, "compare", str(config)],
+        stdout=open("/dev/full", "w"),
+        stderr=subprocess.PIPE,
+        text=True,
+    )
     assert full.returncode == 1
     assert full.stderr == "Error: cannot write standard output: No space left on device\n"
-    closed = subprocess.run([sys.executable, "-c", code, "compare", str(config)],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
-                            preexec_fn=lambda: os.close(1))
+    closed = subprocess.run(
+        [sys.executable, "-c", code, "compare", str(config)],
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        text=True,
+        preexec_fn=lambda: os.close(1),
+    )
     assert closed.returncode == 1 and closed.stderr.count("\n") == 1, closed.stderr
-    ascii_only = subprocess.run([sys.executable, "-c", code, "compare", str(config)],
-                                capture_output=True, env={**os.environ, "PYTHONIOENCODING": "ascii"})
+    ascii_only = subprocess.run(
+        [sys.executable, "-c", code, "compare", str(config)],
+        capture_output=True,
+        env={**os.environ, "PYTHONIOENCODING": "ascii"},
+    )
     assert ascii_only.returncode == 0 and "m_rec·r·ω²·n" in ascii_only.stdout.decode("utf-8")

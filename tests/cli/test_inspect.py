@@ -7,12 +7,16 @@ def _listing(folder):
     from click.testing import CliRunner
 
     from balance_cli.cli import main
+
     return CliRunner().invoke(main, ["list", str(folder)])
 
 
 def _headings(output):
-    return [line for line in output.splitlines() if line.endswith(")") and "engine" in line
-            and not line.startswith(("Config", "-", " "))]
+    return [
+        line
+        for line in output.splitlines()
+        if line.endswith(")") and "engine" in line and not line.startswith(("Config", "-", " "))
+    ]
 
 
 def test_validate_accepts_the_whole_library():
@@ -23,7 +27,9 @@ def test_validate_accepts_the_whole_library():
 
 def test_list_and_show():
     listing = invoke("list", CONFIGS)
-    assert listing.exit_code == 0 and "ABC Dragonfly" in listing.output and "Source" in listing.output
+    assert (
+        listing.exit_code == 0 and "ABC Dragonfly" in listing.output and "Source" in listing.output
+    )
     shown = invoke("show", CONFIGS / "bramo-323.toml")
     assert shown.exit_code == 0
     assert "link on 1 (261.5 mm, knuckle 71.26 mm at 80°)" in shown.output
@@ -43,12 +49,20 @@ def test_list_prints_one_table_per_folder_in_path_order(tmp_path):
     for relative in ("b.toml", "a/x.toml", "a/b/y.toml", "a/b/z.toml", "c/w.toml"):
         path = tmp_path / relative
         path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(twin.replace('name = "In-line 2, 180° crank (Kawasaki Ninja 650)"',
-                                     f'name = "twin {relative}"'), encoding="utf-8")
+        path.write_text(
+            twin.replace(
+                'name = "In-line 2, 180° crank (Kawasaki Ninja 650)"', f'name = "twin {relative}"'
+            ),
+            encoding="utf-8",
+        )
     result = _listing(tmp_path)
     assert result.exit_code == 0, result.output
-    assert _headings(result.output) == [f"{tmp_path} (1 engine)", "a (1 engine)", "a/b (2 engines)",
-                                        "c (1 engine)"]
+    assert _headings(result.output) == [
+        f"{tmp_path} (1 engine)",
+        "a (1 engine)",
+        "a/b (2 engines)",
+        "c (1 engine)",
+    ]
     blocks = result.output.split("\n\n")
     assert "twin b.toml" in blocks[0] and "twin a/x.toml" not in blocks[0]
     assert "twin a/x.toml" in blocks[1]
@@ -60,7 +74,10 @@ def test_list_of_the_library_groups_today_by_family():
     assert result.exit_code == 0, result.output
     headings = _headings(result.output)
     for family, count in (("inline", 8), ("v", 11), ("boxer", 4), ("w", 1)):
-        assert f"today/{family} ({count} engines)" in headings or f"today/{family} (1 engine)" in headings
+        assert (
+            f"today/{family} ({count} engines)" in headings
+            or f"today/{family} (1 engine)" in headings
+        )
     assert headings.index("today/boxer (4 engines)") < headings.index("today/inline (8 engines)")
     assert "tanaka-part3 (9 engines)" in headings
 
@@ -71,12 +88,14 @@ def test_list_reports_an_invalid_file_after_the_tables_of_the_valid_ones(tmp_pat
     from click.testing import CliRunner
 
     from balance_cli.cli import main
+
     twin = (TODAY / "inline" / "inline-2-180.toml").read_text(encoding="utf-8")
     (tmp_path / "good").mkdir()
     (tmp_path / "bad").mkdir()
     (tmp_path / "good" / "twin.toml").write_text(twin, encoding="utf-8")
-    (tmp_path / "bad" / "twin.toml").write_text(twin.replace('speed = "8000 rpm"', 'speed = "8000 kg"'),
-                                                encoding="utf-8")
+    (tmp_path / "bad" / "twin.toml").write_text(
+        twin.replace('speed = "8000 rpm"', 'speed = "8000 kg"'), encoding="utf-8"
+    )
     result = CliRunner().invoke(main, ["list", str(tmp_path)])
     assert result.exit_code == 1
     assert _headings(result.stdout) == ["good (1 engine)"]
@@ -90,6 +109,7 @@ def test_show_prints_the_parts_and_the_rod_inertias_they_leave_out():
     from click.testing import CliRunner
 
     from balance_cli.cli import main
+
     result = CliRunner().invoke(main, ["show", str(CONFIGS / "bramo-323.toml")])
     assert result.exit_code == 0, result.output
     master = 0.122625 - 10.54 * 0.0413 * (0.330 - 0.0413)

@@ -17,27 +17,60 @@ OPTION_CASES = [
     ("samples-text", ["compare", "--samples", "many"], 2, "'many' is not a valid integer"),
     ("max-order-zero", ["compare", "--max-order", "0"], 1, "--max-order must be at least 1"),
     ("max-order-negative", ["compare", "--max-order", "-3"], 1, "--max-order must be at least 1"),
-    ("reference-none", ["compare", "--reference", "Zeppelin"], 1, "--reference 'Zeppelin' matches no engine"),
+    (
+        "reference-none",
+        ["compare", "--reference", "Zeppelin"],
+        1,
+        "--reference 'Zeppelin' matches no engine",
+    ),
     ("units-unknown", ["compare", "--units", "dyn"], 2, "must be one of N, kN, MN, kgf, lbf"),
     ("format-unknown", ["compare", "--format", "xml"], 2, "'xml' is not one of"),
-    ("balance-factor-nan", ["counterweight", "--balance-factor", "nan"], 1,
-     "--balance-factor must be a fraction of the reciprocating masses from 0 to 1, got nan"),
+    (
+        "balance-factor-nan",
+        ["counterweight", "--balance-factor", "nan"],
+        1,
+        "--balance-factor must be a fraction of the reciprocating masses from 0 to 1, got nan",
+    ),
     ("balance-factor-inf", ["counterweight", "--balance-factor", "inf"], 1, "got inf"),
     ("balance-factor-negative", ["counterweight", "--balance-factor", "-0.5"], 1, "got -0.5"),
-    ("radius-overflow", ["counterweight", "--radius", "1e400 mm"], 1, "--radius: '1e400 mm' is not a finite number"),
+    (
+        "radius-overflow",
+        ["counterweight", "--radius", "1e400 mm"],
+        1,
+        "--radius: '1e400 mm' is not a finite number",
+    ),
     ("radius-zero", ["counterweight", "--radius", "0 mm"], 1, "--radius must be greater than zero"),
     ("radius-mass", ["counterweight", "--radius", "5 kg"], 1, "--radius: '5 kg' is a mass"),
     ("planes-missing-throw", ["counterweight", "--planes", "1,9"], 1, "--planes names throw 9"),
     ("planes-coincide", ["counterweight", "--planes", "1,1"], 1, "--planes coincide"),
     ("planes-three", ["counterweight", "--planes", "1,2,1"], 1, "--planes takes one plane"),
     ("planes-text", ["counterweight", "--planes", "1,two"], 1, "--planes: cannot read 'two'"),
-    ("planes-overflow", ["counterweight", "--planes", "1,1e400 mm"], 1, "--planes: '1e400 mm' is not a finite"),
+    (
+        "planes-overflow",
+        ["counterweight", "--planes", "1,1e400 mm"],
+        1,
+        "--planes: '1e400 mm' is not a finite",
+    ),
     ("shafts-outside", ["counterweight", "--shafts", "99"], 1, "--shafts names order 99"),
     ("shafts-text", ["counterweight", "--shafts", "second"], 2, "give orders as whole numbers"),
-    ("antivibrateur-two-throws", ["counterweight", "--antivibrateur"], 1, "--antivibrateur-radius needs a single-throw"),
-    ("antivibrateur-radius-negative", ["counterweight", "--antivibrateur", "--antivibrateur-radius", "-4 mm"], 1,
-     "--antivibrateur-radius must be greater than zero"),
-    ("star-order-above", ["report", "--star-order", "9"], 1, "--star-order 9 is above --max-order 8"),
+    (
+        "antivibrateur-two-throws",
+        ["counterweight", "--antivibrateur"],
+        1,
+        "--antivibrateur-radius needs a single-throw",
+    ),
+    (
+        "antivibrateur-radius-negative",
+        ["counterweight", "--antivibrateur", "--antivibrateur-radius", "-4 mm"],
+        1,
+        "--antivibrateur-radius must be greater than zero",
+    ),
+    (
+        "star-order-above",
+        ["report", "--star-order", "9"],
+        1,
+        "--star-order 9 is above --max-order 8",
+    ),
 ]
 
 
@@ -49,14 +82,16 @@ def test_max_order_needs_enough_samples():
 
 
 def test_coarse_sampling_is_reported():
-    result = invoke("compare", CONFIGS / "inline-4-marine.toml", "--samples", "16", "--max-order",
-                    "3")
+    result = invoke(
+        "compare", CONFIGS / "inline-4-marine.toml", "--samples", "16", "--max-order", "3"
+    )
     assert result.exit_code == 0
     assert "16 samples a revolution are too few for orders up to 3" in result.output
 
 
-@pytest.mark.parametrize("args, code, words", [case[1:] for case in OPTION_CASES],
-                         ids=[case[0] for case in OPTION_CASES])
+@pytest.mark.parametrize(
+    "args, code, words", [case[1:] for case in OPTION_CASES], ids=[case[0] for case in OPTION_CASES]
+)
 def test_bad_option(tmp_path, args, code, words):
     config = tmp_path / "engine.toml"
     config.write_text(TWIN, encoding="utf-8")
@@ -66,10 +101,13 @@ def test_bad_option(tmp_path, args, code, words):
     check_refused(result, code, words, before, tmp_path)
 
 
-@pytest.mark.parametrize("args, code, words", [
-    (["--max-order", "100000"], 1, "--max-order must be at most 16383"),
-    (["--max-order", "16384", "--samples", "65536"], 1, "--max-order must be at most 16383"),
-])
+@pytest.mark.parametrize(
+    "args, code, words",
+    [
+        (["--max-order", "100000"], 1, "--max-order must be at most 16383"),
+        (["--max-order", "16384", "--samples", "65536"], 1, "--max-order must be at most 16383"),
+    ],
+)
 def test_a_max_order_no_sampling_can_resolve(tmp_path, args, code, words):
     config = twin_file(tmp_path)
     before = snapshot(tmp_path)
@@ -83,10 +121,12 @@ def test_speed_option_scales_forces_by_the_square(twin):
     fast = json.loads(invoke("compare", path, "--format", "json", "--speed", "6000 rpm").output)
     fast = fast["engines"][0]
     assert fast["speed_rpm"] == pytest.approx(6000.0)
-    assert_allclose(fast["orders"][1]["force"]["max_N"], 4 * slow["orders"][1]["force"]["max_N"],
-                    rtol=1e-12)
-    assert_allclose(fast["orders"][0]["moment"]["max_Nm"],
-                    4 * slow["orders"][0]["moment"]["max_Nm"], rtol=1e-12)
+    assert_allclose(
+        fast["orders"][1]["force"]["max_N"], 4 * slow["orders"][1]["force"]["max_N"], rtol=1e-12
+    )
+    assert_allclose(
+        fast["orders"][0]["moment"]["max_Nm"], 4 * slow["orders"][0]["moment"]["max_Nm"], rtol=1e-12
+    )
     for command in ("counterweight", "torque"):
         out = invoke(command, path, "--speed", "0 rpm")
         assert out.exit_code == 1 and "--speed" in out.output and "Traceback" not in out.output
@@ -115,10 +155,15 @@ def test_every_command_that_prints_forces_takes_units(twin, tmp_path):
 
 
 def test_negative_zero_reads_as_zero(tmp_path):
-    result = invoke("counterweight", CONFIGS / "inline-4-car.toml", "--balance-factor", "-0",
-                    "--format", "json")
+    result = invoke(
+        "counterweight", CONFIGS / "inline-4-car.toml", "--balance-factor", "-0", "--format", "json"
+    )
     assert '"balance_factor": 0.0' in result.stdout
     config = tmp_path / "e.toml"
-    config.write_text((CONFIGS / "inline-4-car.toml").read_text().replace(
-        "[[banks]]\nangle = 0", "[[banks]]\nangle = -0.0"), encoding="utf-8")
+    config.write_text(
+        (CONFIGS / "inline-4-car.toml")
+        .read_text()
+        .replace("[[banks]]\nangle = 0", "[[banks]]\nangle = -0.0"),
+        encoding="utf-8",
+    )
     assert "(-0°)" not in invoke("show", config).stdout

@@ -42,17 +42,32 @@ def test_plot_command_refuses_a_format_before_computing(tmp_path, monkeypatch):
     assert list(tmp_path.iterdir()) == []
 
 
-@pytest.mark.parametrize("args, words", [
-    (["--kind", "locus", "--units", "kgf"], "--units applies to --kind spectrum and torque only"),
-    (["--kind", "star", "--units", "N"], "--units applies to --kind spectrum and torque only"),
-    (["--kind", "firing", "--units", "per-cylinder"], "--units applies to --kind spectrum and torque"),
-    (["--kind", "torque", "--units", "per-cylinder"], "--units per-cylinder applies to --kind spectrum only"),
-    (["--kind", "spectrum", "--order", "2"], "--order applies to --kind locus and star only"),
-    (["--kind", "torque", "--order", "2"], "--order applies to --kind locus and star only"),
-    (["--kind", "firing", "--of", "moment"], "--of applies to --kind locus and star only, not firing"),
-    (["--kind", "spectrum", "--of", "force"], "--of applies to --kind locus and star only"),
-    (["--kind", "torque", "--of", "moment"], "--of applies to --kind locus and star only"),
-])
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (
+            ["--kind", "locus", "--units", "kgf"],
+            "--units applies to --kind spectrum and torque only",
+        ),
+        (["--kind", "star", "--units", "N"], "--units applies to --kind spectrum and torque only"),
+        (
+            ["--kind", "firing", "--units", "per-cylinder"],
+            "--units applies to --kind spectrum and torque",
+        ),
+        (
+            ["--kind", "torque", "--units", "per-cylinder"],
+            "--units per-cylinder applies to --kind spectrum only",
+        ),
+        (["--kind", "spectrum", "--order", "2"], "--order applies to --kind locus and star only"),
+        (["--kind", "torque", "--order", "2"], "--order applies to --kind locus and star only"),
+        (
+            ["--kind", "firing", "--of", "moment"],
+            "--of applies to --kind locus and star only, not firing",
+        ),
+        (["--kind", "spectrum", "--of", "force"], "--of applies to --kind locus and star only"),
+        (["--kind", "torque", "--of", "moment"], "--of applies to --kind locus and star only"),
+    ],
+)
 def test_plot_options_that_do_not_apply_are_usage_errors(tmp_path, args, words):
     result = invoke("plot", V8, *args, "--output", tmp_path / "p.png")
     assert result.exit_code == 2 and words in result.output
@@ -117,8 +132,18 @@ def test_plot_command_torques_respect_samples_and_max_order(tmp_path, monkeypatc
         return real(engine, samples, max_order, *args, **kwargs)
 
     monkeypatch.setattr(torque_module, "torque", spy)
-    result = invoke("plot", V8, "--kind", "torque", "--samples", "64", "--max-order", "3",
-                 "--output", tmp_path / "t.svg")
+    result = invoke(
+        "plot",
+        V8,
+        "--kind",
+        "torque",
+        "--samples",
+        "64",
+        "--max-order",
+        "3",
+        "--output",
+        tmp_path / "t.svg",
+    )
     assert result.exit_code == 0, result.output
     assert seen == [(64, 3)]
 
@@ -137,10 +162,16 @@ def test_plot_command_reports_a_torque_error_in_one_line(tmp_path, monkeypatch):
     assert "Traceback" not in result.output and not out.exists()
     # and bad configurations and settings are refused as for the other kinds
     bad = tmp_path / "bad.toml"
-    bad.write_text((CONFIGS / "inline-4-car.toml").read_text(encoding="utf-8")
-                   + CAR_GAS.replace("compression_ratio = 10", "compression_ratio = 0.5"), encoding="utf-8")
+    bad.write_text(
+        (CONFIGS / "inline-4-car.toml").read_text(encoding="utf-8")
+        + CAR_GAS.replace("compression_ratio = 10", "compression_ratio = 0.5"),
+        encoding="utf-8",
+    )
     monkeypatch.undo()
-    for args, words in (([bad], "gas.compression_ratio"), ([V8, "--max-order", "100"], "--samples must be")):
+    for args, words in (
+        ([bad], "gas.compression_ratio"),
+        ([V8, "--max-order", "100"], "--samples must be"),
+    ):
         result = invoke("plot", *args, "--kind", "torque", "--output", out)
         assert result.exit_code == 1 and len(result.output.strip().splitlines()) == 1, result.output
         assert words in result.output and not out.exists()
@@ -149,9 +180,18 @@ def test_plot_command_reports_a_torque_error_in_one_line(tmp_path, monkeypatch):
 def test_plot_command_draws_moments(tmp_path, couples):
     for kind in ("locus", "star"):
         out = tmp_path / f"{kind}.svg"
-        result = invoke("plot", CONFIGS / "nakanishi-v12-90-2stroke.toml", "--kind", kind, "--of",
-                        "moment",
-                     "--order", "1", "--output", out)
+        result = invoke(
+            "plot",
+            CONFIGS / "nakanishi-v12-90-2stroke.toml",
+            "--kind",
+            kind,
+            "--of",
+            "moment",
+            "--order",
+            "1",
+            "--output",
+            out,
+        )
         assert result.exit_code == 0, result.output
         assert "free moment" in out.read_text(encoding="utf-8")
 
@@ -161,8 +201,13 @@ def test_plot_with_an_unknown_format(tmp_path):
     config.write_text(TWIN, encoding="utf-8")
     before = snapshot(tmp_path)
     for name in ("pic", "pic.jpeg2", "pic.pgf"):
-        check_refused(invoke("plot", config, "--kind", "locus", "-o", tmp_path / name), 1,
-                      "end the file name in one of", before, tmp_path)
+        check_refused(
+            invoke("plot", config, "--kind", "locus", "-o", tmp_path / name),
+            1,
+            "end the file name in one of",
+            before,
+            tmp_path,
+        )
 
 
 def test_report_that_fails_half_way_leaves_nothing_behind(tmp_path):
@@ -174,16 +219,18 @@ def test_report_that_fails_half_way_leaves_nothing_behind(tmp_path):
     check_refused(result, 1, "report.md': it is not a regular file", before, tmp_path)
 
 
-@pytest.mark.parametrize("output, words", [("-", "'-' is not a folder name"),
-                                           ("", "'' is not a folder name")])
+@pytest.mark.parametrize(
+    "output, words", [("-", "'-' is not a folder name"), ("", "'' is not a folder name")]
+)
 def test_report_needs_a_folder_name(tmp_path, output, words):
     config = twin_file(tmp_path)
     before = snapshot(tmp_path)
     check_refused(invoke("report", config, "-o", output), 1, words, before, tmp_path)
 
 
-@pytest.mark.parametrize("command", [["plot", "--kind", "star", "-o", "s.png"],
-                                     ["report", "-o", "rep"]])
+@pytest.mark.parametrize(
+    "command", [["plot", "--kind", "star", "-o", "s.png"], ["report", "-o", "rep"]]
+)
 def test_max_order_one_draws_the_first_order_star(tmp_path, monkeypatch, command):
     monkeypatch.chdir(tmp_path)
     result = invoke(command[0], CONFIGS / "inline-4-car.toml", "--max-order", "1", *command[1:])
@@ -194,7 +241,9 @@ def test_cli_module_keeps_the_default_backend_until_it_draws():
     import subprocess
     import sys
 
-    code = ("import matplotlib, sys; from balance_cli.cli import main\n"
-            "assert 'matplotlib.pyplot' not in sys.modules\n")
+    code = (
+        "import matplotlib, sys; from balance_cli.cli import main\n"
+        "assert 'matplotlib.pyplot' not in sys.modules\n"
+    )
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr

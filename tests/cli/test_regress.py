@@ -30,15 +30,21 @@ def change_mass(path, factor):
     text = path.read_text(encoding="utf-8")
     old = text.split('reciprocating = "', 1)[1].split('"', 1)[0]
     number, unit = old.split()
-    path.write_text(text.replace(f'reciprocating = "{old}"',
-                                 f'reciprocating = "{float(number) * factor!r} {unit}"', 1),
-                    encoding="utf-8")
+    path.write_text(
+        text.replace(
+            f'reciprocating = "{old}"', f'reciprocating = "{float(number) * factor!r} {unit}"', 1
+        ),
+        encoding="utf-8",
+    )
 
 
 def test_a_baseline_of_the_library_regresses_clean(project):
     result = invoke("regress", "baseline.json")
     assert result.exit_code == 0, result.output
-    assert f"nothing moved beyond tolerance ({LIBRARY} engines checked against baseline.json)" in result.stdout
+    assert (
+        f"nothing moved beyond tolerance ({LIBRARY} engines checked against baseline.json)"
+        in result.stdout
+    )
 
 
 def test_one_percent_more_reciprocating_mass_fails_naming_the_engine_and_its_orders(project):
@@ -49,7 +55,7 @@ def test_one_percent_more_reciprocating_mass_fails_naming_the_engine_and_its_ord
     assert document["moved"] and document["added"] == [] and document["removed"] == []
     assert {row["engine"] for row in document["rows"]} == {"In-line 4, car proportions"}
     orders = {row["order"] for row in document["rows"] if row["quantity"] == "force.max_N"}
-    assert orders == {2, 4, 6, 8}      # a flat-crank four: the even orders, all 1 % up
+    assert orders == {2, 4, 6, 8}  # a flat-crank four: the even orders, all 1 % up
     for row in document["rows"]:
         if row["quantity"].startswith("force.") and row["quantity"].endswith("_N"):
             # exactly 1 % (forces are proportional to the mass); the 8th order, 1e-5 of the
@@ -62,8 +68,11 @@ def test_one_percent_more_reciprocating_mass_fails_naming_the_engine_and_its_ord
 
 def test_added_and_removed_engines_are_listed(project):
     (project / "configs" / "inline-12.toml").rename(project / "elsewhere.toml")
-    extra = (project / "configs" / "inline-4-car.toml").read_text(encoding="utf-8").replace(
-        'name = "In-line 4, car proportions"', 'name = "In-line 4, my variant"')
+    extra = (
+        (project / "configs" / "inline-4-car.toml")
+        .read_text(encoding="utf-8")
+        .replace('name = "In-line 4, car proportions"', 'name = "In-line 4, my variant"')
+    )
     (project / "configs" / "mine.toml").write_text(extra, encoding="utf-8")
     result = invoke("regress", "baseline.json", "configs")
     assert result.exit_code == 1
@@ -79,7 +88,11 @@ def test_junit_parses_and_counts_the_failure(project):
     result = invoke("regress", "baseline.json", "--format", "junit", "-o", "report.xml")
     assert result.exit_code == 1
     root = ET.parse(project / "report.xml").getroot()
-    assert root.tag == "testsuites" and root.get("tests") == str(LIBRARY) and root.get("failures") == "1"
+    assert (
+        root.tag == "testsuites"
+        and root.get("tests") == str(LIBRARY)
+        and root.get("failures") == "1"
+    )
     (suite,) = root
     failed = [case for case in suite if case.find("failure") is not None]
     assert [case.get("name") for case in failed] == ["ABC Dragonfly 9-cylinder radial"]
@@ -105,22 +118,39 @@ def test_update_rewrites_the_baseline_and_then_it_is_clean(project):
 
 
 def test_the_baseline_settings_are_used(project):
-    invoke("compare", "configs/tanaka-part3", "--format", "json", "--samples", "128",
-           "--max-order", "5", "-o", "small.json")
+    invoke(
+        "compare",
+        "configs/tanaka-part3",
+        "--format",
+        "json",
+        "--samples",
+        "128",
+        "--max-order",
+        "5",
+        "-o",
+        "small.json",
+    )
     result = invoke("regress", "small.json", "--format", "json")
     assert result.exit_code == 0, result.output
     assert len(json.loads(result.stdout)["engines_checked"]) == 9
 
 
-@pytest.mark.parametrize("content, words", [
-    ("not json", "not JSON"),
-    ('{"engines": []}', "no 'balance_version'"),
-    ('{"balance_version": 3, "engines": [], "samples": 256, "max_order": 8}',
-     "written by balance_version 3"),
-    ('[1, 2]', "not a `balance compare --format json` document"),
-    ('{"balance_version": 1, "samples": 256, "max_order": 8, "engines": [{"name": "x"}]}',
-     "engines[1]: lacks config, cylinders, firing, orders, unit_force_N"),
-])
+@pytest.mark.parametrize(
+    "content, words",
+    [
+        ("not json", "not JSON"),
+        ('{"engines": []}', "no 'balance_version'"),
+        (
+            '{"balance_version": 3, "engines": [], "samples": 256, "max_order": 8}',
+            "written by balance_version 3",
+        ),
+        ("[1, 2]", "not a `balance compare --format json` document"),
+        (
+            '{"balance_version": 1, "samples": 256, "max_order": 8, "engines": [{"name": "x"}]}',
+            "engines[1]: lacks config, cylinders, firing, orders, unit_force_N",
+        ),
+    ],
+)
 def test_a_baseline_that_is_not_a_comparison(tmp_path, content, words):
     baseline = tmp_path / "b.json"
     baseline.write_text(content, encoding="utf-8")
@@ -133,8 +163,10 @@ def test_a_missing_configuration_or_baseline(project):
     (project / "configs" / "inline-12.toml").unlink()
     result = invoke("regress", "baseline.json")
     assert result.exit_code == 1 and result.stderr.count("\n") == 1
-    assert "names the configuration 'configs/inline-12.toml' of 'In-line 12', which no longer exists" \
+    assert (
+        "names the configuration 'configs/inline-12.toml' of 'In-line 12', which no longer exists"
         in result.stderr
+    )
     result = invoke("regress", "nothing.json")
     assert result.exit_code == 1 and "nothing.json: no such file" in result.stderr
 
@@ -148,13 +180,18 @@ def test_usage_errors_and_outputs_that_are_inputs(project):
     assert (project / "baseline.json").read_bytes() == before
 
 
-@pytest.mark.parametrize("content, words", [
-    ("[" * 100_000 + "]" * 100_000, "not JSON that balance can read"),
-    ('{"balance_version": 1, "samples": ' + "9" * 5000 + "}", "not JSON that balance can read"),
-    ('{"balance_version": true, "engines": [1]}', "written by balance_version True"),
-    ('{"balance_version": 1, "samples": -5, "max_order": 8, "engines": [1]}',
-     "records samples must be from 33"),
-])
+@pytest.mark.parametrize(
+    "content, words",
+    [
+        ("[" * 100_000 + "]" * 100_000, "not JSON that balance can read"),
+        ('{"balance_version": 1, "samples": ' + "9" * 5000 + "}", "not JSON that balance can read"),
+        ('{"balance_version": true, "engines": [1]}', "written by balance_version True"),
+        (
+            '{"balance_version": 1, "samples": -5, "max_order": 8, "engines": [1]}',
+            "records samples must be from 33",
+        ),
+    ],
+)
 def test_baselines_that_are_not_comparisons(tmp_path, content, words):
     baseline = tmp_path / "b.json"
     baseline.write_text(content, encoding="utf-8")
@@ -162,16 +199,21 @@ def test_baselines_that_are_not_comparisons(tmp_path, content, words):
     check_refused(invoke("regress", baseline), 1, words, before, tmp_path)
 
 
-@pytest.mark.parametrize("damage, words", [
-    (lambda e: e["orders"][0].pop("force"), "has an order that is not"),
-    (lambda e: e.update(orders="x"), "has no list of orders"),
-    (lambda e: e.update(name=["a"]), "has a name or config that is not text"),
-    (lambda e: e["orders"][0]["force"].update(max_N=math.nan), "has an order that is not"),
-    (lambda e: e.update(unit_force_N=-1.0), "has no positive unit_force_N"),
-    (lambda e: e["firing"].update(order=None), "has no firing order"),
-])
+@pytest.mark.parametrize(
+    "damage, words",
+    [
+        (lambda e: e["orders"][0].pop("force"), "has an order that is not"),
+        (lambda e: e.update(orders="x"), "has no list of orders"),
+        (lambda e: e.update(name=["a"]), "has a name or config that is not text"),
+        (lambda e: e["orders"][0]["force"].update(max_N=math.nan), "has an order that is not"),
+        (lambda e: e.update(unit_force_N=-1.0), "has no positive unit_force_N"),
+        (lambda e: e["firing"].update(order=None), "has no firing order"),
+    ],
+)
 def test_a_damaged_baseline_is_one_error_line(tmp_path, damage, words):
-    document = balance.compare([balance.analyse(balance.load(CONFIGS / "inline-4-car.toml"))]).to_dict()
+    document = balance.compare(
+        [balance.analyse(balance.load(CONFIGS / "inline-4-car.toml"))]
+    ).to_dict()
     damage(document["engines"][0])
     baseline = tmp_path / "b.json"
     baseline.write_text(json.dumps(document), encoding="utf-8")
@@ -187,7 +229,9 @@ def test_regress_finds_configurations_from_the_baselines_folders(tmp_path, monke
     design.mkdir()
     (design / "car.toml").write_text((CONFIGS / "inline-4-car.toml").read_text(), encoding="utf-8")
     monkeypatch.chdir(tmp_path)
-    assert invoke("compare", "design", "--format", "json", "-o", "design/baseline.json").exit_code == 0
+    assert (
+        invoke("compare", "design", "--format", "json", "-o", "design/baseline.json").exit_code == 0
+    )
     monkeypatch.chdir(design)
     result = invoke("regress", "baseline.json")
     assert result.exit_code == 0, result.output
@@ -195,12 +239,19 @@ def test_regress_finds_configurations_from_the_baselines_folders(tmp_path, monke
 
 def test_json_version_2_and_regress_reads_version_1(monkeypatch):
     """New keys only, and a baseline written by version 1 still regresses clean."""
-    monkeypatch.chdir(ROOT)   # the baselines name their configurations from the root
+    monkeypatch.chdir(ROOT)  # the baselines name their configurations from the root
     data = json.loads(invoke("compare", "configs", "--format", "json").output)
     assert data["balance_version"] == 2
     engine = data["engines"][0]
-    for key in ("vertical_deg", "largest_moment_Nm", "counterweighted_moment_Nm",
-                "main_force_order", "main_moment_order", "noise_floor_N", "noise_floor_Nm"):
+    for key in (
+        "vertical_deg",
+        "largest_moment_Nm",
+        "counterweighted_moment_Nm",
+        "main_force_order",
+        "main_moment_order",
+        "noise_floor_N",
+        "noise_floor_Nm",
+    ):
         assert key in engine
     # compare-v1.json is the golden baseline as version 1 wrote it, kept unchanged
     old = ROOT / "tests" / "golden" / "compare-v1.json"
@@ -219,15 +270,19 @@ def test_regress_checks_the_version_2_quantities(twin, tmp_path):
     out = invoke("regress", baseline, turned, "--format", "json")
     assert out.exit_code == 1
     rows = {(r["order"], r["quantity"]): r for r in json.loads(out.output)["rows"]}
-    assert_allclose(rows[(1, "moment.vertical_Nm")]["now"],
-                    0.5 * rows[(1, "moment.vertical_Nm")]["baseline"], rtol=1e-12)
+    assert_allclose(
+        rows[(1, "moment.vertical_Nm")]["now"],
+        0.5 * rows[(1, "moment.vertical_Nm")]["baseline"],
+        rtol=1e-12,
+    )
     assert (None, "vertical_deg") in rows and (1, "moment.max_Nm") not in rows
 
 
 def test_a_baseline_written_at_another_speed_is_checked_at_that_speed(twin, tmp_path):
     baseline = tmp_path / "fast.json"
-    baseline.write_text(invoke("compare", twin, "--speed", "5000 rpm", "--format", "json").output,
-                        encoding="utf-8")
+    baseline.write_text(
+        invoke("compare", twin, "--speed", "5000 rpm", "--format", "json").output, encoding="utf-8"
+    )
     assert json.loads(baseline.read_text(encoding="utf-8"))["speed_override_rpm"] == 5000.0
     out = invoke("regress", baseline)
     assert out.exit_code == 0 and "nothing moved" in out.output and "1 engine checked" in out.output

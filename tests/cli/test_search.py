@@ -17,12 +17,31 @@ from tests.support import ROOT, TEMPLATES, check_refused, inline_template_text, 
 def test_json_document_has_the_documented_keys():
     import json
 
-    run = invoke("search", TEMPLATES / "inline-6-2stroke.toml", "--objective", "M1", "--top", "2",
-                 "--format", "json", "--workers", "1")
+    run = invoke(
+        "search",
+        TEMPLATES / "inline-6-2stroke.toml",
+        "--objective",
+        "M1",
+        "--top",
+        "2",
+        "--format",
+        "json",
+        "--workers",
+        "1",
+    )
     assert run.exit_code == 0, run.output
     document = json.loads(run.output)
-    for key in ("balance_version", "template", "objective", "arrangements_total",
-                "arrangements_distinct", "evaluated", "exhaustive", "elapsed_s", "results"):
+    for key in (
+        "balance_version",
+        "template",
+        "objective",
+        "arrangements_total",
+        "arrangements_distinct",
+        "evaluated",
+        "exhaustive",
+        "elapsed_s",
+        "results",
+    ):
         assert key in document
     first = document["results"][0]
     assert set(first) >= {"rank", "score", "phases_deg", "firing", "coefficients", "orders"}
@@ -35,9 +54,20 @@ def test_written_arrangements_are_complete_configurations(tmp_path):
     import json
 
     out = tmp_path / "best"
-    run = invoke("search", TEMPLATES / "nakanishi-w12-60-2stroke.toml",
-                 "--objective", "F1,F2,F3,M2,M1:0.01",
-                 "--top", "2", "--write", out, "--format", "json", "--workers", "1")
+    run = invoke(
+        "search",
+        TEMPLATES / "nakanishi-w12-60-2stroke.toml",
+        "--objective",
+        "F1,F2,F3,M2,M1:0.01",
+        "--top",
+        "2",
+        "--write",
+        out,
+        "--format",
+        "json",
+        "--workers",
+        "1",
+    )
     assert run.exit_code == 0, run.output
     listed = json.loads(run.output)["results"]
     assert sorted(p.name for p in out.iterdir()) == ["arrangement-01.toml", "arrangement-02.toml"]
@@ -45,17 +75,23 @@ def test_written_arrangements_are_complete_configurations(tmp_path):
         engine = balance.load(out / f"arrangement-{record['rank']:02d}.toml")
         again = balance.analyse(engine)
         assert list(again.firing.order) == record["firing"]["order"]
-        assert_allclose(again.order(1).moment_forward.__abs__(),
-                        record["orders"][0]["moment"]["forward_Nm"], rtol=1e-12)
+        assert_allclose(
+            again.order(1).moment_forward.__abs__(),
+            record["orders"][0]["moment"]["forward_Nm"],
+            rtol=1e-12,
+        )
 
 
-@pytest.mark.parametrize("args,words", [
-    (["--objective", "F0"], "--objective"),
-    (["--top", "0"], "--top"),
-    (["--step", "30"], "--step"),
-    (["--allow-uneven"], "--step"),
-    (["--limit", "5"], "--limit"),
-])
+@pytest.mark.parametrize(
+    "args,words",
+    [
+        (["--objective", "F0"], "--objective"),
+        (["--top", "0"], "--top"),
+        (["--step", "30"], "--step"),
+        (["--allow-uneven"], "--step"),
+        (["--limit", "5"], "--limit"),
+    ],
+)
 def test_command_errors_are_one_line_naming_the_option(args, words):
     run = invoke("search", TEMPLATES / "inline-6-2stroke.toml", *args)
     assert run.exit_code == 1 and isinstance(run.exception, SystemExit)
@@ -68,22 +104,28 @@ def test_a_configuration_with_phases_is_not_a_template():
     assert "throws[1].phase" in run.output and "remove phase" in run.output
 
 
-@pytest.mark.parametrize("args,words", [
-    (["--allow-uneven", "--step", "0"], "--step must divide 360°"),
-    (["--allow-uneven", "--step", "nan"], "--step must divide 360°"),
-    (["--allow-uneven", "--step", "1e-9"], "--step must divide 360°"),
-    (["--scheduler", "garbage"], "not a scheduler address"),
-    (["--scheduler", "foo://x:1"], "not a scheduler address"),
-    (["--heuristic", "--seed", "-1"], "--seed must be a whole number from 0"),
-    (["--objective", ""], "--objective is empty"),
-    (["--objective", " "], "--objective is empty"),
-    (["--objective", "F0"], "orders start at 1"),
-    (["--objective", "F9"], "set --max-order to 9"),
-    (["--heuristic", "--scheduler", "tcp://127.0.0.1:1"], "--scheduler applies to the exhaustive"),
-    (["--workers", "100000"], "--workers must be a whole number from 1 to 1,024"),
-    (["--heuristic", "--restarts", "100000000"], "--restarts must be"),
-    (["--step", "30"], "--step applies only with --allow-uneven"),
-])
+@pytest.mark.parametrize(
+    "args,words",
+    [
+        (["--allow-uneven", "--step", "0"], "--step must divide 360°"),
+        (["--allow-uneven", "--step", "nan"], "--step must divide 360°"),
+        (["--allow-uneven", "--step", "1e-9"], "--step must divide 360°"),
+        (["--scheduler", "garbage"], "not a scheduler address"),
+        (["--scheduler", "foo://x:1"], "not a scheduler address"),
+        (["--heuristic", "--seed", "-1"], "--seed must be a whole number from 0"),
+        (["--objective", ""], "--objective is empty"),
+        (["--objective", " "], "--objective is empty"),
+        (["--objective", "F0"], "orders start at 1"),
+        (["--objective", "F9"], "set --max-order to 9"),
+        (
+            ["--heuristic", "--scheduler", "tcp://127.0.0.1:1"],
+            "--scheduler applies to the exhaustive",
+        ),
+        (["--workers", "100000"], "--workers must be a whole number from 1 to 1,024"),
+        (["--heuristic", "--restarts", "100000000"], "--restarts must be"),
+        (["--step", "30"], "--step applies only with --allow-uneven"),
+    ],
+)
 def test_hostile_options_are_one_line(args, words):
     run = invoke("search", TEMPLATES / "inline-6-2stroke.toml", *args)
     assert run.exit_code == 1 and isinstance(run.exception, SystemExit), run.output
@@ -98,23 +140,39 @@ def test_write_never_replaces_the_template_or_the_output(tmp_path):
     before = inside.read_bytes()
     run = invoke("search", inside, "--write", folder, "--top", "2")
     assert run.exit_code == 1 and "input file" in run.output and inside.read_bytes() == before
-    run = invoke("search", TEMPLATES / "inline-6-2stroke.toml", "--write", tmp_path / "x", "-o",
-                 tmp_path / "x" / "arrangement-01.toml")
+    run = invoke(
+        "search",
+        TEMPLATES / "inline-6-2stroke.toml",
+        "--write",
+        tmp_path / "x",
+        "-o",
+        tmp_path / "x" / "arrangement-01.toml",
+    )
     assert run.exit_code == 1 and "--write writes" in run.output and not (tmp_path / "x").exists()
 
 
 def test_a_failed_output_writes_no_folder(tmp_path):
     (tmp_path / "taken").mkdir()
-    run = invoke("search", TEMPLATES / "inline-6-2stroke.toml", "--top", "2",
-                 "--write", tmp_path / "new",
-                 "-o", tmp_path / "taken")
+    run = invoke(
+        "search",
+        TEMPLATES / "inline-6-2stroke.toml",
+        "--top",
+        "2",
+        "--write",
+        tmp_path / "new",
+        "-o",
+        tmp_path / "taken",
+    )
     assert run.exit_code == 1 and not (tmp_path / "new").exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["taken"]
 
 
 def test_a_long_template_name_leaves_room_for_the_rank(tmp_path):
-    text = (TEMPLATES / "inline-6-2stroke.toml").read_text().replace(
-        'name = "In-line 6, two-stroke"', f'name = "{"A" * 118}"')
+    text = (
+        (TEMPLATES / "inline-6-2stroke.toml")
+        .read_text()
+        .replace('name = "In-line 6, two-stroke"', f'name = "{"A" * 118}"')
+    )
     path = tmp_path / "long.toml"
     path.write_text(text)
     run = invoke("search", path, "--objective", "M1", "--top", "3")
@@ -134,8 +192,16 @@ def test_search_weights_beyond_their_range_are_refused_with_it(tmp_path, objecti
 
 
 def test_huge_weights_print_a_readable_score(tmp_path):
-    result = invoke("search", TEMPLATES / "inline-6-2stroke.toml", "--objective", "M1:1e100",
-                    "--top", "3", "--workers", "1")
+    result = invoke(
+        "search",
+        TEMPLATES / "inline-6-2stroke.toml",
+        "--objective",
+        "M1:1e100",
+        "--top",
+        "3",
+        "--workers",
+        "1",
+    )
     assert result.exit_code == 0, result.output
     row = next(line for line in result.stdout.splitlines() if line.startswith("3 "))
     score = row.split()[1]
@@ -149,17 +215,25 @@ def test_a_top_beyond_what_can_be_held_is_refused(tmp_path):
     template.write_text(inline_template_text(10), encoding="utf-8")
     before = snapshot(tmp_path)
     result = invoke("search", template, "--objective", "M1", "--top", "100000")
-    check_refused(result, 1, "--top must be a whole number from 1 to 1,000, got 100000", before,
-                  tmp_path)
+    check_refused(
+        result, 1, "--top must be a whole number from 1 to 1,000, got 100000", before, tmp_path
+    )
 
 
 def test_heuristic_with_a_scheduler_names_the_flags():
-    result = invoke("search", TEMPLATES / "inline-6-2stroke.toml", "--heuristic", "--scheduler",
-                    "tcp://127.0.0.1:1")
+    result = invoke(
+        "search",
+        TEMPLATES / "inline-6-2stroke.toml",
+        "--heuristic",
+        "--scheduler",
+        "tcp://127.0.0.1:1",
+    )
     assert result.exit_code == 1
-    assert result.stderr.endswith(": --scheduler applies to the exhaustive search, but the "
-                                  "heuristic search (--heuristic) runs in this process: leave "
-                                  "out one of the two\n")
+    assert result.stderr.endswith(
+        ": --scheduler applies to the exhaustive search, but the "
+        "heuristic search (--heuristic) runs in this process: leave "
+        "out one of the two\n"
+    )
 
 
 def test_ctrl_c_in_a_multi_process_search_prints_no_worker_traceback(tmp_path):
@@ -172,13 +246,28 @@ def test_ctrl_c_in_a_multi_process_search_prints_no_worker_traceback(tmp_path):
 
     template = tmp_path / "i13.toml"
     template.write_text(inline_template_text(13), encoding="utf-8")
-    code = ("import sys; from balance_cli.cranksearch import parallel as c; "
-            "c._cores = lambda: 2; "   # two processes even on a one-core machine
-            "from balance_cli.cli import main; sys.exit(main())")
-    process = subprocess.Popen([sys.executable, "-c", code, "search", str(template),
-                                "--objective", "M1", "--workers", "2"],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                               start_new_session=True)
+    code = (
+        "import sys; from balance_cli.cranksearch import parallel as c; "
+        "c._cores = lambda: 2; "  # two processes even on a one-core machine
+        "from balance_cli.cli import main; sys.exit(main())"
+    )
+    process = subprocess.Popen(
+        [
+            sys.executable,
+            "-c",
+            code,
+            "search",
+            str(template),
+            "--objective",
+            "M1",
+            "--workers",
+            "2",
+        ],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
     # interrupt once the workers run (the search of an in-line 13 takes seconds after they
     # start): the parent's children, as Linux lists them
     children = Path(f"/proc/{process.pid}/task/{process.pid}/children")
@@ -203,12 +292,26 @@ def test_search_takes_units_and_speed(tmp_path):
     fast = invoke("search", template, "--top", "1", "--format", "json", "--speed", "2x")
     assert fast.exit_code == 1 and "--speed" in fast.output
     base = balance.load_template(template).speed_rad_s * 30 / math.pi
-    fast = json.loads(invoke("search", template, "--top", "1", "--format", "json",
-                          "--speed", f"{2 * base} rpm", "--write", tmp_path).output)
+    fast = json.loads(
+        invoke(
+            "search",
+            template,
+            "--top",
+            "1",
+            "--format",
+            "json",
+            "--speed",
+            f"{2 * base} rpm",
+            "--write",
+            tmp_path,
+        ).output
+    )
     a, b = slow["results"][0], fast["results"][0]
-    assert_allclose(b["orders"][0]["moment"]["max_Nm"], 4 * a["orders"][0]["moment"]["max_Nm"],
-                    rtol=1e-12)
+    assert_allclose(
+        b["orders"][0]["moment"]["max_Nm"], 4 * a["orders"][0]["moment"]["max_Nm"], rtol=1e-12
+    )
     assert balance.load(tmp_path / "arrangement-01.toml").speed_rad_s == pytest.approx(
-        2 * base * math.pi / 30, rel=1e-12)
+        2 * base * math.pi / 30, rel=1e-12
+    )
     table = invoke("search", template, "--top", "1", "--units", "kN")
     assert table.exit_code == 0 and "(kN·m)" in table.output

@@ -10,12 +10,17 @@ from tests.support import INLINE6, TORSION6, TORSION_ORDERS, invoke
 
 def test_tables_json_csv_and_pictures(tmp_path):
     path = tmp_path / "six.toml"
-    path.write_text(INLINE6 + '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\n'
-                    'imep = "15 bar"\n' + TORSION6)
+    path.write_text(
+        INLINE6 + '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\nimep = "15 bar"\n' + TORSION6
+    )
     result = invoke("torsion", path, "--speeds", "1000:2500:50")
     assert result.exit_code == 0, result.output
-    for heading in ("Natural modes", "Phase-vector sums", "Criticals in the speed range",
-                    "Largest vibratory torque per section"):
+    for heading in (
+        "Natural modes",
+        "Phase-vector sums",
+        "Criticals in the speed range",
+        "Largest vibratory torque per section",
+    ):
         assert heading in result.output
     result = invoke("torsion", path, "--speeds", "1000:2500:50", "--format", "json")
     document = json.loads(result.output)
@@ -24,16 +29,26 @@ def test_tables_json_csv_and_pictures(tmp_path):
     first = entry["response"][0]["sections"][0]
     assert set(first) == {"section", "torque_Nm", "stress_Pa", "orders"}
     assert [o["order"] for o in first["orders"]] == list(TORSION_ORDERS)
-    assert {"mode", "frequency_Hz", "frequency_cpm", "shape", "throw_amplitudes",
-            "phase_vector_sums"} <= set(entry["modes"][0])
-    result = invoke("torsion", path, "--speeds", "1000,2000", "--format", "csv", "--plot",
-                 tmp_path / "pics")
+    assert {
+        "mode",
+        "frequency_Hz",
+        "frequency_cpm",
+        "shape",
+        "throw_amplitudes",
+        "phase_vector_sums",
+    } <= set(entry["modes"][0])
+    result = invoke(
+        "torsion", path, "--speeds", "1000,2000", "--format", "csv", "--plot", tmp_path / "pics"
+    )
     lines = result.stdout.splitlines()
     assert lines[0] == "engine,config,speed_rpm,section,order,torque_Nm,stress_Pa,free_end_deg"
     # 2 speeds × 7 sections (pulley, 6 throws, flywheel) × (24 orders + all)
     assert len(lines) == 1 + 2 * 7 * 25
     assert sorted(p.name for p in (tmp_path / "pics").iterdir()) == [
-        "six-campbell.png", "six-modes.png", "six-torque.png"]
+        "six-campbell.png",
+        "six-modes.png",
+        "six-torque.png",
+    ]
 
 
 def test_bad_speeds(tmp_path):
@@ -45,8 +60,9 @@ def test_bad_speeds(tmp_path):
 
 def test_folder_passes_over_engines_without_torsion(tmp_path):
     (tmp_path / "six.toml").write_text(INLINE6 + TORSION6)
-    (tmp_path / "plain.toml").write_text(INLINE6.replace('name = "test in-line 6"',
-                                                         'name = "plain six"'))
+    (tmp_path / "plain.toml").write_text(
+        INLINE6.replace('name = "test in-line 6"', 'name = "plain six"')
+    )
     result = invoke("torsion", tmp_path, "--speeds", "2000", "--format", "json")
     assert result.exit_code == 0, result.output
     assert [e["name"] for e in json.loads(result.stdout)["engines"]] == ["test in-line 6"]
@@ -54,15 +70,18 @@ def test_folder_passes_over_engines_without_torsion(tmp_path):
     (tmp_path / "six.toml").unlink()
     # one engine alone is analysed or refused by name
     result = invoke("torsion", tmp_path)
-    assert result.exit_code == 1 and "plain.toml: engine 'plain six' has no [torsion] table" \
-        in result.output
+    assert (
+        result.exit_code == 1
+        and "plain.toml: engine 'plain six' has no [torsion] table" in result.output
+    )
     (tmp_path / "other.toml").write_text(INLINE6)
     result = invoke("torsion", tmp_path)
     assert result.exit_code == 1 and "none of these engines has a [torsion] table" in result.output
 
 
-@pytest.mark.parametrize("speeds", ["600:inf:25", "600:2400:inf", "1e300", "0:100:1",
-                                    "1:2:0.00001", "nan", "600:2400"])
+@pytest.mark.parametrize(
+    "speeds", ["600:inf:25", "600:2400:inf", "1e300", "0:100:1", "1:2:0.00001", "nan", "600:2400"]
+)
 def test_bad_speeds_are_one_line(tmp_path, speeds):
     path = tmp_path / "six.toml"
     path.write_text(INLINE6 + TORSION6)
@@ -75,11 +94,18 @@ def test_plot_refuses_pictures_that_would_overwrite_each_other(tmp_path):
     for folder in ("a", "b"):
         (tmp_path / folder).mkdir()
         (tmp_path / folder / "x.toml").write_text(INLINE6 + TORSION6)
-    result = invoke("torsion", tmp_path / "a/x.toml", tmp_path / "b/x.toml", "--plot",
-                 tmp_path / "pd")
+    result = invoke(
+        "torsion", tmp_path / "a/x.toml", tmp_path / "b/x.toml", "--plot", tmp_path / "pd"
+    )
     assert result.exit_code == 2 and "x.toml is given twice" in result.output
-    result = invoke("torsion", tmp_path / "a/x.toml", "--plot", tmp_path / "pd", "-o",
-                 tmp_path / "pd/x-torque.png")
+    result = invoke(
+        "torsion",
+        tmp_path / "a/x.toml",
+        "--plot",
+        tmp_path / "pd",
+        "-o",
+        tmp_path / "pd/x-torque.png",
+    )
     assert result.exit_code == 2 and "one of the pictures" in result.output
     assert not (tmp_path / "pd").exists()
 
@@ -90,9 +116,10 @@ def test_units_convert_the_vibratory_torque(tmp_path):
     path = tmp_path / "six.toml"
     path.write_text(INLINE6 + TORSION6)
     si = invoke("torsion", path, "--speeds", "2000", "--format", "csv").output.splitlines()
-    kn = invoke("torsion", path, "--speeds", "2000", "--format", "csv", "--units",
-                "kN").output.splitlines()
+    kn = invoke(
+        "torsion", path, "--speeds", "2000", "--format", "csv", "--units", "kN"
+    ).output.splitlines()
     assert si[0].split(",")[5] == "torque_Nm" and kn[0].split(",")[5] == "torque_kNm"
-    for a, b in zip(si[1:], kn[1:]):
+    for a, b in zip(si[1:], kn[1:], strict=True):
         assert_allclose(float(b.split(",")[5]), float(a.split(",")[5]) / 1000, rtol=1e-12)
     assert "Torque (kN·m)" in invoke("torsion", path, "--speeds", "2000", "--units", "kn").output

@@ -38,20 +38,22 @@ def test_library_names_resolve_to_the_checkouts_files_and_folders(elsewhere):
     assert resolve("library:tanaka-part3/") == PART3
     v8 = CONFIGS / "today" / "v" / "v8-90-cross-plane.toml"
     assert resolve("library:today/v/v8-90-cross-plane.toml") == v8
-    assert resolve("library:today/v/v8-90-cross-plane") == v8   # the .toml is optional
+    assert resolve("library:today/v/v8-90-cross-plane") == v8  # the .toml is optional
     assert find_configs(["library:tanaka-part3"]) == find_configs([PART3])
     assert find_configs("library:") == find_configs([CONFIGS])
-    assert [e.name for e in load_many(["library:tanaka-part3"])] == \
-        [e.name for e in load_many([PART3])]
+    assert [e.name for e in load_many(["library:tanaka-part3"])] == [
+        e.name for e in load_many([PART3])
+    ]
     assert balance.load("library:today/v/v8-90-cross-plane").name == balance.load(v8).name
-    assert read_configuration("library:inline-4-car.toml").data == \
-        read_configuration(CONFIGS / "inline-4-car.toml").data
+    assert (
+        read_configuration("library:inline-4-car.toml").data
+        == read_configuration(CONFIGS / "inline-4-car.toml").data
+    )
 
 
 def test_template_names_resolve_with_or_without_their_toml(elsewhere):
     file = TEMPLATES / "inline-3-2stroke.toml"
-    assert resolve("template:inline-3-2stroke.toml") == resolve("template:inline-3-2stroke") \
-        == file
+    assert resolve("template:inline-3-2stroke.toml") == resolve("template:inline-3-2stroke") == file
     engine = load_template("template:inline-3-2stroke")
     assert engine.name == load_template(file).name
     assert read_configuration("template:inline-3-2stroke").data == read_configuration(file).data
@@ -62,15 +64,26 @@ def test_only_strings_are_names_and_other_paths_are_left_alone():
     assert resolve("configs/inline-4-car.toml") == "configs/inline-4-car.toml"
     assert resolve(PART3) is PART3
     with pytest.raises(balance.ConfigError, match="no such file"):
-        balance.load(Path("library:inline-4-car.toml"))   # a Path is a path, not a name
+        balance.load(Path("library:inline-4-car.toml"))  # a Path is a path, not a name
 
 
-@pytest.mark.parametrize("name, where, held", [
-    ("library:tanaka", "library:", ["tanaka-part3/", "today/", "inline-4-car.toml"]),
-    ("library:today/v/v9-90.toml", "library:today/v", ["v12-60.toml", "v8-90-cross-plane.toml"]),
-    ("library:today/nope/v12-60.toml", "library:today", ["boxer/", "v/", "w/"]),
-    ("template:inline-5-2stroke", "template:", ["inline-3-2stroke.toml", "inline-6-4stroke.toml"]),
-])
+@pytest.mark.parametrize(
+    "name, where, held",
+    [
+        ("library:tanaka", "library:", ["tanaka-part3/", "today/", "inline-4-car.toml"]),
+        (
+            "library:today/v/v9-90.toml",
+            "library:today/v",
+            ["v12-60.toml", "v8-90-cross-plane.toml"],
+        ),
+        ("library:today/nope/v12-60.toml", "library:today", ["boxer/", "v/", "w/"]),
+        (
+            "template:inline-5-2stroke",
+            "template:",
+            ["inline-3-2stroke.toml", "inline-6-4stroke.toml"],
+        ),
+    ],
+)
 def test_a_bad_name_is_one_line_naming_it_and_what_exists(name, where, held):
     with pytest.raises(balance.ConfigError) as caught:
         balance.load(name)
@@ -80,18 +93,22 @@ def test_a_bad_name_is_one_line_naming_it_and_what_exists(name, where, held):
     assert f"; {where} holds " in text
     for entry in held:
         assert entry in text
-    assert "README" not in text   # what can be named: folders and .toml files
+    assert "README" not in text  # what can be named: folders and .toml files
 
 
 def test_a_name_cannot_leave_the_library():
-    with pytest.raises(balance.ConfigError, match=r"'\.\.' leads out of the shipped engine library"):
+    with pytest.raises(
+        balance.ConfigError, match=r"'\.\.' leads out of the shipped engine library"
+    ):
         find_configs(["library:../templates"])
 
 
 def test_every_file_of_the_library_and_templates_is_package_data():
     """pyproject.toml's package-data globs take every file of configs/ and templates/: a new
     kind of file the configurations need (a CSV, say) must be added to them."""
-    setuptools = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"]["setuptools"]
+    setuptools = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"][
+        "setuptools"
+    ]
     for package, folder in (("balance_cli.library", CONFIGS), ("balance_cli.templates", TEMPLATES)):
         assert setuptools["package-dir"][package] == folder.name
         taken = {p for pattern in setuptools["package-data"][package] for p in folder.glob(pattern)}
@@ -103,11 +120,14 @@ def test_every_file_of_the_library_and_templates_is_package_data():
 def test_list_without_a_folder_lists_the_shipped_library_by_its_names(elsewhere):
     result = invoke("list")
     assert result.exit_code == 0, result.output
-    headings = [line.split(" (")[0] for line in result.output.splitlines()
-                if re.fullmatch(r"library:\S* \(\d+ engines?\)", line)]
+    headings = [
+        line.split(" (")[0]
+        for line in result.output.splitlines()
+        if re.fullmatch(r"library:\S* \(\d+ engines?\)", line)
+    ]
     folders = sorted({p.parent.relative_to(CONFIGS).as_posix() for p in CONFIGS.rglob("*.toml")})
     assert headings == ["library:" + ("" if f == "." else f) for f in folders]
-    assert "library:today/v/v8-90-cross-plane.toml " in result.output   # files by their names
+    assert "library:today/v/v8-90-cross-plane.toml " in result.output  # files by their names
     assert str(CONFIGS) not in result.output
     assert invoke("list", "library:today/v").output.startswith("library:today/v (11 engines)\n")
 
@@ -125,8 +145,16 @@ def test_commands_take_library_and_template_names_from_any_folder(elsewhere):
     compared = invoke("compare", "library:tanaka-part3", "--format", "json")
     assert compared.exit_code == 0, compared.output
     assert len(json.loads(compared.output)["engines"]) == 9
-    searched = invoke("search", "template:inline-3-2stroke.toml", "--top", "1", "--format", "json",
-                   "--workers", "1")
+    searched = invoke(
+        "search",
+        "template:inline-3-2stroke.toml",
+        "--top",
+        "1",
+        "--format",
+        "json",
+        "--workers",
+        "1",
+    )
     assert searched.exit_code == 0, searched.output
     assert len(json.loads(searched.output)["results"]) == 1
     checked = invoke("validate", "library:tanaka-part3")
@@ -135,8 +163,11 @@ def test_commands_take_library_and_template_names_from_any_folder(elsewhere):
 
 def test_a_bad_name_on_the_command_line_is_one_line_and_no_traceback(elsewhere):
     code = "from balance_cli.cli import main; main()"
-    for args in (["compare", "library:tanaka-part-3"], ["list", "library:today/x"],
-                 ["search", "template:inline-9-2stroke", "--top", "1"]):
+    for args in (
+        ["compare", "library:tanaka-part-3"],
+        ["list", "library:today/x"],
+        ["search", "template:inline-9-2stroke", "--top", "1"],
+    ):
         done = subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True)
         assert done.returncode == 1, (args, done.stderr)
         assert done.stdout == "" and "Traceback" not in done.stderr

@@ -22,7 +22,7 @@ RTOL_COEFFICIENT = 1e-9
 def inline_template(n, cycle, pitch_mm=500):
     """An in-line template (λ = 0.25, rotating masses too) written like a user's file."""
     throws = "\n".join(f'[[throws]]\nz = "{j * pitch_mm} mm"' for j in range(n))
-    text = f'''name = "In-line {n}, {cycle}-stroke"
+    text = f"""name = "In-line {n}, {cycle}-stroke"
 cycle = {cycle}
 speed = "600 rpm"
 crank_radius = "150 mm"
@@ -33,7 +33,7 @@ rotating = "80 kg"
 [[banks]]
 angle = 0
 {throws}
-'''
+"""
     import tomllib
 
     from balance_cli.config import build
@@ -57,10 +57,22 @@ def orders_of(found):
 SPEED = 2000 * 2 * math.pi / 60
 NAKANISHI = [
     # template, force orders that vanish, his crank, primary couple (his eq. 2 and eq. 5)
-    ("nakanishi-v12-90-2stroke.toml", 5, (0, 120, 240, 60, 300, 180), 480, 60,
-     2 * math.sqrt(3) * 0.15 * (2.84 + 3.12 + 2.0) * 0.08 * SPEED**2),
-    ("nakanishi-w12-60-2stroke.toml", 3, (0, 90, 270, 180), 18, 3,
-     math.sqrt(10) * 0.15 * (1.5 * 2.84 + 4.68 + 2.0) * 0.08 * SPEED**2),
+    (
+        "nakanishi-v12-90-2stroke.toml",
+        5,
+        (0, 120, 240, 60, 300, 180),
+        480,
+        60,
+        2 * math.sqrt(3) * 0.15 * (2.84 + 3.12 + 2.0) * 0.08 * SPEED**2,
+    ),
+    (
+        "nakanishi-w12-60-2stroke.toml",
+        3,
+        (0, 90, 270, 180),
+        18,
+        3,
+        math.sqrt(10) * 0.15 * (1.5 * 2.84 + 4.68 + 2.0) * 0.08 * SPEED**2,
+    ),
 ]
 
 
@@ -111,9 +123,12 @@ def test_the_best_of_seven_cylinders_equal_the_brute_force(objective):
         # in-line: the forward and backward parts of order k > 1 are half each (reciprocating
         # only); order 1 forward carries the rotating mass: (½·120 + 80)/200 of F1
         parts = {"max": 1.0, "forward": 140 / 200, "backward": 60 / 200}
-        score = sum(t.weight * arr[t.kind][t.order] * (parts[t.part] if t.order == 1 else
-                                                       (1.0 if t.part == "max" else 0.5))
-                    for t in terms)
+        score = sum(
+            t.weight
+            * arr[t.kind][t.order]
+            * (parts[t.part] if t.order == 1 else (1.0 if t.part == "max" else 0.5))
+            for t in terms
+        )
         ranked.append((round(score / 1e-9), reference.canonical_firing(arr), score))
     ranked.sort()
     found = search(inline_template(7, 2), objective, top=10, workers=1)
@@ -122,8 +137,12 @@ def test_the_best_of_seven_cylinders_equal_the_brute_force(objective):
     # primary, which the FFT of positions of about the rod's length gives to ~1e-13 of the
     # primary: ~1e-7 in those coefficients
     atol = 1e-7 if objective is None else 1e-9
-    assert_allclose([a.score for a in found.arrangements], [r[2] for r in ranked[:10]],
-                    rtol=RTOL_COEFFICIENT, atol=atol)
+    assert_allclose(
+        [a.score for a in found.arrangements],
+        [r[2] for r in ranked[:10]],
+        rtol=RTOL_COEFFICIENT,
+        atol=atol,
+    )
 
 
 def test_inline_six_two_stroke_primary_and_secondary_couples():
@@ -157,8 +176,9 @@ def test_inline_six_four_stroke_standard_crank_leaves_nothing_of_orders_one_and_
 def test_inline_four_keeps_four_units_of_secondary_force_whatever_the_crank():
     found = search(template("inline-4-4stroke.toml"), "F2", top=3)
     assert found.arrangements_distinct == 3
-    assert_allclose([a.coefficients["F2"] for a in found.arrangements], [4.0] * 3,
-                    rtol=RTOL_COEFFICIENT)
+    assert_allclose(
+        [a.coefficients["F2"] for a in found.arrangements], [4.0] * 3, rtol=RTOL_COEFFICIENT
+    )
 
 
 def test_inline_three_couples_are_root_three():
@@ -181,16 +201,28 @@ def test_nakanishi_cranks_are_among_the_force_free_ones(name, orders, crank, cra
     reversed_crank = tuple((-p) % 360 for p in crank)
     his = [a for a in found.arrangements if a.phases_deg in (crank, reversed_crank)]
     assert len(his) == 1
-    assert_allclose(his[0].result.order(1).moment_forward.__abs__()
-                    + abs(his[0].result.order(1).moment_backward), couple, rtol=1e-9)
+    assert_allclose(
+        his[0].result.order(1).moment_forward.__abs__()
+        + abs(his[0].result.order(1).moment_backward),
+        couple,
+        rtol=1e-9,
+    )
 
 
-@pytest.mark.parametrize("name,objective,crank", [
-    ("nakanishi-v12-90-2stroke.toml", "F1,F2,F3,F4,F5,M2,M4,M1:0.01", (0, 120, 240, 60, 300, 180)),
-    ("nakanishi-w12-60-2stroke.toml", "F1,F2,F3,M2,M1:0.01", (0, 90, 270, 180)),
-])
-def test_nakanishi_crank_is_the_best_without_low_forces_and_secondary_couple(name, objective,
-                                                                          crank):
+@pytest.mark.parametrize(
+    "name,objective,crank",
+    [
+        (
+            "nakanishi-v12-90-2stroke.toml",
+            "F1,F2,F3,F4,F5,M2,M4,M1:0.01",
+            (0, 120, 240, 60, 300, 180),
+        ),
+        ("nakanishi-w12-60-2stroke.toml", "F1,F2,F3,M2,M1:0.01", (0, 90, 270, 180)),
+    ],
+)
+def test_nakanishi_crank_is_the_best_without_low_forces_and_secondary_couple(
+    name, objective, crank
+):
     """Asking also for no secondary (and fourth) couple and the least primary couple, his
     crank comes first: what he found by hand is proved optimal."""
     found = search(template(name), objective, top=2)
@@ -205,8 +237,9 @@ def test_processes_and_a_dask_cluster_find_what_one_process_finds():
     eight = inline_template(8, 2)
     one = search(eight, "M1,M2,M4", top=12, workers=1)
     two = search(eight, "M1,M2,M4", top=12, workers=2)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                  dashboard_address=":0") as cluster:
+    with distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0"
+    ) as cluster:
         remote = search(eight, "M1,M2,M4", top=12, scheduler=cluster.scheduler_address)
     for other in (two, remote):
         assert orders_of(other) == orders_of(one)
@@ -215,7 +248,7 @@ def test_processes_and_a_dask_cluster_find_what_one_process_finds():
 
 
 def test_without_dask_a_scheduler_names_the_extra_to_install(monkeypatch):
-    monkeypatch.setitem(sys.modules, "distributed", None)   # import distributed fails
+    monkeypatch.setitem(sys.modules, "distributed", None)  # import distributed fails
     with pytest.raises(AnalysisError, match=r"pip install 'engine-balance\[cluster\]'") as caught:
         search(inline_template(4, 2), "M1", scheduler="tcp://127.0.0.1:1")
     assert caught.value.parameter == "scheduler"
@@ -232,8 +265,9 @@ def test_heuristic_is_labelled_and_finds_the_best_of_a_small_engine():
 def test_uneven_cranks_on_a_grid_match_a_brute_force():
     """In-line 4 four-stroke, phases on a 90° grid: 4³ = 64 cranks, (64 + 8 self-reversed)/2
     = 36 distinct; the best scores as the in-line formula gives them for every crank."""
-    found = search(inline_template(4, 4), "F1,F2,M1,M2", top=36, allow_uneven=True,
-                   step_deg=90.0, workers=1)
+    found = search(
+        inline_template(4, 4), "F1,F2,M1,M2", top=36, allow_uneven=True, step_deg=90.0, workers=1
+    )
     assert (found.arrangements_total, found.arrangements_distinct) == (64, 36)
     z = np.arange(4) - 1.5
     scores = set()
@@ -246,26 +280,39 @@ def test_uneven_cranks_on_a_grid_match_a_brute_force():
     assert not all(a.result.firing.uniform for a in found.arrangements)
 
 
-@pytest.mark.parametrize("text,key", [
-    ('[[throws]]\nphase = 0\nz = "0 mm"\n[[throws]]\nz = "1 m"\n', "throws[1].phase"),
-    ('firing_order = [1, 2]\n[[throws]]\nz = "0 mm"\n[[throws]]\nz = "1 m"\n', "firing_order"),
-])
+@pytest.mark.parametrize(
+    "text,key",
+    [
+        ('[[throws]]\nphase = 0\nz = "0 mm"\n[[throws]]\nz = "1 m"\n', "throws[1].phase"),
+        ('firing_order = [1, 2]\n[[throws]]\nz = "0 mm"\n[[throws]]\nz = "1 m"\n', "firing_order"),
+    ],
+)
 def test_a_template_gives_no_phases_and_no_firing_order(tmp_path, text, key):
     path = tmp_path / "t.toml"
-    path.write_text('name = "x"\ncycle = 2\nspeed = "1000 rpm"\ncrank_radius = "50 mm"\n'
-                    'rod_length = "200 mm"\n[masses]\nreciprocating = "1 kg"\n[[banks]]\n'
-                    'angle = 0\n' + text)
+    path.write_text(
+        'name = "x"\ncycle = 2\nspeed = "1000 rpm"\ncrank_radius = "50 mm"\n'
+        'rod_length = "200 mm"\n[masses]\nreciprocating = "1 kg"\n[[banks]]\n'
+        "angle = 0\n" + text
+    )
     with pytest.raises(ConfigError, match=key.replace("[", r"\[").replace("]", r"\]")):
         balance.load_template(path)
 
 
-@pytest.mark.parametrize("kwargs,parameter", [
-    ({"objective": "Q1"}, "objective"), ({"objective": "F9"}, "objective"),
-    ({"objective": "F2:-1"}, "objective"), ({"objective": "M1,M1"}, "objective"),
-    ({"top": 0}, "top"), ({"workers": 0}, "workers"), ({"step_deg": 30.0}, "step_deg"),
-    ({"allow_uneven": True}, "step_deg"), ({"allow_uneven": True, "step_deg": 7.0}, "step_deg"),
-    ({"limit": 10}, "limit"),
-])
+@pytest.mark.parametrize(
+    "kwargs,parameter",
+    [
+        ({"objective": "Q1"}, "objective"),
+        ({"objective": "F9"}, "objective"),
+        ({"objective": "F2:-1"}, "objective"),
+        ({"objective": "M1,M1"}, "objective"),
+        ({"top": 0}, "top"),
+        ({"workers": 0}, "workers"),
+        ({"step_deg": 30.0}, "step_deg"),
+        ({"allow_uneven": True}, "step_deg"),
+        ({"allow_uneven": True, "step_deg": 7.0}, "step_deg"),
+        ({"limit": 10}, "limit"),
+    ],
+)
 def test_bad_search_settings_name_their_parameter(kwargs, parameter):
     with pytest.raises(AnalysisError) as caught:
         search(inline_template(6, 2), **kwargs)
@@ -299,10 +346,14 @@ def test_search_scores_scale_with_the_weights():
     plain = search_api(template, "M1,M2", top=6)
     for scale in (1e100, 1e-10):
         scaled = search_api(template, f"M1:{scale:g},M2:{scale:g}", top=6)
-        assert [a.firing_order for a in scaled.arrangements] == \
-            [a.firing_order for a in plain.arrangements]
-        np.testing.assert_allclose([a.score for a in scaled.arrangements],
-                                   [scale * a.score for a in plain.arrangements], rtol=1e-12)
+        assert [a.firing_order for a in scaled.arrangements] == [
+            a.firing_order for a in plain.arrangements
+        ]
+        np.testing.assert_allclose(
+            [a.score for a in scaled.arrangements],
+            [scale * a.score for a in plain.arrangements],
+            rtol=1e-12,
+        )
 
 
 def test_a_tiny_weight_still_ranks_the_smaller_coefficient_first():
@@ -317,7 +368,7 @@ def test_a_tiny_weight_still_ranks_the_smaller_coefficient_first():
     np.testing.assert_allclose(m1[:2], 0.0, atol=1e-9)
     assert min(m1[2:]) > 0.5
     scores = np.array([a.score for a in found.arrangements])
-    assert np.all(np.diff(scores) >= -1e-9 * scores.max())   # ranked by score, to its rounding
+    assert np.all(np.diff(scores) >= -1e-9 * scores.max())  # ranked by score, to its rounding
 
 
 @pytest.mark.parametrize("n", [20, 21, 22, 23])
@@ -349,8 +400,9 @@ def test_the_closed_form_count_is_the_dynamic_programmes():
     from balance_cli.cranksearch.problem import Problem
 
     for n, P, cap, expected in ((10, 10, 1, math.factorial(9)), (8, 4, 2, 630)):
-        problem = Problem(n, P, 360.0 / P, np.zeros(n), cap, [[0]] * n, None,
-                          None, False, False, 1 + (n - 1) // 2)
+        problem = Problem(
+            n, P, 360.0 / P, np.zeros(n), cap, [[0]] * n, None, None, False, False, 1 + (n - 1) // 2
+        )
         assert tables.count_cranks(problem) == expected
         assert tables._count_by_occupancy(problem) == expected
 
@@ -403,8 +455,9 @@ def test_workers_are_capped_at_what_helps_and_reported_as_run():
     template = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
     found = search(template, "M1", top=2, workers=1000)
     assert 1 <= found.workers <= _cores()
-    assert [a.firing_order for a in found.arrangements] == \
-        [a.firing_order for a in search_api(template, "M1", top=2).arrangements]
+    assert [a.firing_order for a in found.arrangements] == [
+        a.firing_order for a in search_api(template, "M1", top=2).arrangements
+    ]
 
 
 def test_progress_covers_the_listed_arrangements_analyses():
@@ -415,7 +468,9 @@ def test_progress_covers_the_listed_arrangements_analyses():
 
     template = balance.load_template(TEMPLATES / "inline-6-2stroke.toml")
     calls = []
-    found = search_api(template, "M1", top=5, progress=lambda done, total: calls.append((done, total)))
+    found = search_api(
+        template, "M1", top=5, progress=lambda done, total: calls.append((done, total))
+    )
     totals = {total for _, total in calls}
     assert len(totals) == 1
     total = totals.pop()

@@ -76,8 +76,10 @@ def test_the_fine_grid_travel_is_the_closed_linkage_at_those_angles():
     """Second method: the linkage closed directly at the firing angle plus each angle of the
     gas cycle's grid (as the gas cycle read it before). The shift theorem on the fine grid
     agrees to rounding: 1e-14 of the stroke."""
-    for config in ("configs/abc-dragonfly.toml",
-                   "configs/today/opposed-piston/junkers-jumo-205.toml"):
+    for config in (
+        "configs/abc-dragonfly.toml",
+        "configs/today/opposed-piston/junkers-jumo-205.toml",
+    ):
         engine = balance.load(ROOT / config)
         fire = firing_angles(engine)
         for c in engine.cylinders[:3]:
@@ -97,11 +99,13 @@ def test_travel_rates_are_the_derivative_of_travel():
     falls after TDC, so the rate is its negative), to 1e-12 of r."""
     engine = fresh(MENDES, "rates")
     state = kinematic_state(engine, 256)
-    r, l = engine.crank_radius_m, engine.rod_length_m
-    lam = r / l
+    r, rod = engine.crank_radius_m, engine.rod_length_m
+    lam = r / rod
     c = engine.cylinders[0]
     theta = state.angles_rad + engine.throws[c.throw_index].phase_rad
-    by_hand = -r * np.sin(theta) * (1 + lam * np.cos(theta) / np.sqrt(1 - (lam * np.sin(theta))**2))
+    by_hand = (
+        -r * np.sin(theta) * (1 + lam * np.cos(theta) / np.sqrt(1 - (lam * np.sin(theta)) ** 2))
+    )
     assert_allclose(state.travel_rates[c.number], by_hand, rtol=0, atol=1e-12 * r)
 
 

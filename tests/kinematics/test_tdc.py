@@ -25,9 +25,9 @@ def test_tdc_is_where_bank_angle_equals_crank_phase():
 def test_pin_offset_moves_tdc_to_the_collinear_position():
     """With offset e the piston is farthest out when crank and rod are collinear:
     sin ψ = e/(l + r)."""
-    r, l, e = 0.05, 0.2, 0.01
-    tdc = tdc_angles(make_engine([0], [(0, 0.0)], r=r, l=l, pin_offset=e))
-    assert_allclose(tdc[1], math.degrees(math.asin(e / (l + r))), atol=1e-4)
+    r, rod, e = 0.05, 0.2, 0.01
+    tdc = tdc_angles(make_engine([0], [(0, 0.0)], r=r, rod=rod, pin_offset=e))
+    assert_allclose(tdc[1], math.degrees(math.asin(e / (rod + r))), atol=1e-4)
 
 
 def test_rotary_tdc_runs_backwards_through_the_cylinders():
@@ -45,12 +45,16 @@ def test_link_rods_shift_tdc_slightly():
     (r_n·λ…, a few per cent of l + R): ±0.2°."""
     engine = load(CONFIGS / "bramo-323.toml")
     tdc = tdc_angles(engine)
-    psi, r_n, l, big_l, radius = math.radians(80), 0.07126, 0.2615, 0.330, 0.080
+    psi, r_n, rod, big_l, radius = math.radians(80), 0.07126, 0.2615, 0.330, 0.080
     lam = radius / big_l
-    estimate = r_n * (1 - l / big_l * math.cos(psi)) * lam * math.sin(psi) / (l + radius)
+    estimate = r_n * (1 - rod / big_l * math.cos(psi)) * lam * math.sin(psi) / (rod + radius)
     assert abs(tdc[3] - 80 - math.degrees(estimate)) < 0.2
-    plain = dataclasses.replace(engine, cylinders=tuple(
-        dataclasses.replace(c, master=None, knuckle_kg=0.0) for c in engine.cylinders))
+    plain = dataclasses.replace(
+        engine,
+        cylinders=tuple(
+            dataclasses.replace(c, master=None, knuckle_kg=0.0) for c in engine.cylinders
+        ),
+    )
     assert_allclose(tdc_angles(plain)[3], 80.0, atol=1e-6)
 
 
@@ -66,30 +70,42 @@ def test_tdc_of_cylinder_one_is_zero_not_360():
 def test_tdc_search_memory_is_linear_in_cylinders():
     """piston_travel of chosen cylinders computes only those (and their masters): the TDC
     refinement of a 400-cylinder grid needs arrays of 101 angles, not 400 × 400 × 101."""
-    engine = make_engine([3.6 * i for i in range(20)], [(18 * t, 0.05 * t) for t in range(20)],
-                         cycle=2)
+    engine = make_engine(
+        [3.6 * i for i in range(20)], [(18 * t, 0.05 * t) for t in range(20)], cycle=2
+    )
     travel = balance_cli.kinematics.linkage.piston_travel(engine, [0.0, 0.1], [7])
     assert list(travel) == [7]
     tdc = balance_cli.kinematics.tdc_angles(engine)
     assert len(tdc) == 400
-    cylinder = engine.cylinder(27)   # bank 2 (3.6°), throw 7 (108°): TDC at 3.6 − 108 mod 360
+    cylinder = engine.cylinder(27)  # bank 2 (3.6°), throw 7 (108°): TDC at 3.6 − 108 mod 360
     assert_allclose(tdc[27], (3.6 - 108.0) % 360, atol=1e-5)
     assert cylinder.bank == 2
 
 
-@pytest.mark.parametrize("config", [VR6, "configs/today/h/brm-h16.toml",
-                                    "configs/today/v/v6-90-odd-fire.toml"])
+@pytest.mark.parametrize(
+    "config", [VR6, "configs/today/h/brm-h16.toml", "configs/today/v/v6-90-odd-fire.toml"]
+)
 def test_closed_form_top_dead_centres_match_the_travels_maximum(config):
     """Plain rods' TDCs are computed in closed form (crank and rod in line); the second method
     is the maximum of each piston's exact travel on a grid of 1e-5° round it."""
     from balance_cli.kinematics.linkage import piston_travel
+
     engine = balance.load(config)
     if config == VR6:
         # a reversed copy with a gear phase too: the offset's sense follows the crankshaft
-        engine = engine.replace(cylinders=tuple(
-            balance.Cylinder(c.number, c.bank, c.throw, c.z_m, c.reciprocating_kg,
-                             pin_offset_m=0.02 * (1 if c.number % 2 else -1))
-            for c in engine.cylinders))
+        engine = engine.replace(
+            cylinders=tuple(
+                balance.Cylinder(
+                    c.number,
+                    c.bank,
+                    c.throw,
+                    c.z_m,
+                    c.reciprocating_kg,
+                    pin_offset_m=0.02 * (1 if c.number % 2 else -1),
+                )
+                for c in engine.cylinders
+            )
+        )
     tdc = tdc_angles(engine)
     for c in engine.cylinders:
         around = np.radians(tdc[c.number] + np.linspace(-0.01, 0.01, 2001))

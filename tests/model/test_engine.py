@@ -23,8 +23,12 @@ def test_two_cylinders_in_one_bore_are_refused_in_code():
 
 def test_non_finite_values_are_refused_in_code():
     engine = make_engine([0], [(0, 0.0)])
-    for field, value in (("speed_rad_s", math.inf), ("crank_radius_m", math.nan),
-                         ("rod_length_m", 1e300), ("rotating_kg", -1.0)):
+    for field, value in (
+        ("speed_rad_s", math.inf),
+        ("crank_radius_m", math.nan),
+        ("rod_length_m", 1e300),
+        ("rotating_kg", -1.0),
+    ):
         with pytest.raises(ModelError, match=field):
             dataclasses.replace(engine, **{field: value})
     with pytest.raises(balance.CounterweightError, match="radius_m is invalid"):
@@ -35,8 +39,9 @@ def test_non_finite_values_are_refused_in_code():
 
 def test_engine_fields_given_as_lists_become_tuples():
     engine = make_engine([0], [(0, 0.0), (180, 0.1)])
-    listed = dataclasses.replace(engine, throws=list(engine.throws), cylinders=list(engine.cylinders),
-                                 firing_order=[1, 2])
+    listed = dataclasses.replace(
+        engine, throws=list(engine.throws), cylinders=list(engine.cylinders), firing_order=[1, 2]
+    )
     assert listed.throws == engine.throws and hash(listed)
     assert balance.analyse(listed).order(2) == balance.analyse(engine).order(2)
     with pytest.raises(balance.ModelError, match="Throw objects"):

@@ -15,30 +15,35 @@ def test_radial_secondary_locus_is_a_circle_of_its_forward_amplitude(part3):
     x, y = plot.locus_points(result, order=2)
     second = result.order(2)
     unit = result.per_cylinder_unit_n
-    assert_allclose(np.hypot(x, y), abs(second.force_forward) / unit,
-                    atol=abs(second.force_backward) / unit + 1e-12)
+    assert_allclose(
+        np.hypot(x, y),
+        abs(second.force_forward) / unit,
+        atol=abs(second.force_backward) / unit + 1e-12,
+    )
 
 
 def test_flat_crank_v8_secondary_locus_is_a_segment_across(part3):
     x, y = plot.locus_points(part3["1a-v8-90-flat"], order=2)
     assert np.abs(y).max() < 1e-12
-    assert_allclose(np.abs(x).max(), 0.21473, atol=1e-5)   # √2/2·B2: test_papers
+    assert_allclose(np.abs(x).max(), 0.21473, atol=1e-5)  # √2/2·B2: test_papers
     assert x.min() < 0 < x.max()
 
 
 def test_locus_leaves_out_the_forward_first_order_on_a_crankshaft_only(part3):
     x, y = plot.locus_points(part3["5a-radial-9"])
-    assert np.hypot(x, y).max() < 0.07      # the 0.5 primary is counterweighted
+    assert np.hypot(x, y).max() < 0.07  # the 0.5 primary is counterweighted
     x, y = plot.locus_points(part3["5b-rotary-9"])
-    assert_allclose(np.abs(x).max(), 0.0341, atol=1e-4)   # nothing removed on a rotary
+    assert_allclose(np.abs(x).max(), 0.0341, atol=1e-4)  # nothing removed on a rotary
 
 
 def test_locus_figure_draws_each_engines_points_with_its_own_colour(part3):
     results = list(part3.values())
     fig = plot.locus(results)
-    lines = [line for line in fig.axes[0].lines if line.get_label() in {r.engine.name for r in results}]
+    lines = [
+        line for line in fig.axes[0].lines if line.get_label() in {r.engine.name for r in results}
+    ]
     assert [line.get_label() for line in lines] == [r.engine.name for r in results]
-    for line, result in zip(lines, results):
+    for line, result in zip(lines, results, strict=True):
         x, y = plot.locus_points(result)
         assert_allclose(line.get_xdata()[:-1], x, atol=1e-15)
         assert_allclose(line.get_ydata()[:-1], y, atol=1e-15)
@@ -62,9 +67,10 @@ def test_inline_3_moment_locus_is_all_pitching_until_the_counterweight_turns_hal
     assert_allclose(x, 0.0, atol=1e-9)
     # Σ (z_i − z̄)·m·r·ω²·cos(θ + β_i) = m·r·ω²·d·(cos(θ + 240°) − cos θ),
     # of amplitude √3·m·r·ω²·d
-    assert_allclose(y, MRW2 * PITCH * (np.cos(theta + math.radians(240)) - np.cos(theta)),
-                    rtol=0, atol=1e-9)
-    assert_allclose(np.abs(y).max(), math.sqrt(3) * MRW2 * PITCH, rtol=1e-5)   # sampled peak
+    assert_allclose(
+        y, MRW2 * PITCH * (np.cos(theta + math.radians(240)) - np.cos(theta)), rtol=0, atol=1e-9
+    )
+    assert_allclose(np.abs(y).max(), math.sqrt(3) * MRW2 * PITCH, rtol=1e-5)  # sampled peak
     x, y = plot.locus_points(result, 1, of="moment")
     assert_allclose(np.hypot(x, y), math.sqrt(3) / 2 * MRW2 * PITCH, rtol=1e-12)
 

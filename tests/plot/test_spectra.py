@@ -17,20 +17,31 @@ def test_spectrum_data_is_the_orders_of_compare_in_each_unit(library):
     (result,) = chosen
     o = result.order(1)
     unit = result.per_cylinder_unit_n
-    for units, force_scale, moment_scale in (("per-cylinder", 1 / unit, 1.0), ("N", 1.0, 1.0),
-                                             ("kgf", 1 / STANDARD_GRAVITY, 1 / STANDARD_GRAVITY)):
+    for units, force_scale, moment_scale in (
+        ("per-cylinder", 1 / unit, 1.0),
+        ("N", 1.0, 1.0),
+        ("kgf", 1 / STANDARD_GRAVITY, 1 / STANDARD_GRAVITY),
+    ):
         data = plot.spectrum_data(chosen, units)
         (engine,) = data["engines"]
-        assert_allclose(engine["force"][0], [abs(o.force_forward) * force_scale,
-                                             abs(o.force_backward) * force_scale], rtol=1e-12)
-        assert_allclose(engine["moment"][0], [abs(o.moment_forward) * moment_scale,
-                                              abs(o.moment_backward) * moment_scale], rtol=1e-12)
+        assert_allclose(
+            engine["force"][0],
+            [abs(o.force_forward) * force_scale, abs(o.force_backward) * force_scale],
+            rtol=1e-12,
+        )
+        assert_allclose(
+            engine["moment"][0],
+            [abs(o.moment_forward) * moment_scale, abs(o.moment_backward) * moment_scale],
+            rtol=1e-12,
+        )
     assert plot.spectrum_data(chosen, "kgf")["moment_label"] == "free moment (kgf·m)"
     # 1 lbf·ft = 0.45359237 kg × 9.80665 m/s² × 0.3048 m
     assert plot.spectrum_data(chosen, "lbf")["moment_label"] == "free moment (lbf·ft)"
-    assert_allclose(plot.spectrum_data(chosen, "lbf")["engines"][0]["moment"],
-                    plot.spectrum_data(chosen, "N")["engines"][0]["moment"]
-                    / (0.45359237 * 9.80665 * 0.3048), rtol=1e-12)
+    assert_allclose(
+        plot.spectrum_data(chosen, "lbf")["engines"][0]["moment"],
+        plot.spectrum_data(chosen, "N")["engines"][0]["moment"] / (0.45359237 * 9.80665 * 0.3048),
+        rtol=1e-12,
+    )
     with pytest.raises(PlotError, match="units must be one of"):
         plot.spectrum_data(chosen, "dyn")
 
@@ -43,11 +54,18 @@ def test_spectrum_gives_every_engine_its_own_colour_and_aligns_its_panels(librar
     # seven, has no free force below the 14th order, only moments), or none above the panels'
     # floors, and then no colour on the axes: in configs/today the flat 12 has nothing in any
     # order and the boxer 6 only a sixth-order couple of 0.17 N·m, under the moment floor
-    faces = {tuple(np.round(c.get_facecolor()[0][:3], 6))
-             for ax in (force, moment) for c in ax.collections}
+    faces = {
+        tuple(np.round(c.get_facecolor()[0][:3], 6))
+        for ax in (force, moment)
+        for c in ax.collections
+    }
     data = plot.spectrum_data(library, "per-cylinder")
-    shown = [e for e in data["engines"]
-             if (e["force"][:8] > data["force_floor"]).any() or (e["moment"][:8] > data["moment_floor"]).any()]
+    shown = [
+        e
+        for e in data["engines"]
+        if (e["force"][:8] > data["force_floor"]).any()
+        or (e["moment"][:8] > data["moment_floor"]).any()
+    ]
     assert len(library) == len(balance.find_configs([CONFIGS]))
     hidden = {e["name"] for e in data["engines"]} - {e["name"] for e in shown}
     assert hidden == {"Flat 12, 180° V (Ferrari 512 BB)", "Boxer 6 (Porsche 9A1 3.8)"}

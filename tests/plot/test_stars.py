@@ -12,9 +12,16 @@ from balance_cli.errors import PlotError
 from tests.support import MRW2, PITCH, RADIAL
 
 
-@pytest.mark.parametrize("config", ["tanaka-part3/1b-v8-90-flat-links.toml", "tanaka-part3/5a-radial-9.toml",
-                                    "tanaka-part3/5b-rotary-9.toml", "bramo-323.toml",
-                                    "nakanishi-w12-60-2stroke.toml"])
+@pytest.mark.parametrize(
+    "config",
+    [
+        "tanaka-part3/1b-v8-90-flat-links.toml",
+        "tanaka-part3/5a-radial-9.toml",
+        "tanaka-part3/5b-rotary-9.toml",
+        "bramo-323.toml",
+        "nakanishi-w12-60-2stroke.toml",
+    ],
+)
 @pytest.mark.parametrize("order", [1, 2, 4])
 def test_star_chain_closes_on_the_resultant_of_compare(library, config, order):
     result = next(r for r in library if r.engine.config_path.endswith(config))
@@ -26,7 +33,7 @@ def test_star_chain_closes_on_the_resultant_of_compare(library, config, order):
         end = arrows[-1][2] if arrows else 0j
         assert_allclose(end, expected / unit, atol=1e-10)
         # tip to tail
-        for (_, _, head), (_, tail, _) in zip(arrows, arrows[1:]):
+        for (_, _, head), (_, tail, _) in zip(arrows, arrows[1:], strict=False):
             assert head == tail
     labels = {a[0] for part in chains.values() for a in part}
     assert labels <= {str(c.number) for c in result.engine.cylinders} | {"pins"}
@@ -35,16 +42,16 @@ def test_star_chain_closes_on_the_resultant_of_compare(library, config, order):
 def test_star_figure_draws_the_chains(library):
     chosen = library[:4]
     fig = plot.star(chosen, order=2)
-    for ax, result in zip(fig.axes, chosen):
+    for ax, result in zip(fig.axes, chosen, strict=True):
         chains = plot.star_chains(result, 2)
         quivers = [c for c in ax.collections if isinstance(c, matplotlib.quiver.Quiver)]
         drawn = [part for part in ("forward", "backward") if chains[part]]
         assert len(quivers) == len(drawn)
-        for quiver, part in zip(quivers, drawn):
+        for quiver, part in zip(quivers, drawn, strict=True):
             tails = np.array([a[1] for a in chains[part]])
-            assert_allclose(quiver.X, tails.imag, atol=1e-15)    # across is horizontal
-            assert_allclose(quiver.Y, tails.real, atol=1e-15)    # along is vertical
-    assert len(fig.axes) == len(chosen)   # the empty cells of the grid get no axes
+            assert_allclose(quiver.X, tails.imag, atol=1e-15)  # across is horizontal
+            assert_allclose(quiver.Y, tails.real, atol=1e-15)  # along is vertical
+    assert len(fig.axes) == len(chosen)  # the empty cells of the grid get no axes
 
 
 def test_inline_3_moment_star_chains_each_cylinders_lever_times_its_force(couples):
@@ -57,14 +64,19 @@ def test_inline_3_moment_star_chains_each_cylinders_lever_times_its_force(couple
     for part, sign in (("forward", 1), ("backward", -1)):
         arrows = chains[part]
         assert [label for label, _, _ in arrows] == ["1", "3"]
-        expected = {"1": -PITCH * MRW2 / 2, "3": PITCH * MRW2 / 2 * np.exp(sign * 1j * math.radians(240))}
+        expected = {
+            "1": -PITCH * MRW2 / 2,
+            "3": PITCH * MRW2 / 2 * np.exp(sign * 1j * math.radians(240)),
+        }
         for label, tail, head in arrows:
             assert_allclose(head - tail, expected[label], rtol=1e-12, atol=1e-9)
-        for (_, _, head), (_, tail, _) in zip(arrows, arrows[1:]):
+        for (_, _, head), (_, tail, _) in zip(arrows, arrows[1:], strict=False):
             assert head == tail
         end = arrows[-1][2]
         assert_allclose(abs(end), math.sqrt(3) / 2 * MRW2 * PITCH, rtol=1e-12)
-        moment = result.order(1).moment_forward if part == "forward" else result.order(1).moment_backward
+        moment = (
+            result.order(1).moment_forward if part == "forward" else result.order(1).moment_backward
+        )
         assert_allclose(end, moment, rtol=1e-12, atol=1e-9)
 
 
@@ -83,8 +95,15 @@ def test_cross_plane_v8_primary_couple_is_all_forward_and_the_counterweight_leav
     assert fig.axes[0].lines[0].get_label() == "90° V8, cross-plane (no free moment)"
 
 
-@pytest.mark.parametrize("config", ["nakanishi-v12-90-2stroke.toml", "nakanishi-w12-60-2stroke.toml",
-                                    "bramo-323.toml", "inline-12.toml"])
+@pytest.mark.parametrize(
+    "config",
+    [
+        "nakanishi-v12-90-2stroke.toml",
+        "nakanishi-w12-60-2stroke.toml",
+        "bramo-323.toml",
+        "inline-12.toml",
+    ],
+)
 @pytest.mark.parametrize("order", [1, 2])
 def test_moment_star_closes_on_the_free_moment_of_compare(library, config, order):
     result = next(r for r in library if r.engine.config_path.endswith(config))
@@ -108,20 +127,25 @@ def test_moment_star_and_locus_figures_draw_the_moment_in_n_m(couples):
     assert f"forward: |Σ| = {math.sqrt(3) / 2 * MRW2 * PITCH:.4g} N·m" in texts
     assert "free moment" in fig._suptitle.get_text()
     assert plot.stars._magnitude(4980395.12, "N·m") == "4 980 395 N·m"
-    assert (plot.stars._magnitude(427.3664, "N·m") == "427.4 N·m"
-            and plot.stars._magnitude(0.0, "N·m") == "0 N·m")
+    assert (
+        plot.stars._magnitude(427.3664, "N·m") == "427.4 N·m"
+        and plot.stars._magnitude(0.0, "N·m") == "0 N·m"
+    )
     fig = plot.locus([result], of="moment")
     assert "free moment" in fig.axes[0].get_title() and "N·m" in fig.axes[0].get_xlabel()
     x, y = plot.locus_points(result, of="moment")
     assert_allclose(fig.axes[0].lines[0].get_ydata()[:-1], y, atol=0)
-    for call in (lambda: plot.locus([result], of="torque"), lambda: plot.star_chains(result, 1, "couple"),
-                 lambda: plot.locus_points(result, of="Moment")):
+    for call in (
+        lambda: plot.locus([result], of="torque"),
+        lambda: plot.star_chains(result, 1, "couple"),
+        lambda: plot.locus_points(result, of="Moment"),
+    ):
         with pytest.raises(PlotError, match="of must be one of force, moment"):
             call()
 
 
 @pytest.mark.parametrize("of", ["force", "moment"])
-@pytest.mark.parametrize("order", [1, 2, 4])   # a plain rod has no third order
+@pytest.mark.parametrize("order", [1, 2, 4])  # a plain rod has no third order
 def test_star_labels_of_24_cylinders_do_not_overlap(couples, of, order):
     """The labels the renderer draws (not the placement's estimate) overlap no other label and
     no picture's title, lie inside the figure, each beside its own arrow; the longest arrows
@@ -137,15 +161,17 @@ def test_star_labels_of_24_cylinders_do_not_overlap(couples, of, order):
     arrows = chains["forward"] + chains["backward"]
     assert len(labels) >= 12
     for i, box in enumerate(boxes):
-        assert not any(box.overlaps(other) for other in boxes[i + 1:]), labels[i].get_text()
+        assert not any(box.overlaps(other) for other in boxes[i + 1 :]), labels[i].get_text()
         assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1
         assert fig.bbox.y0 <= box.y0 and box.y1 <= fig.bbox.y1
-        for other in fig.texts + [a.title for a in fig.axes] + [t for t in ax.texts if t.get_gid() is None]:
+        for other in (
+            fig.texts + [a.title for a in fig.axes] + [t for t in ax.texts if t.get_gid() is None]
+        ):
             if other.get_text():
                 assert not box.overlaps(other.get_window_extent(renderer))
     # beside its arrow: the label's centre within its size plus 3 points of the segment
     points = 72.0 / fig.dpi
-    for label, box in zip(labels, boxes):
+    for label, box in zip(labels, boxes, strict=True):
         centre = np.array([(box.x0 + box.x1) / 2, (box.y0 + box.y1) / 2])
         near = []
         for name, tail, head in arrows:
@@ -171,7 +197,7 @@ def test_place_labels_refuses_overlaps_and_skips_short_segments():
     assert centres[-1] is None and all(c is not None for c in centres[:-1])
     boxes = [(x - 4, y - 4.5, x + 4, y + 4.5) for x, y in centres[:-1]]
     for i, a in enumerate(boxes):
-        for b in boxes[i + 1:]:
+        for b in boxes[i + 1 :]:
             assert not (a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3])
 
 
@@ -180,9 +206,16 @@ def test_star_titles_of_long_names_stay_apart(couples, tmp_path):
     picture's title; an engine with no moment says so."""
     from dataclasses import replace
 
-    results = [analyse(replace(couples[key].engine, name=couples[key].engine.name
-                               + " with a very long descriptive name for the design review"))
-               for key in ("inline-3", "twin", "v8-cross")]
+    results = [
+        analyse(
+            replace(
+                couples[key].engine,
+                name=couples[key].engine.name
+                + " with a very long descriptive name for the design review",
+            )
+        )
+        for key in ("inline-3", "twin", "v8-cross")
+    ]
     fig = plot.star(results + [analyse(load(RADIAL))], order=1, of="moment")
     fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
@@ -190,7 +223,7 @@ def test_star_titles_of_long_names_stay_apart(couples, tmp_path):
     assert len(titles) == 4 and all("\n" in t.get_text() for t in titles[:3])
     boxes = [t.get_window_extent(renderer) for t in titles]
     for i, box in enumerate(boxes):
-        assert not any(box.overlaps(other) for other in boxes[i + 1:])
+        assert not any(box.overlaps(other) for other in boxes[i + 1 :])
         assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1
         sums = [t.get_window_extent(renderer) for t in fig.axes[i].texts if "|Σ|" in t.get_text()]
         assert len(sums) == 2 and not any(box.overlaps(s) for s in sums)

@@ -26,11 +26,15 @@ def test_torque_data_is_the_torque_in_each_unit(torques):
         for name in ("inertia", "gas", "total"):
             curve = getattr(result, name).curve
             assert_allclose(data[name][:-1], curve * scale, rtol=1e-12, atol=0)
-            assert data[name][-1] == data[name][0]                    # closed over the cycle
+            assert data[name][-1] == data[name][0]  # closed over the cycle
         assert_allclose(data["mean"], result.total.mean * scale, rtol=1e-12)
         assert_allclose(data["orders"], 0.5 * np.arange(1, 17), rtol=0, atol=0)
-        assert_allclose(data["amplitudes"], [math.hypot(c, s) * scale for _, c, s in result.total.orders],
-                        rtol=1e-12, atol=0)
+        assert_allclose(
+            data["amplitudes"],
+            [math.hypot(c, s) * scale for _, c, s in result.total.orders],
+            rtol=1e-12,
+            atol=0,
+        )
         assert data["unit"] == ("N·m" if units == "N" else "kgf·m")
     assert plot.torque_data(torques[1])["gas"] is None
     with pytest.raises(PlotError, match="units must be one of N, kN, MN, kgf, lbf"):
@@ -49,13 +53,13 @@ def test_torque_figure_draws_each_engines_torques_mean_and_orders(torques, units
     bars = [a for a in fig.artists if a.get_label() == "orders"]
     # the two-stroke W12's total has no order up to 8 above the noise floor: no bars drawn
     assert len(bars) == 3 and not any(math.hypot(c, s) for _, c, s in torques[3].total.orders)
-    for result, total, inertia, mean in zip(torques, totals, inertias, means):
+    for result, total, inertia, mean in zip(torques, totals, inertias, means, strict=True):
         assert_allclose(total.get_xdata()[:-1], result.total.theta_deg, rtol=0, atol=1e-12)
         assert total.get_xdata()[-1] == result.period_deg
         assert_allclose(total.get_ydata()[:-1], result.total.curve * scale, rtol=1e-12, atol=0)
         assert_allclose(inertia.get_ydata()[:-1], result.inertia.curve * scale, rtol=1e-12, atol=0)
         assert_allclose(mean.get_ydata(), [result.total.mean * scale] * 2, rtol=1e-12, atol=0)
-    for result, patch in zip(torques, bars):
+    for result, patch in zip(torques, bars, strict=False):
         # closed rectangles from 0 up to each order's amplitude, centred on the order
         corners = patch.get_path().vertices.reshape(-1, 5, 2)[:, :4]
         expected = [(k, math.hypot(c, s) * scale) for k, c, s in result.total.orders if c or s]
@@ -81,10 +85,11 @@ def test_torque_figure_keeps_each_engine_in_its_cell_below_its_title(torques, li
         boxes = [t.get_window_extent(renderer) for t in titles]
         for i, box in enumerate(boxes):
             assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1 and box.y1 <= fig.bbox.y1
-            assert not any(box.overlaps(other) for other in boxes[i + 1:])
-        for index, (total, box) in enumerate(zip(torque_artists(fig, "total"), boxes)):
-            points = total.get_transform().transform(np.column_stack([total.get_xdata(),
-                                                                      total.get_ydata()]))
+            assert not any(box.overlaps(other) for other in boxes[i + 1 :])
+        for index, (total, box) in enumerate(zip(torque_artists(fig, "total"), boxes, strict=True)):
+            points = total.get_transform().transform(
+                np.column_stack([total.get_xdata(), total.get_ydata()])
+            )
             column = index % columns
             assert fig.bbox.width * column / columns < points[:, 0].min()
             assert points[:, 0].max() < fig.bbox.width * (column + 1) / columns

@@ -17,7 +17,7 @@ def test_names_are_escaped_in_markdown(tmp_path):
             tables.append(current)
             current = []
     assert any("Flat twin \\| opposed" in row for table in tables for row in table)
-    for header, _, *rows in tables:   # the | in the name does not add a column
+    for header, _, *rows in tables:  # the | in the name does not add a column
         for row in rows:
             assert row.replace("\\|", "").count("|") == header.replace("\\|", "").count("|")
     report = tmp_path / "report"

@@ -10,14 +10,28 @@ from numpy.testing import assert_allclose
 from tests.support import CONFIGS, PART3, V8, invoke
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-CHROME_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-                "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                "--enable-logging=stderr", "--v=0", "--dump-dom"]
+CHROME_FLAGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--enable-logging=stderr",
+    "--v=0",
+    "--dump-dom",
+]
 
 
 def dump(page, profile):
-    done = subprocess.run([CHROMIUM, *CHROME_FLAGS, f"--user-data-dir={profile}", page.as_uri()],
-                          capture_output=True, text=True, timeout=120)
+    done = subprocess.run(
+        [CHROMIUM, *CHROME_FLAGS, f"--user-data-dir={profile}", page.as_uri()],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert done.returncode == 0, done.stderr[-2000:]
     console = [line for line in done.stderr.splitlines() if ":CONSOLE" in line]
     return done.stdout, console
@@ -25,10 +39,10 @@ def dump(page, profile):
 
 def markdown_table(text, heading):
     """The rows of the first table after ``heading`` in a Markdown document, as lists of cells."""
-    lines = text[text.index(heading):].splitlines()
+    lines = text[text.index(heading) :].splitlines()
     start = next(i for i, line in enumerate(lines) if line.startswith("|"))
     rows = []
-    for line in lines[start + 2:]:
+    for line in lines[start + 2 :]:
         if not line.startswith("|"):
             break
         rows.append([cell.strip() for cell in line.strip("|").split("|")])
@@ -46,11 +60,14 @@ def test_report_markdown_with_relative_pictures(tmp_path):
     assert "| 90° V8, flat crank" in text and "## Counterweights" in text
     assert "0.2147" in text and "70.7" in text
     assert not (out / "report.html").exists()
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["report"]   # no temporary left
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["report"]  # no temporary left
 
 
-@pytest.mark.skipif(CHROMIUM is None, reason="Debian's chromium is not installed (.ci/run installs it "
-                                             "when the package index can be reached)")
+@pytest.mark.skipif(
+    CHROMIUM is None,
+    reason="Debian's chromium is not installed (.ci/run installs it "
+    "when the package index can be reached)",
+)
 def test_html_report_opens_in_headless_chromium_without_console_errors(tmp_path):
     # positive control: the console check does see a page's errors
     bad = tmp_path / "bad.html"
@@ -71,8 +88,15 @@ def test_html_report_opens_in_headless_chromium_without_console_errors(tmp_path)
     tables = (out / "report.md").read_text(encoding="utf-8").count("\n|:-")
     assert dom.count("<table") == tables == 7
     assert dom.count("<figure") == 5 and dom.count("<svg") >= 5
-    for name in ("90° V8, flat crank", "9-cylinder rotary", "Locus of the resultant force per cylinder",
-                 "Star of order 2", "Firing", "Torques", "Reduced mass"):
+    for name in (
+        "90° V8, flat crank",
+        "9-cylinder rotary",
+        "Locus of the resultant force per cylinder",
+        "Star of order 2",
+        "Firing",
+        "Torques",
+        "Reduced mass",
+    ):
         assert name in dom
     # the copy beside it can be moved anywhere: nothing is loaded from the folder
     moved = tmp_path / "elsewhere.html"
@@ -114,23 +138,36 @@ def test_report_has_a_torque_table_picture_and_reduced_mass(tmp_path, gas_config
                 continue
             shown = [float(v.replace(" ", "")) for v in table[result.engine.name, name]]
             # four significant figures: half a unit of the fourth is at most 5e-4 of the value
-            assert_allclose(shown, [series.mean, series.max, series.min, series.range],
-                            rtol=5e-4, atol=1e-12)
+            assert_allclose(
+                shown, [series.mean, series.max, series.min, series.range], rtol=5e-4, atol=1e-12
+            )
     # the mean total torque of the engine with gas: imep·V/(4π), about 191 N·m
     assert table["In-line 4, car, with gas", "total"][0] == f"{torques[0].total.mean:.4g}"
     assert 185 < torques[0].total.mean < 195
     header, rows = markdown_table(text, "Reduced mass μ")
     assert [r[0] for r in rows] == ["In-line 4, car, with gas", "90° V8, flat crank"]
-    for cells, result in zip(rows, torques):
+    for cells, result in zip(rows, torques, strict=False):
         mu = result.reduced_mass
-        assert_allclose([float(c) for c in cells[1:]], [mu.mean_kgm2, mu.min_kgm2, mu.max_kgm2],
-                        rtol=1e-4, atol=0)
+        assert_allclose(
+            [float(c) for c in cells[1:]],
+            [mu.mean_kgm2, mu.min_kgm2, mu.max_kgm2],
+            rtol=1e-4,
+            atol=0,
+        )
 
 
 def test_a_report_says_when_samples_are_too_few(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    result = invoke("report", CONFIGS / "inline-4-marine.toml", "-o", "rep", "--samples", "16",
-                    "--max-order", "3")
+    result = invoke(
+        "report",
+        CONFIGS / "inline-4-marine.toml",
+        "-o",
+        "rep",
+        "--samples",
+        "16",
+        "--max-order",
+        "3",
+    )
     assert result.exit_code == 0, result.output
     text = (tmp_path / "rep" / "report.md").read_text(encoding="utf-8")
     assert "1 engine, 16 samples" in text

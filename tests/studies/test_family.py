@@ -28,8 +28,15 @@ def couples(phases_deg):
     """|S₁| and |S₂| of a crank at the marine six's pitch."""
     n = len(phases_deg)
     arms = [(j - (n - 1) / 2) * D for j in range(n)]
-    return [abs(sum(a * cmath.exp(1j * k * math.radians(b)) for a, b in zip(arms, phases_deg)))
-            for k in (1, 2)]
+    return [
+        abs(
+            sum(
+                a * cmath.exp(1j * k * math.radians(b))
+                for a, b in zip(arms, phases_deg, strict=True)
+            )
+        )
+        for k in (1, 2)
+    ]
 
 
 def brute_force(n):
@@ -74,8 +81,9 @@ def test_six_cylinders_fire_as_the_project_guides_say_and_need_a_compensator(tab
 
 def test_a_given_firing_order_is_taken(tmp_path):
     """6:1-4-2-6-3-5 has no second-order couple (its S₂ = 0) but a first-order one."""
-    out = invoke("family", MARINE, "--cylinders", "6", "--firing-order", "6:1-4-2-6-3-5",
-              "--format", "json")
+    out = invoke(
+        "family", MARINE, "--cylinders", "6", "--firing-order", "6:1-4-2-6-3-5", "--format", "json"
+    )
     assert out.exit_code == 0, out.output
     (row,) = json.loads(out.output)["rows"]
     assert row["method"] == "given" and row["firing_order"] == [1, 4, 2, 6, 3, 5]
@@ -94,17 +102,22 @@ def test_table_csv_and_errors(tmp_path):
     assert "M2V (kN·m)" in text and "1 776" in text and "exhaustive" in text
     csv_text = invoke("family", MARINE, "--cylinders", "6", "--format", "csv").output
     assert csv_text.splitlines()[0].startswith("cylinders,firing_order,method,score,M1V_Nm")
-    for args, words in ((["--cylinders", "x"], "--cylinders"), (["--cylinders", "1"], "--cylinders"),
-                        (["--firing-order", "6:1-2-3"], "--firing-order"),
-                        (["--firing-order", "six"], "--firing-order"),
-                        (["--pitch", "0 mm"], "--pitch"), (["--objective", "Q1"], "")):
+    for args, words in (
+        (["--cylinders", "x"], "--cylinders"),
+        (["--cylinders", "1"], "--cylinders"),
+        (["--firing-order", "6:1-2-3"], "--firing-order"),
+        (["--firing-order", "six"], "--firing-order"),
+        (["--pitch", "0 mm"], "--pitch"),
+        (["--objective", "Q1"], ""),
+    ):
         out = invoke("family", MARINE, *args)
         assert out.exit_code in (1, 2) and words in out.output, (args, out.output)
         assert "Traceback" not in out.output
     out = invoke("family", CONFIGS / "nakanishi-v12-90-2stroke.toml", "--cylinders", "6")
     assert out.exit_code == 1 and "in-line" in out.output
-    out = invoke("family", CONFIGS / "inline-4-car.toml", "--cylinders", "4",
-              "--firing-order", "4:1-3-4-2")
+    out = invoke(
+        "family", CONFIGS / "inline-4-car.toml", "--cylinders", "4", "--firing-order", "4:1-3-4-2"
+    )
     assert out.exit_code == 1 and "two-stroke" in out.output
 
 
@@ -121,17 +134,30 @@ def test_the_table_says_what_the_guide_forces_include_and_the_csv_has_the_balanc
     assert "guide-force moments from inertia only" in text
     csv_lines = invoke("family", MARINE, "--cylinders", "5", "--format", "csv").output.splitlines()
     header, values = csv_lines[0].split(","), csv_lines[1].split(",")
-    row = dict(zip(header, values))
+    row = dict(zip(header, values, strict=True))
     # the table's PRU M1V* is the balanced one: M1V_balanced / (5 × 2380 kW)
-    assert_allclose(float(row["PRU_M1V_balanced_Nm_per_kW"]),
-                    float(row["M1V_balanced_Nm"]) / 11900.0, rtol=1e-12)
+    assert_allclose(
+        float(row["PRU_M1V_balanced_Nm_per_kW"]),
+        float(row["M1V_balanced_Nm"]) / 11900.0,
+        rtol=1e-12,
+    )
 
 
 def test_family_options_in_words():
-    for args, words in ((["--cylinders", "12-5"], "runs backwards"),
-                        (["--cylinders", "6", "--firing-order", "7:1-2-3-4-5-6-7"],
-                         "not among the numbers asked"),
-                        (["--cylinders", "6", "--firing-order", "6:1-5-3-4-2-6",
-                          "--firing-order", "6:1-4-2-6-3-5"], "given twice")):
+    for args, words in (
+        (["--cylinders", "12-5"], "runs backwards"),
+        (["--cylinders", "6", "--firing-order", "7:1-2-3-4-5-6-7"], "not among the numbers asked"),
+        (
+            [
+                "--cylinders",
+                "6",
+                "--firing-order",
+                "6:1-5-3-4-2-6",
+                "--firing-order",
+                "6:1-4-2-6-3-5",
+            ],
+            "given twice",
+        ),
+    ):
         out = invoke("family", MARINE, *args)
         assert out.exit_code in (1, 2) and words in out.output, out.output

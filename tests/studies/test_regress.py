@@ -31,14 +31,18 @@ def test_regression_refuses_engines_analysed_otherwise():
     baseline = balance.compare([balance.analyse(engine)]).to_dict()
     with pytest.raises(balance.RegressError, match="analysed with max_order = 10"):
         balance.regression(baseline, balance.compare([balance.analyse(engine, max_order=10)]))
-    assert not balance.regression(baseline, balance_cli.studies.regress.reanalyse(baseline, [engine])).moved
+    assert not balance.regression(
+        baseline, balance_cli.studies.regress.reanalyse(baseline, [engine])
+    ).moved
 
 
 def test_rtol_loosens_a_firing_angle_by_radians_not_by_its_size():
-    document = balance.compare([balance.analyse(balance.load(CONFIGS / "inline-4-car.toml"))]).to_dict()
+    document = balance.compare(
+        [balance.analyse(balance.load(CONFIGS / "inline-4-car.toml"))]
+    ).to_dict()
     moved = json.loads(json.dumps(document))
-    moved["engines"][0]["firing"]["angles_deg"][3] += 0.5          # 540° -> 540.5°
-    rows = balance.regression(document, moved, rtol=0.005).rows   # 0.005 rad = 0.29°
+    moved["engines"][0]["firing"]["angles_deg"][3] += 0.5  # 540° -> 540.5°
+    rows = balance.regression(document, moved, rtol=0.005).rows  # 0.005 rad = 0.29°
     assert [r.quantity for r in rows] == ["firing angle of cylinder 2"]
     assert rows[0].change == pytest.approx(0.5) and rows[0].relative_change is None
-    assert not balance.regression(document, moved, rtol=0.01).moved   # 0.57°
+    assert not balance.regression(document, moved, rtol=0.01).moved  # 0.57°

@@ -20,7 +20,7 @@ from tests.support import TWIN_CRANK_RADIUS_M as R
 from tests.support import TWIN_RECIPROCATING_KG as M_REC
 
 
-def second_order_force(r, l, m, omega, n=4096):
+def second_order_force(r, rod, m, omega, n=4096):
     """Amplitude of the exact second-order inertia force of one piston, N.
 
     x(θ) = r·cos θ + √(l² − r²·sin²θ) is the piston's exact position; its second harmonic a₂
@@ -30,7 +30,7 @@ def second_order_force(r, l, m, omega, n=4096):
     force is m·ẍ's second harmonic, m·(2ω)²·|a₂|.
     """
     theta = np.arange(n) * 2 * np.pi / n
-    x = r * np.cos(theta) + np.sqrt(l**2 - (r * np.sin(theta)) ** 2)
+    x = r * np.cos(theta) + np.sqrt(rod**2 - (r * np.sin(theta)) ** 2)
     a2 = 2.0 / n * np.sum(x * np.cos(2 * theta))
     return m * (2 * omega) ** 2 * abs(a2)
 
@@ -41,8 +41,19 @@ def test_speed_sweep_follows_the_square_law_exactly(tmp_path):
     # of ulps through one FFT and one multiplication by ω²)
     path = write(tmp_path, TWIN)
     speeds = ["1000 rpm", "2000 rpm", "3000 rpm", "4500 rpm", "7250 rpm"]
-    names = ["F2", "F2V", "F2+", "F4", "F6", "M1", "M1V", "M1-", "largest_force",
-             "largest_moment", "torque_range"]
+    names = [
+        "F2",
+        "F2V",
+        "F2+",
+        "F4",
+        "F6",
+        "M1",
+        "M1V",
+        "M1-",
+        "largest_force",
+        "largest_moment",
+        "torque_range",
+    ]
     result = balance.sweep(path, "speed", speeds, names + ["F1", "M2"])
     # a 180° twin: primaries opposite, secondaries in phase at ±pitch/2: exact zeros at any speed
     assert not result.series("F1").any() and not result.series("M2").any()
@@ -66,10 +77,10 @@ def test_rod_length_sweep_gives_the_exact_second_order_force(tmp_path):
     # for the two summations' rounding and nothing else (seen: 2e-14)
     path = write(tmp_path, SINGLE)
     lengths_mm = [120.0, 140.0, 170.0, 200.0, 260.0]
-    result = balance.sweep(path, "rod_length", [f"{v:g} mm" for v in lengths_mm],
-                           ["F2", "F2V", "F2H", "F2+", "F2-"])
-    expected = np.array([second_order_force(R, v / 1000, M_REC, rad_s(3000))
-                         for v in lengths_mm])
+    result = balance.sweep(
+        path, "rod_length", [f"{v:g} mm" for v in lengths_mm], ["F2", "F2V", "F2H", "F2+", "F2-"]
+    )
+    expected = np.array([second_order_force(R, v / 1000, M_REC, rad_s(3000)) for v in lengths_mm])
     assert_allclose(result.series("F2"), expected, rtol=1e-12, atol=0)
     # a line force along the cylinder axis, the engine's vertical: all of it vertical, split
     # evenly forward and backward (atol: the noise floor, 1e-9 of m·r·ω², writes zeros)
@@ -105,15 +116,19 @@ def test_bank_angle_sweep_of_a_v_twin(tmp_path):
     # along e^{iγ}, = m·r·ω²/2·(e^{iθ} + e^{2iγ}·e^{−iθ}): forward m·r·ω²/2 whatever γ,
     # backward m·r·ω²/2·e^{2iγ}. At 90° between the banks the backward parts cancel and the
     # primary is a rotating m·r·ω², the classic 90° V-twin (rtol 1e-12: exact phasor sums)
-    text = SINGLE.replace("[[banks]]\nangle = 0\n", "[[banks]]\nangle = -45\n[[banks]]\nangle = 45\n")
+    text = SINGLE.replace(
+        "[[banks]]\nangle = 0\n", "[[banks]]\nangle = -45\n[[banks]]\nangle = 45\n"
+    )
     path = write(tmp_path, text)
     angles = [30.0, 60.0, 90.0, 120.0]
     result = balance.sweep(path, "banks[2].angle", angles, "F1+,F1-")
     unit = M_REC * R * rad_s(3000) ** 2
     # with the banks at −45° and γ, the forward phasor of each primary is m·r·ω²/2 (always at
     # the crank), the backward one m·r·ω²/2·e^{2iγ}
-    expected_backward = [abs(0.5 * unit * (np.exp(2j * math.radians(-45)) + np.exp(2j * math.radians(g))))
-                         for g in angles]
+    expected_backward = [
+        abs(0.5 * unit * (np.exp(2j * math.radians(-45)) + np.exp(2j * math.radians(g))))
+        for g in angles
+    ]
     assert_allclose(result.series("F1+"), unit, rtol=1e-12, atol=0)
     assert_allclose(result.series("F1-"), expected_backward, rtol=1e-12, atol=1e-9 * unit)
     assert result.values_si == tuple(math.radians(a) for a in angles)
@@ -146,20 +161,40 @@ def test_records_and_json_keys(tmp_path):
     assert result.values == ("140 mm", "160 mm", "180 mm", "200 mm")
     assert_allclose(result.values_si, [0.14, 0.16, 0.18, 0.2], rtol=1e-15, atol=0)
     records = result.records()
-    assert [list(r) for r in records] == [["value", "value_SI", "F2_N", "M1V_Nm",
-                                            "largest_force_N"]] * 4
+    assert [list(r) for r in records] == [
+        ["value", "value_SI", "F2_N", "M1V_Nm", "largest_force_N"]
+    ] * 4
     document = result.to_dict()
-    assert set(document) == {"balance_version", "name", "config", "samples", "max_order",
-                             "speed_rpm", "overrides", "parameter", "quantities", "inertia_kgm2",
-                             "load", "points"}
+    assert set(document) == {
+        "balance_version",
+        "name",
+        "config",
+        "samples",
+        "max_order",
+        "speed_rpm",
+        "overrides",
+        "parameter",
+        "quantities",
+        "inertia_kgm2",
+        "load",
+        "points",
+    }
     assert document["overrides"] == {} and document["speed_rpm"] == pytest.approx(3000, rel=1e-12)
-    assert document["parameter"] == {"key": "rod_length", "kind": "length", "unit_SI": "m",
-                                     "file_value": "140 mm", "values": list(result.values),
-                                     "values_SI": list(result.values_si)}
+    assert document["parameter"] == {
+        "key": "rod_length",
+        "kind": "length",
+        "unit_SI": "m",
+        "file_value": "140 mm",
+        "values": list(result.values),
+        "values_SI": list(result.values_si),
+    }
     assert [(q["name"], q["column"], q["unit"]) for q in document["quantities"]] == [
-        ("F2", "F2_N", "N"), ("M1V", "M1V_Nm", "Nm"), ("largest_force", "largest_force_N", "N")]
+        ("F2", "F2_N", "N"),
+        ("M1V", "M1V_Nm", "Nm"),
+        ("largest_force", "largest_force_N", "N"),
+    ]
     assert document["points"] == records
-    json.dumps(document, allow_nan=False)   # plain JSON: no numpy scalars, no NaN
+    json.dumps(document, allow_nan=False)  # plain JSON: no numpy scalars, no NaN
     # the sweep's point is compare's record of the same engine
     engine = balance.load(path)
     assert records[0]["F2_N"] == balance.analyse(engine).to_dict()["orders"][1]["force"]["max_N"]
@@ -168,10 +203,15 @@ def test_records_and_json_keys(tmp_path):
 def test_span_writes_values_as_the_file_does():
     assert span("140 mm", "0.2 m", 4) == ["140 mm", "160 mm", "180 mm", "200 mm"]
     assert span(0, 90, 4) == [0.0, 30.0, 60.0, 90.0]
-    assert span("0.1", "0.3", 3) == [0.1, 0.2, 0.3]      # no 0.30000000000000004
+    assert span("0.1", "0.3", 3) == [0.1, 0.2, 0.3]  # no 0.30000000000000004
     assert span("3000 rpm", "6000 rpm", 3) == ["3000 rpm", "4500 rpm", "6000 rpm"]
-    for args, parameter in [(("1 mm", "2 kg", 3), "stop"), ((0, 0, 3), "stop"),
-                            ((0, 1, 1), "steps"), (("x", 1, 3), "start"), ((0, 1, 2.5), "steps")]:
+    for args, parameter in [
+        (("1 mm", "2 kg", 3), "stop"),
+        ((0, 0, 3), "stop"),
+        ((0, 1, 1), "steps"),
+        (("x", 1, 3), "start"),
+        ((0, 1, 2.5), "steps"),
+    ]:
         with pytest.raises(balance.SweepError) as caught:
             span(*args)
         assert caught.value.parameter == parameter
@@ -179,17 +219,36 @@ def test_span_writes_values_as_the_file_does():
 
 def test_schema_covers_every_key_of_the_configuration_format():
     # a key added to the format must be sweepable (or named as text) here too
-    tables = {"": config_module.TOP_KEYS, "masses": config_module.MASS_KEYS,
-              "parts": config_module.PART_KEYS, "gas": config_module.GAS_KEYS,
-              "links": config_module.LINK_KEYS, "banks[]": config_module.BANK_KEYS,
-              "throws[]": config_module.THROW_KEYS, "cylinders[]": config_module.CYLINDER_KEYS,
-              "crankshafts[]": config_module.CRANKSHAFT_KEYS,
-              "counterweights[]": config_module.COUNTERWEIGHT_KEYS,
-              "shafts[]": config_module.SHAFT_KEYS}
-    text_or_tables = {"name", "source", "frame", "firing_order", "masses", "parts", "gas",
-                      "banks", "throws", "links", "cylinders", "crankshafts", "counterweights",
-                      "shafts",
-                      "torsion"}   # the shaft line's table: read by balance torsion, not swept
+    tables = {
+        "": config_module.TOP_KEYS,
+        "masses": config_module.MASS_KEYS,
+        "parts": config_module.PART_KEYS,
+        "gas": config_module.GAS_KEYS,
+        "links": config_module.LINK_KEYS,
+        "banks[]": config_module.BANK_KEYS,
+        "throws[]": config_module.THROW_KEYS,
+        "cylinders[]": config_module.CYLINDER_KEYS,
+        "crankshafts[]": config_module.CRANKSHAFT_KEYS,
+        "counterweights[]": config_module.COUNTERWEIGHT_KEYS,
+        "shafts[]": config_module.SHAFT_KEYS,
+    }
+    text_or_tables = {
+        "name",
+        "source",
+        "frame",
+        "firing_order",
+        "masses",
+        "parts",
+        "gas",
+        "banks",
+        "throws",
+        "links",
+        "cylinders",
+        "crankshafts",
+        "counterweights",
+        "shafts",
+        "torsion",
+    }  # the shaft line's table: read by balance torsion, not swept
     # a shaft's [[shafts.masses]] are tables within its table: not swept
     nested = {"": text_or_tables, "shafts[]": {"masses"}}
     for table, keys in tables.items():
@@ -197,21 +256,25 @@ def test_schema_covers_every_key_of_the_configuration_format():
         assert set(SCHEMA[table]) | extra == set(keys), table
 
 
-@pytest.mark.parametrize("parameter, values, quantities, error_parameter, words", [
-    ("rod_lenght", ["140 mm"], None, "parameter", "no such key"),
-    ("banks[2].angle", [30], None, "parameter", "only banks[1]"),
-    ("name", ["x"], None, "parameter", "not a number to vary"),
-    ("gas.imep", ["8 bar"], None, "parameter", "no [gas] table"),
-    ("throws.phase", [0], None, "parameter", "throws[1].phase"),
-    ("rod_length", [140], None, "values", "with a unit"),
-    ("throws[1].phase", ["10 deg"], None, "values", "without a unit"),
-    ("rod_length", [], None, "values", "at least one"),
-    ("speed", ["3000 rpm"], "F2X", "quantities", "not a quantity"),
-    ("speed", ["3000 rpm"], "F9", "quantities", "orders analysed (1 to 8)"),
-    ("speed", ["3000 rpm"], "steadiness", "inertia_kgm2", "steadiness"),
-])
-def test_library_errors_name_the_parameter(tmp_path, parameter, values, quantities,
-                                           error_parameter, words):
+@pytest.mark.parametrize(
+    "parameter, values, quantities, error_parameter, words",
+    [
+        ("rod_lenght", ["140 mm"], None, "parameter", "no such key"),
+        ("banks[2].angle", [30], None, "parameter", "only banks[1]"),
+        ("name", ["x"], None, "parameter", "not a number to vary"),
+        ("gas.imep", ["8 bar"], None, "parameter", "no [gas] table"),
+        ("throws.phase", [0], None, "parameter", "throws[1].phase"),
+        ("rod_length", [140], None, "values", "with a unit"),
+        ("throws[1].phase", ["10 deg"], None, "values", "without a unit"),
+        ("rod_length", [], None, "values", "at least one"),
+        ("speed", ["3000 rpm"], "F2X", "quantities", "not a quantity"),
+        ("speed", ["3000 rpm"], "F9", "quantities", "orders analysed (1 to 8)"),
+        ("speed", ["3000 rpm"], "steadiness", "inertia_kgm2", "steadiness"),
+    ],
+)
+def test_library_errors_name_the_parameter(
+    tmp_path, parameter, values, quantities, error_parameter, words
+):
     path = write(tmp_path, TWIN)
     with pytest.raises(balance.SweepError) as caught:
         balance.sweep(path, parameter, values, quantities)
@@ -232,8 +295,13 @@ def test_a_bad_point_names_the_file_the_key_and_the_value(tmp_path):
 def test_steadiness_sweep_over_the_flywheel_file(tmp_path):
     # the Dragonfly has a [gas] table: at its own speed the sweep's point is what
     # balance.torque gives for the file itself, mean torque and steadiness alike
-    result = balance.sweep(CONFIGS / "abc-dragonfly.toml", "speed", ["1400 rpm", "1650 rpm"],
-                           "torque_mean,steadiness", inertia_kgm2=3.0)
+    result = balance.sweep(
+        CONFIGS / "abc-dragonfly.toml",
+        "speed",
+        ["1400 rpm", "1650 rpm"],
+        "torque_mean,steadiness",
+        inertia_kgm2=3.0,
+    )
     reference = balance.torque(balance.load(CONFIGS / "abc-dragonfly.toml"), inertia_kgm2=3.0)
     assert result.points[1]["torque_mean_Nm"] == reference.total.mean
     assert_allclose(result.points[1]["steadiness"], reference.steadiness.factor, rtol=1e-12)
@@ -249,13 +317,15 @@ def test_a_key_that_changes_nothing_is_refused():
 def test_progress_is_reported_point_by_point(tmp_path):
     path = write(tmp_path, TWIN)
     calls = []
-    balance.sweep(path, "speed", span("1000 rpm", "2000 rpm", 3), progress=lambda *a: calls.append(a))
+    balance.sweep(
+        path, "speed", span("1000 rpm", "2000 rpm", 3), progress=lambda *a: calls.append(a)
+    )
     assert calls == [(1, 3), (2, 3), (3, 3)]
 
 
 def test_the_readme_example_runs_as_written(monkeypatch):
     text = (ROOT / "README.md").read_text(encoding="utf-8")
-    section = text[text.index("## Parameter sweeps"):text.index("## Python API")]
+    section = text[text.index("## Parameter sweeps") : text.index("## Python API")]
     blocks = re.findall(r"```python\n(.*?)```", section, flags=re.S)
     assert len(blocks) == 1
     monkeypatch.chdir(ROOT)
@@ -268,8 +338,9 @@ def test_overrides_set_other_keys_at_every_point(tmp_path):
     # --speed: the same sweep at another speed is the file's sweep times the speed ratio squared
     path = write(tmp_path, TWIN)
     at_file = balance.sweep(path, "rod_length", ["140 mm", "180 mm"], "F2,M1")
-    at_half = balance.sweep(path, "rod_length", ["140 mm", "180 mm"], "F2,M1",
-                            overrides={"speed": "1500 rpm"})
+    at_half = balance.sweep(
+        path, "rod_length", ["140 mm", "180 mm"], "F2,M1", overrides={"speed": "1500 rpm"}
+    )
     assert at_half.speed_rpm == pytest.approx(1500, rel=1e-12)
     assert at_file.speed_rpm == pytest.approx(3000, rel=1e-12)
     for name in ("F2", "M1"):

@@ -45,18 +45,23 @@ def chain(inertias, stiffnesses, **extra):
     whose [torsion] table gives these inertias and section stiffnesses."""
     n = len(inertias)
     throws = "".join(f"[[throws]]\nphase = {360 * i // n}\n" for i in range(n))
-    table = (f'[torsion]\nthrow_inertia = {[f"{j} kg*m^2" for j in inertias]}\n'
-             f'stiffness = {[f"{k} N*m/rad" for k in stiffnesses]}\n'.replace("'", '"'))
+    table = (
+        f"[torsion]\nthrow_inertia = {[f'{j} kg*m^2' for j in inertias]}\n"
+        f"stiffness = {[f'{k} N*m/rad' for k in stiffnesses]}\n".replace("'", '"')
+    )
     for key, value in extra.items():
         table += f"{key} = {value}\n"
-    return balance.loads(SINGLE.replace("cycle = 4", "cycle = 2").split("[[throws]]")[0]
-                         + throws + table)
+    return balance.loads(
+        SINGLE.replace("cycle = 4", "cycle = 2").split("[[throws]]")[0] + throws + table
+    )
 
 
-TEMPLATE6 = (INLINE6.replace("firing_order = [1, 5, 3, 6, 2, 4]\n", "")
-             .replace("[[throws]]\nphase = 0\n", "[[throws]]\n")
-             .replace("[[throws]]\nphase = 240\n", "[[throws]]\n")
-             .replace("[[throws]]\nphase = 120\n", "[[throws]]\n"))
+TEMPLATE6 = (
+    INLINE6.replace("firing_order = [1, 5, 3, 6, 2, 4]\n", "")
+    .replace("[[throws]]\nphase = 0\n", "[[throws]]\n")
+    .replace("[[throws]]\nphase = 240\n", "[[throws]]\n")
+    .replace("[[throws]]\nphase = 120\n", "[[throws]]\n")
+)
 
 
 def test_two_disk_frequency():
@@ -89,9 +94,10 @@ def test_holzer_three_masses():
     j, k = [1.0, 2.0, 3.0], [1e6, 2e6]
     roots = [(19 - math.sqrt(73)) / 12 * 1e6, (19 + math.sqrt(73)) / 12 * 1e6]
     result = torsion(chain(j, k), [1000.0], 2)
-    assert_allclose([(2 * math.pi * m.frequency_hz) ** 2 for m in result.modes], roots,
-                    rtol=1e-10)   # a 3×3 eigenproblem: rounding only
-    for omega2, mode in zip(roots, result.modes):
+    assert_allclose(
+        [(2 * math.pi * m.frequency_hz) ** 2 for m in result.modes], roots, rtol=1e-10
+    )  # a 3×3 eigenproblem: rounding only
+    for omega2, mode in zip(roots, result.modes, strict=True):
         angles, residual = holzer(j, k, omega2)
         # the residual is a difference of terms of size k·θ ~ 1e6: 1e-9 of them is rounding
         assert abs(residual) < 1e-9 * 1e6
@@ -104,8 +110,7 @@ def test_inline6_firing_angles():
     """Firing 1-5-3-6-2-4 every 120°: cylinder c's firing angle (θ of its firing TDC) is
     120° × its place in the order."""
     fire = firing_angles(balance.loads(INLINE6))
-    assert_allclose([fire[c] for c in (1, 5, 3, 6, 2, 4)], [0, 120, 240, 360, 480, 600],
-                    atol=1e-9)
+    assert_allclose([fire[c] for c in (1, 5, 3, 6, 2, 4)], [0, 120, 240, 360, 480, 600], atol=1e-9)
 
 
 @pytest.mark.parametrize("order", TORSION_ORDERS)
@@ -131,8 +136,17 @@ def test_inline6_one_node_mode_minor_orders():
     """
     beta = [1.0, 0.3, 0.7, 0.1, 0.9, 0.5]
     phi = [0, 120, 240, 360, 480, 600]
-    expected = {0.5: math.sqrt(0.37), 1: 0.1, 1.5: 1.7, 2: 0.1, 2.5: math.sqrt(0.37), 3: 3.5,
-                3.5: math.sqrt(0.37), 4.5: 1.7, 6: 3.5}
+    expected = {
+        0.5: math.sqrt(0.37),
+        1: 0.1,
+        1.5: 1.7,
+        2: 0.1,
+        2.5: math.sqrt(0.37),
+        3: 3.5,
+        3.5: math.sqrt(0.37),
+        4.5: 1.7,
+        6: 3.5,
+    }
     for k, value in expected.items():
         assert_allclose(abs(phase_vector_sum(beta, phi, k)), value, rtol=1e-12)
 
@@ -144,8 +158,10 @@ def test_engine_phase_vector_sums_use_the_mode():
     phi = {1: 0, 5: 120, 3: 240, 6: 360, 2: 480, 4: 600}
     mode = result.modes[0]
     for k in (0.5, 1.5, 3, 4.5, 6):
-        by_hand = sum(mode.throw_amplitudes[c - 1] * cmath.exp(1j * math.radians(k * phi[c]))
-                      for c in range(1, 7))
+        by_hand = sum(
+            mode.throw_amplitudes[c - 1] * cmath.exp(1j * math.radians(k * phi[c]))
+            for c in range(1, 7)
+        )
         assert_allclose(mode.phase_vector_sums[k], abs(by_hand), rtol=1e-12)
     assert {c.order % 3 == 0 for c in result.criticals if c.major} == {True}
     assert any(not c.major for c in result.criticals)
@@ -154,13 +170,16 @@ def test_engine_phase_vector_sums_use_the_mode():
 def test_cylinder_torques_add_up_to_the_engine_torque():
     """Each cylinder's own torque, summed, is the engine's total (μ is a sum over parts;
     the gas torque a sum over cylinders): two ways through the torque engine."""
-    engine = balance.loads(INLINE6 + '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\n'
-                           'imep = "15 bar"\n')
+    engine = balance.loads(
+        INLINE6 + '\n[gas]\nbore = "105 mm"\ncompression_ratio = 17\nimep = "15 bar"\n'
+    )
     total = torque(engine, bearings=False, guide=False).total
     cylinders = cylinder_torques(engine)
-    for index, (k, cos, sin) in enumerate(total.orders):
-        parts = sum(complex(*c.inertia.orders[index][1:]) + complex(*c.gas.orders[index][1:])
-                    for c in cylinders)
+    for index, (_k, cos, sin) in enumerate(total.orders):
+        parts = sum(
+            complex(*c.inertia.orders[index][1:]) + complex(*c.gas.orders[index][1:])
+            for c in cylinders
+        )
         # floors of 1e-9 of m·r²·ω²·n per term: far below the 1e-6 N·m allowed
         assert_allclose([parts.real, parts.imag], [cos, sin], atol=1e-6 * max(1, abs(cos)))
 
@@ -169,14 +188,19 @@ def test_reduced_mass_throw_inertia():
     """With web_inertia, a throw's inertia is its parts' mean reduced mass plus the webs:
     m_rot·r² + m_rec·mean((ds/dθ)²) + J_web, with ds/dθ = −r·sin θ −
     r²·sin θ·cos θ/√(l² − r²·sin² θ) for a plain rod (integrated here by quadrature)."""
-    r, l, m_rec, m_rot, web = 0.05, 0.2, 1.5, 2.0, 0.03
-    engine = balance.loads(SINGLE.replace("cycle = 4", "cycle = 2").replace(
-        'phase = 0\n', 'phase = 0\n[[throws]]\nphase = 180\n')
-        + '[torsion]\nweb_inertia = "0.03 kg*m^2"\nstiffness = "1e6 N*m/rad"\n')
+    r, rod, m_rec, m_rot, web = 0.05, 0.2, 1.5, 2.0, 0.03
+    engine = balance.loads(
+        SINGLE.replace("cycle = 4", "cycle = 2").replace(
+            "phase = 0\n", "phase = 0\n[[throws]]\nphase = 180\n"
+        )
+        + '[torsion]\nweb_inertia = "0.03 kg*m^2"\nstiffness = "1e6 N*m/rad"\n'
+    )
 
     def rate2(t):
-        return (-r * math.sin(t) - r**2 * math.sin(t) * math.cos(t)
-                / math.sqrt(l**2 - r**2 * math.sin(t) ** 2)) ** 2
+        return (
+            -r * math.sin(t)
+            - r**2 * math.sin(t) * math.cos(t) / math.sqrt(rod**2 - r**2 * math.sin(t) ** 2)
+        ) ** 2
 
     mean = quad(rate2, 0, 2 * math.pi)[0] / (2 * math.pi)
     expected = m_rot * r**2 + m_rec * mean + web
@@ -190,9 +214,11 @@ def test_single_degree_of_freedom_response():
     k_s·U_k/(k_s − J·(kΩ)² + i·c·kΩ) (c the throw's damping); the inertia part of U_k grows
     as Ω². The flywheel moves J/J_f = 1e-9 as much as the throw: that is the tolerance."""
     j, ks, c = 0.05, 2.0e5, 3.0
-    engine = balance.loads(SINGLE + f'[torsion]\nthrow_inertia = "{j} kg*m^2"\n'
-                           f'throw_damping = "{c} N*m*s/rad"\n[torsion.flywheel]\n'
-                           f'inertia = "{j * 1e9} kg*m^2"\nstiffness = "{ks} N*m/rad"\n')
+    engine = balance.loads(
+        SINGLE + f'[torsion]\nthrow_inertia = "{j} kg*m^2"\n'
+        f'throw_damping = "{c} N*m*s/rad"\n[torsion.flywheel]\n'
+        f'inertia = "{j * 1e9} kg*m^2"\nstiffness = "{ks} N*m/rad"\n'
+    )
     speeds = np.array([900.0, 1500.0, 2400.0])
     result = torsion(engine, speeds, 6)
     (cyl,) = cylinder_torques(engine, max_order=6)
@@ -203,11 +229,16 @@ def test_single_degree_of_freedom_response():
             u = (cos - 1j * sin) * (omega / omega0) ** 2
             w = k * omega
             expected = abs(ks * u / (ks - j * w**2 + 1j * c * w))
-            assert_allclose(result.order_torque_nm[i, 0, o], expected, rtol=1e-6,
-                            atol=1e-9 * abs(u))
+            assert_allclose(
+                result.order_torque_nm[i, 0, o], expected, rtol=1e-6, atol=1e-9 * abs(u)
+            )
             # the throw is the free end: its angle is the section's torque over k
-            assert_allclose(result.free_end_order_deg[i, o], math.degrees(expected / ks),
-                            rtol=1e-6, atol=1e-9 * abs(u) / ks)
+            assert_allclose(
+                result.free_end_order_deg[i, o],
+                math.degrees(expected / ks),
+                rtol=1e-6,
+                atol=1e-9 * abs(u) / ks,
+            )
     # the natural frequency √(k/J) (the flywheel a wall to 1e-9)
     assert_allclose(result.modes[0].frequency_hz, math.sqrt(ks / j) / (2 * math.pi), rtol=1e-8)
 
@@ -226,24 +257,37 @@ def test_synthesised_peak_is_the_waveform_peak():
 def test_sweep_speed():
     """A six-throw model's full sweep: 100 speeds, orders ½ to 12, well under a second."""
     engine = balance.loads(INLINE6 + TORSION6)
-    torsion(engine, np.linspace(600, 2400, 100), 12)   # warm the imports
+    torsion(engine, np.linspace(600, 2400, 100), 12)  # warm the imports
     start = time.perf_counter()
     torsion(engine, np.linspace(600, 2400, 100), 12)
     assert time.perf_counter() - start < 1.0
 
 
-@pytest.mark.parametrize("change, key", [
-    (('stiffness = "1.253e6 N*m/rad"', 'stiffness = ["1e6 N*m/rad", "1e6 N*m/rad"]'),
-     "torsion.stiffness"),
-    (('stiffness = "1.253e6 N*m/rad"', 'stiffness = "1.253e6 N*m"'), "torsion.stiffness"),
-    (('loss_factor = 0.035', 'loss = 0.035'), "torsion.loss"),
-    (('inertia = "2.075 kg*m^2"', 'inertai = "2.075 kg*m^2"'), "torsion.flywheel.inertai"),
-    (('throw_inertia = "0.0467 kg*m^2"', 'throw_inertia = ["1 kg*m^2", "-1 kg*m^2", "1 kg*m^2", '
-      '"1 kg*m^2", "1 kg*m^2", "1 kg*m^2"]'), "torsion.throw_inertia[2]"),
-    (('shaft_diameter = "80 mm"', 'shaft_diameter = "80 mm"\nshaft_bore = "90 mm"'),
-     "torsion.shaft_bore"),
-    (('throw_inertia = "0.0467 kg*m^2"', ''), "torsion.throw_inertia"),
-])
+@pytest.mark.parametrize(
+    "change, key",
+    [
+        (
+            ('stiffness = "1.253e6 N*m/rad"', 'stiffness = ["1e6 N*m/rad", "1e6 N*m/rad"]'),
+            "torsion.stiffness",
+        ),
+        (('stiffness = "1.253e6 N*m/rad"', 'stiffness = "1.253e6 N*m"'), "torsion.stiffness"),
+        (("loss_factor = 0.035", "loss = 0.035"), "torsion.loss"),
+        (('inertia = "2.075 kg*m^2"', 'inertai = "2.075 kg*m^2"'), "torsion.flywheel.inertai"),
+        (
+            (
+                'throw_inertia = "0.0467 kg*m^2"',
+                'throw_inertia = ["1 kg*m^2", "-1 kg*m^2", "1 kg*m^2", '
+                '"1 kg*m^2", "1 kg*m^2", "1 kg*m^2"]',
+            ),
+            "torsion.throw_inertia[2]",
+        ),
+        (
+            ('shaft_diameter = "80 mm"', 'shaft_diameter = "80 mm"\nshaft_bore = "90 mm"'),
+            "torsion.shaft_bore",
+        ),
+        (('throw_inertia = "0.0467 kg*m^2"', ""), "torsion.throw_inertia"),
+    ],
+)
 def test_bad_torsion_tables(change, key, tmp_path):
     text = (INLINE6 + TORSION6).replace(*change)
     with pytest.raises(ConfigError) as caught:
@@ -265,7 +309,7 @@ def test_engine_without_torsion_table():
 
 def test_missing_opentorsion(monkeypatch, tmp_path):
     """Without openTorsion: one line naming the extra; the rest of balance works."""
-    monkeypatch.setitem(sys.modules, "opentorsion", None)   # import raises ImportError
+    monkeypatch.setitem(sys.modules, "opentorsion", None)  # import raises ImportError
     engine = balance.loads(INLINE6 + TORSION6)
     with pytest.raises(TorsionUnavailable, match=r"pip install 'engine-balance\[torsion\]'"):
         torsion(engine)
@@ -274,7 +318,8 @@ def test_missing_opentorsion(monkeypatch, tmp_path):
     result = invoke("torsion", path)
     assert result.exit_code == 1
     assert result.output.strip().splitlines() == [
-        "Error: balance torsion needs openTorsion: pip install 'engine-balance[torsion]'"]
+        "Error: balance torsion needs openTorsion: pip install 'engine-balance[torsion]'"
+    ]
     assert invoke("compare", path).exit_code == 0
     assert invoke("torque", path).exit_code == 0
 
@@ -295,8 +340,12 @@ def test_search_v_terms_score_is_the_phase_vector_sum(tmp_path):
     template = balance.load_template(path)
     result = balance.search(template, "V1,V2,V3", top=6, workers=1)
     for a in result.arrangements:
-        assert_allclose(a.score, a.coefficients["V1"] + a.coefficients["V2"]
-                        + a.coefficients["V3"], rtol=1e-9, atol=1e-12)
+        assert_allclose(
+            a.score,
+            a.coefficients["V1"] + a.coefficients["V2"] + a.coefficients["V3"],
+            rtol=1e-9,
+            atol=1e-12,
+        )
         assert_allclose(a.coefficients["V3"], 1.0, rtol=1e-12)
     # the half orders are refused by name
     with pytest.raises(AnalysisError, match="whole orders only"):
@@ -344,7 +393,10 @@ def test_search_tv1_is_the_largest_minor_order(tmp_path):
         assert_allclose(a.score, by_hand, rtol=1e-9)
         scores.append(a.score)
     # ranked by score; equal scores (to the search's 1e-9 tie) by firing order
-    assert all(b >= a - 1e-9 for a, b in zip(scores, scores[1:])) and scores[0] < scores[-1]
+    assert (
+        all(b >= a - 1e-9 for a, b in zip(scores, scores[1:], strict=False))
+        and scores[0] < scores[-1]
+    )
 
 
 def test_report_has_a_torsion_section(tmp_path, monkeypatch):
@@ -365,8 +417,10 @@ def test_report_has_a_torsion_section(tmp_path, monkeypatch):
     monkeypatch.setitem(sys.modules, "opentorsion", None)
     result = invoke("report", six, "-o", tmp_path / "without")
     assert result.exit_code == 0, result.output
-    assert ("Not computed: balance torsion needs openTorsion: pip install 'engine-balance[torsion]'."
-            in (tmp_path / "without" / "report.md").read_text())
+    assert (
+        "Not computed: balance torsion needs openTorsion: pip install 'engine-balance[torsion]'."
+        in (tmp_path / "without" / "report.md").read_text()
+    )
 
 
 def test_search_write_keeps_the_torsion_table(tmp_path):
@@ -380,8 +434,9 @@ def test_search_write_keeps_the_torsion_table(tmp_path):
             out.append(f'z = "{next(zs)} mm"')
     path = tmp_path / "template.toml"
     path.write_text("\n".join(out) + TORSION6)
-    result = invoke("search", path, "--objective", "M1,TV1", "--top", "1", "--write",
-                 tmp_path / "best")
+    result = invoke(
+        "search", path, "--objective", "M1,TV1", "--top", "1", "--write", tmp_path / "best"
+    )
     assert result.exit_code == 0, result.output
     (written,) = (tmp_path / "best").iterdir()
     template = balance.load_template(path)
@@ -394,9 +449,10 @@ def test_library_model_checked():
 
     engine = balance.loads(INLINE6 + TORSION6)
     for field, value, name in (
-            ("stiffness_nm_rad", (1e6, -1e6, 1e6, 1e6, 1e6), "stiffness_nm_rad"),
-            ("loss_factor", math.nan, "loss_factor"),
-            ("throw_inertia_kgm2", (0.05,) * 5 + (0.0,), "throw_inertia_kgm2")):
+        ("stiffness_nm_rad", (1e6, -1e6, 1e6, 1e6, 1e6), "stiffness_nm_rad"),
+        ("loss_factor", math.nan, "loss_factor"),
+        ("throw_inertia_kgm2", (0.05,) * 5 + (0.0,), "throw_inertia_kgm2"),
+    ):
         bad = engine.replace(torsion=dataclasses.replace(engine.torsion, **{field: value}))
         with pytest.raises(AnalysisError) as caught:
             torsion(bad, [1000.0])
@@ -409,13 +465,14 @@ def test_library_model_checked():
 def test_the_default_speeds_follow_the_engines_own_speed():
     """A fixed 600-2400 rpm range put a 105 rpm marine engine's sweep 23 times above its speed;
     the default is 20 % to 120 % of the engine's speed, 201 speeds."""
-    engine = balance.loads(INLINE6 + TORSION6)               # 2000 rpm
+    engine = balance.loads(INLINE6 + TORSION6)  # 2000 rpm
     result = balance.torsional_vibration(engine)
     assert_allclose(result.speeds_rpm[[0, -1]], [400.0, 2400.0], rtol=1e-12)
     assert len(result.speeds_rpm) == 201
     slow = engine.replace(speed_rad_s=engine.speed_rad_s / 20)  # 100 rpm
-    assert_allclose(balance.torsional_vibration(slow).speeds_rpm[[0, -1]], [20.0, 120.0],
-                    rtol=1e-12)
+    assert_allclose(
+        balance.torsional_vibration(slow).speeds_rpm[[0, -1]], [20.0, 120.0], rtol=1e-12
+    )
 
 
 @pytest.mark.parametrize("speeds", [[1e300], [float("nan")], list(range(1, 6000)), []])
@@ -427,17 +484,25 @@ def test_the_library_refuses_speeds_it_cannot_sweep(speeds):
 
 
 def test_a_torsion_table_on_a_rotary_is_refused_when_read():
-    text = (INLINE6 + TORSION6).replace('speed = "2000 rpm"', 'speed = "2000 rpm"\nframe = "rotary"')
+    text = (INLINE6 + TORSION6).replace(
+        'speed = "2000 rpm"', 'speed = "2000 rpm"\nframe = "rotary"'
+    )
     with pytest.raises(ConfigError, match="rotary") as info:
         balance.loads(text, name="rotary.toml")
     assert info.value.key == "torsion"
 
 
-@pytest.mark.parametrize("kwargs, parameter", [
-    (dict(bore_m=-1.0), "bore_m"), (dict(bore_m=0.1), "bore_m"),      # a bore without a pressure
-    (dict(speeds_rpm=True), "speeds_rpm"), (dict(speeds_rpm=[[1000, 2000]]), "speeds_rpm"),
-    (dict(max_order=math.nan), "max_order"), (dict(samples="x"), "samples"),
-])
+@pytest.mark.parametrize(
+    "kwargs, parameter",
+    [
+        (dict(bore_m=-1.0), "bore_m"),
+        (dict(bore_m=0.1), "bore_m"),  # a bore without a pressure
+        (dict(speeds_rpm=True), "speeds_rpm"),
+        (dict(speeds_rpm=[[1000, 2000]]), "speeds_rpm"),
+        (dict(max_order=math.nan), "max_order"),
+        (dict(samples="x"), "samples"),
+    ],
+)
 def test_the_library_checks_what_the_command_line_checks(kwargs, parameter):
     """A bore without a pressure curve once failed with an AttributeError; a bool or a table
     of speeds was taken as speeds."""

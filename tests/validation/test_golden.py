@@ -21,9 +21,11 @@ GOLDEN = ROOT / "tests" / "golden" / "compare.json"
 
 
 def test_library_matches_golden_tables(monkeypatch):
-    monkeypatch.chdir(ROOT)   # the golden file names its configurations from the repository root
+    monkeypatch.chdir(ROOT)  # the golden file names its configurations from the repository root
     result = CliRunner().invoke(main, ["regress", "tests/golden/compare.json", "configs"])
-    assert result.exit_code == 0, "golden tables moved (make regress-update if intended):\n" + result.output
+    assert result.exit_code == 0, (
+        "golden tables moved (make regress-update if intended):\n" + result.output
+    )
     # every engine of the library is checked (counted, not written down: the library grows)
     library = len(balance.find_configs([ROOT / "configs"]))
     assert len(json.loads(GOLDEN.read_text(encoding="utf-8"))["engines"]) == library
@@ -38,7 +40,9 @@ def test_a_moved_value_is_reported_by_engine_order_and_quantity():
     engine["firing"]["order"] = engine["firing"]["order"][::-1]
     rows = regress(golden, changed).rows
     assert {(r.engine, r.order, r.quantity) for r in rows} == {
-        (engine["name"], 2, "force.max_N"), (engine["name"], None, "firing order")}
+        (engine["name"], 2, "force.max_N"),
+        (engine["name"], None, "firing order"),
+    }
     # rounding noise far below the tolerance is not reported
     quiet = copy.deepcopy(golden)
     quiet["engines"][0]["orders"][1]["force"]["max_N"] *= 1 + 1e-13

@@ -24,8 +24,8 @@ FAMILY = {n: CONFIGS / f"man-s80mc-c7-{n}cyl.toml" for n in (6, 7, 8)}
 TEMPLATE = ROOT / "templates" / "marine-family-2stroke.toml"
 #: the firing orders the configurations carry (see their comments for the sources)
 ORDERS = {6: (1, 5, 3, 4, 2, 6), 7: (1, 7, 2, 5, 4, 3, 6), 8: (1, 8, 3, 4, 7, 2, 5, 6)}
-KW_PER_CYLINDER = 3880.0       # the guide, Table 17.04.01 heading
-PITCH_M = 1.334                # estimated (the configurations' comments)
+KW_PER_CYLINDER = 3880.0  # the guide, Table 17.04.01 heading
+PITCH_M = 1.334  # estimated (the configurations' comments)
 
 
 def coefficient(order, k):
@@ -48,7 +48,7 @@ def test_the_configurations_carry_the_guides_rating_and_the_firing_orders():
     for n, path in FAMILY.items():
         engine = balance.load(path)
         assert len(engine.cylinders) == n and engine.cycle == 2
-        assert_allclose(engine.speed_rad_s, 76 * math.pi / 30, rtol=1e-15)   # 76 r/min
+        assert_allclose(engine.speed_rad_s, 76 * math.pi / 30, rtol=1e-15)  # 76 r/min
         result = balance.analyse(engine)
         assert tuple(result.firing.order) == ORDERS[n]
         assert result.firing.uniform
@@ -68,8 +68,15 @@ def test_six_cylinders_have_no_first_order_moment_as_the_guide_prints():
     rounding against the second order's 3.4 MN·m (atol 1e-6 N·m is 3e-13 of it)."""
     record = pru(6)
     first = record["orders"][0]
-    assert_allclose([first["vertical_Nm"], first["horizontal_Nm"],
-                     record["first_order_balanced"]["vertical_Nm"]], 0.0, atol=1e-6)
+    assert_allclose(
+        [
+            first["vertical_Nm"],
+            first["horizontal_Nm"],
+            record["first_order_balanced"]["vertical_Nm"],
+        ],
+        0.0,
+        atol=1e-6,
+    )
 
 
 def test_eight_cylinders_have_no_second_order_moment_as_the_guide_prints():
@@ -85,9 +92,9 @@ def test_second_order_ratio_seven_over_six_is_the_coefficients_and_reads_146_4()
     to 0.05 N·m/kW (±0.00043)."""
     ours = pru(7)["orders"][1]["vertical_Nm_per_kW"] / pru(6)["orders"][1]["vertical_Nm_per_kW"]
     by_hand = coefficient(ORDERS[7], 2) / 7 / (coefficient(ORDERS[6], 2) / 6)
-    assert_allclose(ours, by_hand, rtol=1e-9)          # the library against the hand sum
+    assert_allclose(ours, by_hand, rtol=1e-9)  # the library against the hand sum
     assert_allclose(ours, 36.4 / 146.4, atol=0.00043)  # the guide, read 146,4
-    assert abs(ours - 36.4 / 46.4) > 0.5               # not the stored 46,4
+    assert abs(ours - 36.4 / 46.4) > 0.5  # not the stored 46,4
 
 
 def test_first_order_ratio_eight_over_seven_is_the_guides():

@@ -18,8 +18,7 @@ def test_mendes_model_frequencies_by_holzer():
     openTorsion)."""
     from scipy.optimize import brentq
 
-    engine = balance.load(
-        REFERENCE / "opentorsion_ice" / "mendes2008.toml")
+    engine = balance.load(REFERENCE / "opentorsion_ice" / "mendes2008.toml")
     result = torsion(engine, [2000.0], 12)
     j = list(result.inertia_kgm2)
     k = list(result.stiffness_nm_rad)
@@ -45,20 +44,19 @@ def test_the_mendes_models_natural_frequencies_by_a_second_eigen_solver():
     k = [1.106e6, 1.631e6, 1.253e6, 1.253e6, 1.678e6, 1.253e6, 1.253e6, 1.976e6]
     K = np.zeros((9, 9))
     for i, ki in enumerate(k):
-        K[i:i + 2, i:i + 2] += ki * np.array([[1, -1], [-1, 1]])
+        K[i : i + 2, i : i + 2] += ki * np.array([[1, -1], [-1, 1]])
     w2 = eigh(K, np.diag(J), eigvals_only=True)
-    expected = np.sqrt(np.clip(w2[1:], 0, None)) / (2 * math.pi)     # the rigid mode left out
+    expected = np.sqrt(np.clip(w2[1:], 0, None)) / (2 * math.pi)  # the rigid mode left out
     path = REFERENCE / "opentorsion_ice/mendes2008.toml"
     result = balance.torsional_vibration(balance.load(path), [2000.0])
     assert_allclose([m.frequency_hz for m in result.modes], expected, rtol=1e-9)
-    assert_allclose(expected[0], 216.6, atol=0.05)    # the first mode the validation speaks of
+    assert_allclose(expected[0], 216.6, atol=0.05)  # the first mode the validation speaks of
 
 
 def test_resonances_marked_at_the_nearest_speed():
     """A critical belongs to the sweep's speed nearest it: the 6th order of the Mendes six's
     first mode (216.6 Hz·60/6 ≈ 2166 rpm, between 2150 and 2200) to 2150 rpm only."""
-    engine = balance.load(
-        REFERENCE / "opentorsion_ice" / "mendes2008.toml")
+    engine = balance.load(REFERENCE / "opentorsion_ice" / "mendes2008.toml")
     result = torsion(engine, [2100.0, 2150.0, 2200.0], 12)
     (critical,) = [c for c in result.criticals if c.order == 6]
     assert 2150 < critical.speed_rpm < 2175

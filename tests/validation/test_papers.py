@@ -28,8 +28,10 @@ def per_cylinder(result, order):
 def reciprocating_only(engine):
     """The engine with its rotating and knuckle masses removed (Tanaka's § (3) and Part II)."""
     return dataclasses.replace(
-        engine, rotating_kg=0.0,
-        cylinders=tuple(dataclasses.replace(c, knuckle_kg=0.0) for c in engine.cylinders))
+        engine,
+        rotating_kg=0.0,
+        cylinders=tuple(dataclasses.replace(c, knuckle_kg=0.0) for c in engine.cylinders),
+    )
 
 
 def b2_series(q):
@@ -89,8 +91,12 @@ def test_inline6_and_v12_leave_nothing_below_the_sixth_order(part3, name):
     result = part3[name]
     unit = result.per_cylinder_unit_n
     for order in result.shaking.orders[:5]:
-        for value in (order.force_forward, order.force_backward, order.moment_forward,
-                      order.moment_backward):
+        for value in (
+            order.force_forward,
+            order.force_backward,
+            order.moment_forward,
+            order.moment_backward,
+        ):
             assert abs(value) < 1e-9 * unit
     # the sixth survives: Tanaka's (64) 9/128·q⁵[1 + …] per cylinder for the in-line 6 (B6).
     # His one-term value omits 45/512·q⁷ + …, i.e. 5/4·q² ≈ 11 % and a little more: 13 %
@@ -120,12 +126,16 @@ def test_rotary_first_order_is_a_line_force_across_the_crank(part3):
     f, b, peak, low = per_cylinder(result, 1)
     assert abs(peak - 0.034) <= 0.0005
     assert low < 1e-9
-    axis = ellipse(result.shaking.orders[0].force_forward, result.shaking.orders[0].force_backward)[2]
+    axis = ellipse(result.shaking.orders[0].force_forward, result.shaking.orders[0].force_backward)[
+        2
+    ]
     assert abs(math.degrees(axis) - 90.0) < 1e-6
 
 
-@pytest.mark.parametrize("name, percent", [("2a-w12-60", 71), ("2b-w12-60-links", 56),
-                                           ("5a-radial-9", 31), ("5b-rotary-9", 16)])
+@pytest.mark.parametrize(
+    "name, percent",
+    [("2a-w12-60", 71), ("2b-w12-60-links", 56), ("5a-radial-9", 31), ("5b-rotary-9", 16)],
+)
 def test_percentages_of_the_v8(part3, name, percent):
     """Tanaka: W12 71 %, W12 double obliquity 56 %, radial 31 %, rotary 16 % of the V8's
     largest resultant. His ratios come from three-decimal values (.152/.215 = 70.7 %), so
@@ -219,7 +229,9 @@ def test_dragonfly_reciprocating_forces_match_tanaka():
     result = analyse(engine)
     kgf = lambda z: abs(z) / STANDARD_GRAVITY  # noqa: E731
     first, second, fourth = (result.shaking.orders[k] for k in (0, 1, 3))
-    assert_allclose(kgf(first.force_forward), 4.5 * engine.unit_force_n / STANDARD_GRAVITY, rtol=1e-9)
+    assert_allclose(
+        kgf(first.force_forward), 4.5 * engine.unit_force_n / STANDARD_GRAVITY, rtol=1e-9
+    )
     assert_allclose(kgf(first.force_forward), 1999.0, rtol=0.0015)
     assert abs(kgf(second.force_forward) - 250.1) <= 0.005 * 250.1 + 0.05
     assert abs(kgf(second.force_backward) - 0.1) <= 0.1
@@ -235,8 +247,12 @@ def test_bramo_rotating_forces_match_fraeys_de_veubeke():
     r_omega2 = engine.crank_radius_m * engine.speed_rad_s**2
     assert_allclose(r_omega2 / 9.81, 394.38, rtol=2e-5)  # the paper's RΩ²/g, with g = 9.81
     orders = result.shaking.orders
-    for value, expected in [(orders[0].force_forward, 31.676), (orders[1].force_forward, 2.195),
-                            (orders[0].force_backward, 0.215), (orders[1].force_backward, 0.0755)]:
+    for value, expected in [
+        (orders[0].force_forward, 31.676),
+        (orders[1].force_forward, 2.195),
+        (orders[0].force_backward, 0.215),
+        (orders[1].force_backward, 0.0755),
+    ]:
         assert_allclose(abs(value) / r_omega2, expected, rtol=0.016)
 
 
@@ -262,8 +278,14 @@ def test_inline4_has_no_primary_force_and_no_primary_or_secondary_couple(config)
     result = analyse(load(CONFIGS / config))
     unit = result.per_cylinder_unit_n
     first, second = result.shaking.orders[0], result.shaking.orders[1]
-    for value in (first.force_forward, first.force_backward, first.moment_forward,
-                  first.moment_backward, second.moment_forward, second.moment_backward):
+    for value in (
+        first.force_forward,
+        first.force_backward,
+        first.moment_forward,
+        first.moment_backward,
+        second.moment_forward,
+        second.moment_backward,
+    ):
         assert abs(value) < 1e-9 * unit
 
 

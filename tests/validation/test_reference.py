@@ -20,11 +20,13 @@ def test_published_figure(row):
         if row.corrected is not None:
             assert row.corrected_agrees, (
                 f"{row.id}: ours {row.ours:.6g} against corrected {row.corrected:.6g} "
-                f"(tolerance {row.tolerance:.3g})")
+                f"(tolerance {row.tolerance:.3g})"
+            )
     else:
         assert row.agrees, (
             f"{row.id} ({row.where}): published {row.published:.6g}, ours {row.ours:.6g}, "
-            f"deviation {row.deviation:+.3g} beyond {row.tolerance:.3g} ({row.reason})")
+            f"deviation {row.deviation:+.3g} beyond {row.tolerance:.3g} ({row.reason})"
+        )
 
 
 def test_records_are_well_formed():
@@ -40,8 +42,10 @@ def test_every_erratum_is_used_and_the_known_ones_are_all_checked():
     # the errata listed in shared/seeds/INDEX.md
     assert {"T1", "T2", "T3", "T5", "F1"} <= used
     assert all(e["status"] in {"confirmed", "refuted", "new"} for e in ERRATA.values())
-    assert all(e.get("verdict", "misprint") in {"misprint", "slip", "truncation", "sign", "unexplained"}
-               for e in ERRATA.values())
+    assert all(
+        e.get("verdict", "misprint") in {"misprint", "slip", "truncation", "sign", "unexplained"}
+        for e in ERRATA.values()
+    )
 
 
 def test_enough_figures_per_paper():
@@ -67,8 +71,12 @@ def test_bramo_config_derives_fraeys_de_veubekes_point_masses_from_table_viii():
     assert engine.rotating_kg == pytest.approx(reduction["B(1-K)"], abs=1e-12)
     assert all(c.reciprocating_kg == pytest.approx(reduction["a"], abs=1e-12) for c in links)
     assert all(c.knuckle_kg == pytest.approx(reduction["b(1-k)"], abs=1e-12) for c in links)
-    for ours, printed in ((master.reciprocating_kg, 2.972 + 1.3186), (engine.rotating_kg, 9.2214),
-                          (links[0].reciprocating_kg, 3.7239), (links[0].knuckle_kg, 0.6681)):
+    for ours, printed in (
+        (master.reciprocating_kg, 2.972 + 1.3186),
+        (engine.rotating_kg, 9.2214),
+        (links[0].reciprocating_kg, 3.7239),
+        (links[0].knuckle_kg, 0.6681),
+    ):
         assert ours == pytest.approx(printed, abs=0.0006)
 
 
@@ -77,4 +85,6 @@ def test_validation_report_is_current():
     from tools import validation_report
 
     committed = validation_report.TARGET.read_text(encoding="utf-8")
-    assert committed == validation_report.render(), "docs/VALIDATION.md is out of date: run make validate"
+    assert committed == validation_report.render(), (
+        "docs/VALIDATION.md is out of date: run make validate"
+    )

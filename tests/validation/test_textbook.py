@@ -31,7 +31,9 @@ import balance_cli as balance
 from tests.support import ROOT, TODAY
 
 FAMILIES = ("inline", "v", "boxer", "w")
-FILES = sorted(p.relative_to(TODAY).as_posix() for f in FAMILIES for p in (TODAY / f).glob("*.toml"))
+FILES = sorted(
+    p.relative_to(TODAY).as_posix() for f in FAMILIES for p in (TODAY / f).glob("*.toml")
+)
 #: every file of the library; those of one crankshaft without offsets are FILES, which the
 #: classic per-cylinder series checks too (the others: tests/analysis/test_crankshafts.py)
 ALL_FILES = sorted(p.relative_to(TODAY).as_posix() for p in TODAY.rglob("*.toml"))
@@ -74,8 +76,14 @@ def parts(name, k, pitch=None):
         pitch = engine.throws[1].z_m - engine.throws[0].z_m if len(engine.throws) > 1 else 1.0
     o = result.order(k)
     a_k = slider_crank_a(engine.crank_radius_m / engine.rod_length_m, k)
-    return (o.force_forward / unit, o.force_backward / unit,
-            o.moment_forward / (unit * pitch), o.moment_backward / (unit * pitch), a_k, engine)
+    return (
+        o.force_forward / unit,
+        o.force_backward / unit,
+        o.moment_forward / (unit * pitch),
+        o.moment_backward / (unit * pitch),
+        a_k,
+        engine,
+    )
 
 
 def assert_zero(*values, scale=1.0):
@@ -231,7 +239,9 @@ def test_inline_5_couples():
     assert intervals(name) == (144.0,) * 5
 
 
-@pytest.mark.parametrize("name", ["inline/inline-6.toml", "v/v12-60.toml", "boxer/flat-12-180v.toml"])
+@pytest.mark.parametrize(
+    "name", ["inline/inline-6.toml", "v/v12-60.toml", "boxer/flat-12-180v.toml"]
+)
 def test_inline_6_and_its_derivatives_are_balanced_below_the_sixth_order(name):
     """In-line 6 crank 0-240-120-120-240-0: 2β and 4β run over 0, 120, 240 twice: Σe^{ikβ} = 0
     for k = 1, 2, 4 and, the crank being mirror-symmetric, Σz'e^{ikβ} = 0. A 60° V12 is two such
@@ -244,7 +254,9 @@ def test_inline_6_and_its_derivatives_are_balanced_below_the_sixth_order(name):
 def test_inline_6_sixth_order_force():
     """6β ≡ 0 on every throw: a force 6·A₆ along the axis (F⁺ = F⁻ = 3·A₆); no couple."""
     fp, fm, mp, mm, a6, _ = parts("inline/inline-6.toml", 6)
-    assert_allclose([fp, fm], [3 * a6, 3 * a6], rtol=1e-7)  # A₆ ~ 1e-4: rounding of the larger terms
+    assert_allclose(
+        [fp, fm], [3 * a6, 3 * a6], rtol=1e-7
+    )  # A₆ ~ 1e-4: rounding of the larger terms
     assert_zero(mp, mm)
     assert intervals("inline/inline-6.toml") == (120.0,) * 6
 
@@ -269,8 +281,11 @@ def test_v_twin_45_primary_ellipse_and_315_405_firing():
     fp, fm, _, _, _, _ = parts(name, 1)
     assert_allclose([abs(fp), abs(fm)], [1.0, math.cos(math.radians(45))], rtol=EXACT)
     fp, fm, _, _, a2, _ = parts(name, 2)
-    assert_allclose([abs(fp), abs(fm)], [a2 * math.cos(math.radians(22.5)), a2 * math.cos(math.radians(67.5))],
-                    rtol=EXACT)
+    assert_allclose(
+        [abs(fp), abs(fm)],
+        [a2 * math.cos(math.radians(22.5)), a2 * math.cos(math.radians(67.5))],
+        rtol=EXACT,
+    )
     assert intervals(name) == (315.0, 405.0)
 
 
@@ -407,28 +422,36 @@ def test_v10_72_in_line_5_crank_couples():
     assert_allclose([abs(mp), abs(mm)], [V10_S1, math.cos(math.radians(72)) * V10_S1], rtol=EXACT)
     fp, fm, mp, mm, a2, _ = parts(name, 2)
     assert_zero(fp, fm)
-    assert_allclose([abs(mp), abs(mm)],
-                    [math.cos(math.radians(36)) * a2 * V10_S2, abs(math.cos(math.radians(108))) * a2 * V10_S2],
-                    rtol=EXACT)
+    assert_allclose(
+        [abs(mp), abs(mm)],
+        [math.cos(math.radians(36)) * a2 * V10_S2, abs(math.cos(math.radians(108))) * a2 * V10_S2],
+        rtol=EXACT,
+    )
     assert intervals(name) == (72.0,) * 10
 
 
 def test_v10_90_split_pin_couples():
-    """γ = −45° (1-5), +45° (6-10); firing 1-6-5-10-2-7-3-8-4-9 puts pair bases b = 0-72-288-144-216
-    (the in-line 5 crank above) and each bank-2 pin 18° on. M1⁺ = ½|1 + e^{i18}|·|S1| = cos 9°·|S1|;
-    M1⁻ = ½|−i + i·e^{−i18}|·|S1| = sin 9°·|S1|; M2⁺ = A₂/2·|e^{i45} + e^{−i9}|·|S2| = cos 27°·A₂·|S2|;
+    """γ = −45° (1-5), +45° (6-10); firing 1-6-5-10-2-7-3-8-4-9 puts pair bases
+    b = 0-72-288-144-216 (the in-line 5 crank above) and each bank-2 pin 18° on.
+    M1⁺ = ½|1 + e^{i18}|·|S1| = cos 9°·|S1|; M1⁻ = ½|−i + i·e^{−i18}|·|S1| = sin 9°·|S1|;
+    M2⁺ = A₂/2·|e^{i45} + e^{−i9}|·|S2| = cos 27°·A₂·|S2|;
     M2⁻ = A₂/2·|e^{−i135} + e^{i99}|·|S2| = sin 27°·A₂·|S2|. No forces of orders 1, 2."""
     name = "v/v10-90-split-pin.toml"
     d = z_pitch(name, 1, 3)
     fp, fm, mp, mm, _, _ = parts(name, 1, d)
     assert_zero(fp, fm)
-    assert_allclose([abs(mp), abs(mm)], [math.cos(math.radians(9)) * V10_S1, math.sin(math.radians(9)) * V10_S1],
-                    rtol=EXACT)
+    assert_allclose(
+        [abs(mp), abs(mm)],
+        [math.cos(math.radians(9)) * V10_S1, math.sin(math.radians(9)) * V10_S1],
+        rtol=EXACT,
+    )
     fp, fm, mp, mm, a2, _ = parts(name, 2, d)
     assert_zero(fp, fm)
-    assert_allclose([abs(mp), abs(mm)],
-                    [math.cos(math.radians(27)) * a2 * V10_S2, math.sin(math.radians(27)) * a2 * V10_S2],
-                    rtol=EXACT)
+    assert_allclose(
+        [abs(mp), abs(mm)],
+        [math.cos(math.radians(27)) * a2 * V10_S2, math.sin(math.radians(27)) * a2 * V10_S2],
+        rtol=EXACT,
+    )
     assert intervals(name) == (72.0,) * 10
 
 
@@ -514,8 +537,9 @@ def test_library_table_is_current():
     from tools import library_table
 
     committed = library_table.TARGET.read_text(encoding="utf-8")
-    assert committed == library_table.render(), \
+    assert committed == library_table.render(), (
         "configs/README.md is out of date: run python tools/library_table.py"
+    )
 
 
 def test_library_table_figures_match_the_hand_derivations():
@@ -523,13 +547,22 @@ def test_library_table_figures_match_the_hand_derivations():
     M1 = √10·m·r·ω²·d with m = 0.75 kg, r = 46 mm, ω = 6000 rpm, d = 111.76 mm; the 90° twin's
     F1 per cylinder = 1/2; the in-line 2-270's F1 per cylinder = √2/2."""
     text = (ROOT / "configs" / "README.md").read_text(encoding="utf-8")
-    rows = {line.split("|")[1].strip().split("]")[0].lstrip("["): [c.strip() for c in line.split("|")[1:-1]]
-            for line in text.splitlines() if line.startswith("| [today/")}
+    rows = {
+        line.split("|")[1].strip().split("]")[0].lstrip("["): [
+            c.strip() for c in line.split("|")[1:-1]
+        ]
+        for line in text.splitlines()
+        if line.startswith("| [today/")
+    }
     omega = 6000 * 2 * math.pi / 60
     m1 = math.sqrt(10) * 0.75 * 0.046 * omega**2 * 0.11176
-    assert float(rows["today/v/v8-90-cross-plane.toml"][7]) == pytest.approx(m1, rel=5e-3)  # 3 digits
+    assert float(rows["today/v/v8-90-cross-plane.toml"][7]) == pytest.approx(
+        m1, rel=5e-3
+    )  # 3 digits
     assert float(rows["today/v/v-twin-90.toml"][6]) == pytest.approx(0.5, rel=5e-3)
-    assert float(rows["today/inline/inline-2-270.toml"][6]) == pytest.approx(math.sqrt(2) / 2, rel=5e-3)
+    assert float(rows["today/inline/inline-2-270.toml"][6]) == pytest.approx(
+        math.sqrt(2) / 2, rel=5e-3
+    )
 
 
 @pytest.mark.parametrize("name", ALL_FILES)
@@ -538,8 +571,11 @@ def test_each_file_names_its_engine_marks_estimates_and_states_its_balance(name)
     be estimates, and the textbook (or, for the W16, a derived) statement of the balance."""
     engine = engine_of(name)
     assert engine.source
-    comment = [line for line in (TODAY / name).read_text(encoding="utf-8").splitlines()
-               if line.startswith("#")]
+    comment = [
+        line
+        for line in (TODAY / name).read_text(encoding="utf-8").splitlines()
+        if line.startswith("#")
+    ]
     text = " ".join(comment)
     assert len(comment) >= 4
     assert "estimate" in text

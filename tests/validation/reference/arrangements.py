@@ -91,7 +91,7 @@ cranks (β_1 = 0) are found by backtracking over lattice phases, counting TDC hi
 import itertools
 import math
 from collections import Counter
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 
@@ -100,7 +100,7 @@ KMAX = 8
 #: relative size below which a one-throw force counts as zero (coefficient then 0)
 _DEN_TOL = 1e-12
 #: default geometry for in-line coefficients (they do not depend on it)
-_INLINE_GEOMETRY = dict(m_rec=1.0, m_rot=0.0, r=1.0, l=4.0, omega=1.0, pitch=1.0)
+_INLINE_GEOMETRY = dict(m_rec=1.0, m_rot=0.0, r=1.0, rod=4.0, omega=1.0, pitch=1.0)
 
 
 def _reduce(x):
@@ -119,12 +119,12 @@ def _angle_key(x):
 # slider crank and phasors
 
 
-@lru_cache(maxsize=None)
-def slider_crank_coefficients(r, l, kmax=KMAX, points=4096):
+@cache
+def slider_crank_coefficients(r, rod, kmax=KMAX, points=4096):
     """A_k, k = 0..kmax, of the plain slider crank: the reciprocating inertia force along the
     cylinder axis is m ω² r Σ A_k cos kφ. A_0 = 0, A_1 = 1, odd k ≥ 3 set exactly to 0."""
     phi = 2 * np.pi * np.arange(points) / points
-    s = r * np.cos(phi) + np.sqrt(l**2 - (r * np.sin(phi)) ** 2)
+    s = r * np.cos(phi) + np.sqrt(rod**2 - (r * np.sin(phi)) ** 2)
     spectrum = np.fft.rfft(s) / points
     c = 2 * spectrum.real  # s is even in φ: cosine coefficients
     k = np.arange(kmax + 1)
@@ -137,7 +137,7 @@ def slider_crank_coefficients(r, l, kmax=KMAX, points=4096):
     return tuple(float(x) for x in a)
 
 
-def throw_phasors(phases_deg, banks_deg, m_rec, m_rot, r, l, omega, kmax=KMAX):
+def throw_phasors(phases_deg, banks_deg, m_rec, m_rot, r, rod, omega, kmax=KMAX):
     """Order-k force phasors of every throw with its cylinders and pin mass.
 
     Returns (plus, minus), complex arrays of shape (kmax + 1, n_throws) in N (row k; row 0 is
@@ -146,7 +146,7 @@ def throw_phasors(phases_deg, banks_deg, m_rec, m_rot, r, l, omega, kmax=KMAX):
     beta = np.deg2rad(np.asarray(phases_deg, float))[None, :, None]
     gamma = np.deg2rad(np.asarray(banks_deg, float))[None, None, :]
     k = np.arange(kmax + 1)[:, None, None]
-    a = np.asarray(slider_crank_coefficients(float(r), float(l), kmax))[:, None, None]
+    a = np.asarray(slider_crank_coefficients(float(r), float(rod), kmax))[:, None, None]
     half = 0.5 * m_rec * omega**2 * r * a
     plus = (half * np.exp(1j * k * (beta - gamma)) * np.exp(1j * gamma)).sum(axis=2)
     minus = (half * np.exp(-1j * k * (beta - gamma)) * np.exp(1j * gamma)).sum(axis=2)
@@ -155,14 +155,14 @@ def throw_phasors(phases_deg, banks_deg, m_rec, m_rot, r, l, omega, kmax=KMAX):
     return plus, minus
 
 
-def engine_phasors(phases_deg, banks_deg, m_rec, m_rot, r, l, omega, pitch, kmax=KMAX):
+def engine_phasors(phases_deg, banks_deg, m_rec, m_rot, r, rod, omega, pitch, kmax=KMAX):
     """Resultant force and free moment phasors, and the one-throw force, orders 0..kmax.
 
     Throws at z = 0, pitch, 2·pitch, …; every throw carries one cylinder per bank. Returns a
     dict of arrays indexed by k: ``F_plus``, ``F_minus`` (N), ``M_plus``, ``M_minus`` (N·m, about
     the mean z of the cylinders), ``force_max`` = |F⁺| + |F⁻|, ``moment_max`` = |M⁺| + |M⁻|,
     ``one_throw`` (largest order-k force of one throw alone), and coefficients ``F``, ``M``."""
-    plus, minus = throw_phasors(phases_deg, banks_deg, m_rec, m_rot, r, l, omega, kmax)
+    plus, minus = throw_phasors(phases_deg, banks_deg, m_rec, m_rot, r, rod, omega, kmax)
     n = plus.shape[1]
     z = pitch * np.arange(n)
     lever = z - z.mean()  # every throw has the same cylinders: mean over cylinders = over throws
@@ -174,7 +174,7 @@ def engine_phasors(phases_deg, banks_deg, m_rec, m_rot, r, l, omega, pitch, kmax
     }
     out["force_max"] = np.abs(out["F_plus"]) + np.abs(out["F_minus"])
     out["moment_max"] = np.abs(out["M_plus"]) + np.abs(out["M_minus"])
-    one_plus, one_minus = throw_phasors([0.0], banks_deg, m_rec, m_rot, r, l, omega, kmax)
+    one_plus, one_minus = throw_phasors([0.0], banks_deg, m_rec, m_rot, r, rod, omega, kmax)
     one = np.abs(one_plus[:, 0]) + np.abs(one_minus[:, 0])
     out["one_throw"] = one
     alive = one > _DEN_TOL * one.max()
@@ -198,8 +198,9 @@ def _inline_from_slots(slots, n, cycle, coefficients=True):
     arr = {"phases_deg": phases, "firing": firing, "firing_angles_deg": firing_deg}
     if coefficients:
         g = _INLINE_GEOMETRY
-        ph = engine_phasors(phases, [0.0], g["m_rec"], g["m_rot"], g["r"], g["l"], g["omega"],
-                            g["pitch"])
+        ph = engine_phasors(
+            phases, [0.0], g["m_rec"], g["m_rot"], g["r"], g["rod"], g["omega"], g["pitch"]
+        )
         arr["F"] = {k: float(ph["F"][k]) for k in range(1, KMAX + 1)}
         arr["M"] = {k: float(ph["M"][k]) for k in range(1, KMAX + 1)}
     return arr
@@ -317,8 +318,9 @@ def classes_count(n, cycle):
 # V and W engines
 
 
-def v_or_w_arrangements(bank_angles_deg, n_throws, cycle, m_rec, m_rot, r, l, pitch, omega,
-                        kmax=KMAX):
+def v_or_w_arrangements(
+    bank_angles_deg, n_throws, cycle, m_rec, m_rot, r, rod, pitch, omega, kmax=KMAX
+):
     """Every even-firing crank (β_1 = 0, phases on the firing lattice) of an engine with one
     cylinder per bank on each of ``n_throws`` throws, all in the throw's plane.
 
@@ -359,11 +361,14 @@ def v_or_w_arrangements(bank_angles_deg, n_throws, cycle, m_rec, m_rot, r, l, pi
 
     out = []
     for phases in found:
-        ph = engine_phasors(phases, banks, m_rec, m_rot, r, l, omega, pitch, kmax)
+        ph = engine_phasors(phases, banks, m_rec, m_rot, r, rod, omega, pitch, kmax)
         item = {"phases_deg": phases}
         if cycle == 2:
-            tdc = {(j + 1, b + 1): _angle_key(banks[b] - phases[j] - banks[0])
-                   for j in range(n_throws) for b in range(n_banks)}
+            tdc = {
+                (j + 1, b + 1): _angle_key(banks[b] - phases[j] - banks[0])
+                for j in range(n_throws)
+                for b in range(n_banks)
+            }
             item["firing"] = tuple(sorted(tdc, key=lambda c: tdc[c]))
         else:
             item["firing"] = None

@@ -12,7 +12,7 @@ validate``).
 import dataclasses
 import math
 import tomllib
-from functools import lru_cache
+from functools import cache
 from pathlib import Path
 
 import numpy as np
@@ -87,7 +87,7 @@ def errata():
 # ---------------------------------------------------------------- engines and variants
 
 
-@lru_cache(maxsize=None)
+@cache
 def _engine(config):
     return load(ROOT / config)
 
@@ -101,33 +101,52 @@ def _variant(record):
         engine = dataclasses.replace(engine, rotating_kg=0.0, cylinders=cylinders)
     if "single-obliquity" in record.get("variant", []):
         # every link rod replaced by a plain rod of the master's length on the same pin
-        cylinders = tuple(dataclasses.replace(c, master=None, link_length_m=0.0, knuckle_radius_m=0.0,
-                                              knuckle_angle_rad=0.0, knuckle_kg=0.0)
-                          for c in cylinders)
+        cylinders = tuple(
+            dataclasses.replace(
+                c,
+                master=None,
+                link_length_m=0.0,
+                knuckle_radius_m=0.0,
+                knuckle_angle_rad=0.0,
+                knuckle_kg=0.0,
+            )
+            for c in cylinders
+        )
         engine = dataclasses.replace(engine, cylinders=cylinders)
     if "masses_g" in record:
-        cylinders = tuple(dataclasses.replace(c, reciprocating_kg=m / 1000.0)
-                          for c, m in zip(cylinders, record["masses_g"]))
+        cylinders = tuple(
+            dataclasses.replace(c, reciprocating_kg=m / 1000.0)
+            for c, m in zip(cylinders, record["masses_g"], strict=True)
+        )
         engine = dataclasses.replace(engine, cylinders=cylinders)
     if "rod_inertias_kgm2" in record:
         # added to each cylinder's own (in number order): Tanaka's I_B and Φ corrections
-        cylinders = tuple(dataclasses.replace(c, rod_inertia_kgm2=c.rod_inertia_kgm2 + extra)
-                          for c, extra in zip(cylinders, record["rod_inertias_kgm2"]))
+        cylinders = tuple(
+            dataclasses.replace(c, rod_inertia_kgm2=c.rod_inertia_kgm2 + extra)
+            for c, extra in zip(cylinders, record["rod_inertias_kgm2"], strict=True)
+        )
         engine = dataclasses.replace(engine, cylinders=cylinders)
     if "knuckle_radii_mm" in record:
-        cylinders = tuple(dataclasses.replace(c, knuckle_radius_m=a / 1000.0) if c.is_link else c
-                          for c, a in zip(cylinders, record["knuckle_radii_mm"]))
+        cylinders = tuple(
+            dataclasses.replace(c, knuckle_radius_m=a / 1000.0) if c.is_link else c
+            for c, a in zip(cylinders, record["knuckle_radii_mm"], strict=True)
+        )
         engine = dataclasses.replace(engine, cylinders=cylinders)
     return engine
 
 
 def _base(record):
     """The record's engine without the overrides that a difference is taken against."""
-    return _variant({k: v for k, v in record.items()
-                     if k not in ("masses_g", "knuckle_radii_mm", "rod_inertias_kgm2")})
+    return _variant(
+        {
+            k: v
+            for k, v in record.items()
+            if k not in ("masses_g", "knuckle_radii_mm", "rod_inertias_kgm2")
+        }
+    )
 
 
-@lru_cache(maxsize=None)
+@cache
 def _analysed(engine, samples, max_order):
     return analyse(engine, samples, max_order)
 
@@ -136,7 +155,7 @@ def _result(engine, record):
     return _analysed(engine, record.get("samples", 256), record.get("max_order", 8))
 
 
-@lru_cache(maxsize=None)
+@cache
 def _torqued(engine, samples, max_order):
     return torque(engine, samples, max_order)
 
@@ -152,13 +171,16 @@ def _unit(name, engine, result):
     """Divisor turning newtons (or N·m) into the record's unit."""
     if name == "per_cylinder":
         return result.per_cylinder_unit_n
-    if name == "per_cylinder_Nm":    # torques per m_rec·r²·ω²·n
+    if name == "per_cylinder_Nm":  # torques per m_rec·r²·ω²·n
         return engine.per_cylinder_unit_n * engine.crank_radius_m
     return {
-        "N": 1.0, "Nm": 1.0,
+        "N": 1.0,
+        "Nm": 1.0,
         # phases and ratios: the scale cancels
-        "": 1.0, "deg": 1.0,
-        "kgf": STANDARD_GRAVITY, "kgfm": STANDARD_GRAVITY,
+        "": 1.0,
+        "deg": 1.0,
+        "kgf": STANDARD_GRAVITY,
+        "kgfm": STANDARD_GRAVITY,
         # Fraeys de Veubeke's "kg": a force divided by R·Ω² (his unit of Table XII)
         "kg_RW2": engine.crank_radius_m * engine.speed_rad_s**2,
     }[name]
@@ -192,11 +214,18 @@ def _order_phasors(record, kind="force"):
     engine = _variant(record)
     result = _result(engine, record)
     o = result.shaking.orders[k - 1]
-    f, b = (o.force_forward, o.force_backward) if kind == "force" else (o.moment_forward, o.moment_backward)
+    f, b = (
+        (o.force_forward, o.force_backward)
+        if kind == "force"
+        else (o.moment_forward, o.moment_backward)
+    )
     if record.get("difference"):
         base = _result(_base(record), record).shaking.orders[k - 1]
-        bf, bb = (base.force_forward, base.force_backward) if kind == "force" else (
-            base.moment_forward, base.moment_backward)
+        bf, bb = (
+            (base.force_forward, base.force_backward)
+            if kind == "force"
+            else (base.moment_forward, base.moment_backward)
+        )
         f, b = f - bf, b - bb
     scale = _unit(record["unit"], engine, result)
     return f / scale, b / scale, k
@@ -217,15 +246,19 @@ def _quantity(record, frames):
             return s
         if form == "amplitude":
             return math.hypot(a, s)
-        if form == "phase":      # a·cos + s·sin = R·cos(kθ + φ)
+        if form == "phase":  # a·cos + s·sin = R·cos(kθ + φ)
             return math.degrees(math.atan2(-s, a))
-        if form == "sinphase":   # a·cos + s·sin = R·sin(kθ + φ)
+        if form == "sinphase":  # a·cos + s·sin = R·sin(kθ + φ)
             return math.degrees(math.atan2(a, s)) % 360.0
     if kind in ("forward", "backward", "max", "min"):
         f, b, _ = _order_phasors(record)
-        return {"forward": abs(f), "backward": abs(b), "max": abs(f) + abs(b),
-                "min": abs(abs(f) - abs(b))}[kind]
-    if kind == "re":         # signed real part: Fraeys de Veubeke's S_k, S_−k
+        return {
+            "forward": abs(f),
+            "backward": abs(b),
+            "max": abs(f) + abs(b),
+            "min": abs(abs(f) - abs(b)),
+        }[kind]
+    if kind == "re":  # signed real part: Fraeys de Veubeke's S_k, S_−k
         f, b, _ = _order_phasors(record)
         return (f if words[1] == "forward" else b).real
     if kind == "moment":
@@ -246,9 +279,9 @@ def _quantity(record, frames):
     if kind == "interval":
         intervals = _result(_variant(record), record).firing.intervals_deg
         return {"max": max(intervals), "min": min(intervals)}[words[1]]
-    if kind == "lead":       # an opposed-piston bore's exhaust lead, degrees
+    if kind == "lead":  # an opposed-piston bore's exhaust lead, degrees
         return _lead(_variant(record), int(words[1]))
-    if kind == "split":      # the angle between two throws' pins, degrees in [0, 360)
+    if kind == "split":  # the angle between two throws' pins, degrees in [0, 360)
         engine = _variant(record)
         a, b = (engine.throws[int(w) - 1].phase_rad for w in words[1:3])
         return math.degrees(b - a) % 360.0
@@ -265,7 +298,9 @@ def _quantity(record, frames):
     if kind == "reduction":
         return _fraeys_reduction(record["data"])[words[1]]
     if kind == "gamma":
-        return _gamma_sum(record["radii_mm"], record["crank_radius_mm"], int(words[1]), int(words[2]))
+        return _gamma_sum(
+            record["radii_mm"], record["crank_radius_mm"], int(words[1]), int(words[2])
+        )
     if kind == "series":
         return _series_check(words[1], record)
     if kind == "pru":
@@ -289,7 +324,7 @@ def _lead(engine, number):
     return (math.degrees(theta[np.argmax(own)] - theta[np.argmax(first)])) % 360.0
 
 
-@lru_cache(maxsize=None)
+@cache
 def _torsion_response(speeds):
     from .opentorsion_ice import compare
 
@@ -301,7 +336,8 @@ def _torsion(form, figure, speeds_rpm):
     """``torsion resonance 31``: the speed of the largest vibratory torque (the orders'
     amplitudes summed, as openTorsion's example sets it beside the measurement) in the
     section of the paper's Fig. 31 (flywheel–6th cylinder) or 32 (pulley–gear train) among
-    ``speeds_rpm``; ``torsion torque 31``: that largest torque (one speed: the torque there), N·m."""
+    ``speeds_rpm``; ``torsion torque 31``: that largest torque (one speed: the torque there),
+    N·m."""
     compare, summed, _ = _torsion_response(tuple(float(v) for v in speeds_rpm))
     values = summed[compare.FIG31 if figure == 31 else compare.FIG32]
     if form == "resonance":
@@ -316,6 +352,7 @@ def _pru(record, part, k):
     configuration), the ratio of the two engines' PRU: the project guides tabulate one engine
     type at several cylinder numbers, and a ratio cancels the maker's masses and dimensions
     that are common to the family, leaving the firing orders and cylinder numbers."""
+
     def value(config):
         engine = _variant({**record, "config": config})
         pru = power_related_unbalance(_result(engine, record), orders=(k,))
@@ -335,12 +372,12 @@ def _torque_value(result, part, words):
     if form in ("sin", "cos"):
         cos, sin = series.order(int(words[1]))
         return sin if form == "sin" else cos
-    if form == "largest_below":   # the largest amplitude of the orders below K
+    if form == "largest_below":  # the largest amplitude of the orders below K
         return max(math.hypot(c, s) for k, c, s in series.orders if k < float(words[1]))
-    if form == "variation":       # (max − min)/mean of the reduced mass
+    if form == "variation":  # (max − min)/mean of the reduced mass
         mu = result.reduced_mass.curve_kgm2
         return (mu.max() - mu.min()) / mu.mean()
-    if form == "ratio":      # |sin K2 / sin K1|
+    if form == "ratio":  # |sin K2 / sin K1|
         return abs(series.order(int(words[2]))[1] / series.order(int(words[1]))[1])
     return {"max": series.max, "min": series.min, "mean": series.mean}[form]
 
@@ -359,7 +396,7 @@ def _torque_quantity(record, words):
         value -= _torque_value(_torque_result(base, record), part, rest)
     if rest[0] in ("ratio", "variation"):
         return value
-    if record["unit"] == "%":   # of a torque the paper gives, ``percent_of_kgfm``
+    if record["unit"] == "%":  # of a torque the paper gives, ``percent_of_kgfm``
         return 100.0 * value / STANDARD_GRAVITY / record["percent_of_kgfm"]
     return value / _unit(record["unit"], engine, None)
 
@@ -373,8 +410,11 @@ def _fraeys_coefficient(record, name, k):
     result = _torque_result(engine, record)
     r, w = engine.crank_radius_m, engine.speed_rad_s
     if name == "U":
-        return (result.reduced_mass.mean_kgm2 / (2 * r**2) if k == 0
-                else result.inertia.order(k)[1] / (r * w) ** 2)
+        return (
+            result.reduced_mass.mean_kgm2 / (2 * r**2)
+            if k == 0
+            else result.inertia.order(k)[1] / (r * w) ** 2
+        )
     if name == "V":
         return result.tilting.order(k)[1] / (r * w) ** 2
     pin = result.pins[0]
@@ -405,7 +445,9 @@ def _margoulis(record, form):
         mean = ell * omega**2
         # a torque range small enough that r_c ≈ 100: the mean speed stays the nominal one
         spread = omega**2 * n * inertia / 200.0
-        factors = steadiness(_sinusoid(n, mean, spread), 720.0, inertia, omega, "propeller").margoulis()
+        factors = steadiness(
+            _sinusoid(n, mean, spread), 720.0, inertia, omega, "propeller"
+        ).margoulis()
         ratio = factors["r_v"] / factors["r_c"]
         return ratio * n if form.endswith("times_N") else ratio
     if form == "integrated":
@@ -426,16 +468,30 @@ def _link_first_harmonic(record):
     # probe's link cylinder gets an axis a quarter turn away, since two banks may not coincide
     # (Table I starts at φ = 0)
     probe = dataclasses.replace(
-        engine, bank_angles_rad=(0.0, phi + math.pi / 2), throws=engine.throws[:1], firing_order=None,
-        cylinders=(dataclasses.replace(master, bank=1),
-                   dataclasses.replace(link, number=2, bank=2, master=1, knuckle_angle_rad=phi,
-                                       **({"knuckle_radius_m": record["knuckle_radius_mm"] / 1000}
-                                          if "knuckle_radius_mm" in record else {}))),
+        engine,
+        bank_angles_rad=(0.0, phi + math.pi / 2),
+        throws=engine.throws[:1],
+        firing_order=None,
+        cylinders=(
+            dataclasses.replace(master, bank=1),
+            dataclasses.replace(
+                link,
+                number=2,
+                bank=2,
+                master=1,
+                knuckle_angle_rad=phi,
+                **(
+                    {"knuckle_radius_m": record["knuckle_radius_mm"] / 1000}
+                    if "knuckle_radius_mm" in record
+                    else {}
+                ),
+            ),
+        ),
     )
     samples = 256
     theta = 2 * np.pi * np.arange(samples) / samples
     knuckle = linkage(probe, theta).knuckle[2]
-    lean = -(knuckle * np.exp(-1j * phi)).imag / link.link_length_m   # sin φ'
+    lean = -(knuckle * np.exp(-1j * phi)).imag / link.link_length_m  # sin φ'
     c1 = np.fft.fft(lean)[1] / samples
     # lean = A cos θ + B sin θ with A = 2 Re c1, B = −2 Im c1; in θ_T = −θ: A cos θ_T − B sin θ_T
     a, b = 2 * c1.real, 2 * c1.imag
@@ -447,39 +503,55 @@ def _fraeys_reduction(data):
     """Fraeys de Veubeke § 8, formulas (13)-(17), from the part data of Table VIII."""
     big_l, h_master, l_link, h_link = data["L_mm"], data["H_mm"], data["l_mm"], data["h_mm"]
     master, link, piston = data["B_kg"], data["b_kg"], data["p_kg"]
-    radii = data["r_mm"]               # knuckle radii of the link cylinders, at ψ = 40°·(n − 1)
+    radii = data["r_mm"]  # knuckle radii of the link cylinders, at ψ = 40°·(n − 1)
     psi = [math.radians(40 * n) for n in range(1, len(radii) + 1)]
     big_k, k = h_master / big_l, h_link / l_link
-    m = -link * (1 - k) / big_l * sum(r * math.cos(p) for r, p in zip(radii, psi))   # (13)
+    m = (
+        -link * (1 - k) / big_l * sum(r * math.cos(p) for r, p in zip(radii, psi, strict=True))
+    )  # (13)
     return {
-        "K": big_k, "k": k, "BK": master * big_k, "bk": link * k,
-        "B(1-K)": master * (1 - big_k), "b(1-k)": link * (1 - k), "m": m,
-        "a": piston + link * k,                                             # (14)
-        "A": master * big_k - link * k - m,                                 # (15)
-        "D": master * (1 - big_k) + len(radii) * link * (1 - k) + m,        # (17)
+        "K": big_k,
+        "k": k,
+        "BK": master * big_k,
+        "bk": link * k,
+        "B(1-K)": master * (1 - big_k),
+        "b(1-k)": link * (1 - k),
+        "m": m,
+        "a": piston + link * k,  # (14)
+        "A": master * big_k - link * k - m,  # (15)
+        "D": master * (1 - big_k) + len(radii) * link * (1 - k) + m,  # (17)
     }
 
 
 def _gamma_sum(radii_mm, crank_radius_mm, power, k):
     """Fraeys de Veubeke's Table VII sums Σ γ_n^power·cos kψ_n, γ_n = r_n/R, ψ_n = 40°(n − 1)."""
-    return sum((r / crank_radius_mm) ** power * math.cos(math.radians(40 * n * k))
-               for n, r in enumerate(radii_mm))
+    return sum(
+        (r / crank_radius_mm) ** power * math.cos(math.radians(40 * n * k))
+        for n, r in enumerate(radii_mm)
+    )
 
 
 def _series_check(name, record):
     """Coefficients of the classic series, measured on the exact slider-crank."""
     q = record.get("q", 0.25)
-    engine = Engine(name="slider-crank", cycle=4, speed_rad_s=1.0, crank_radius_m=q,
-                    rod_length_m=1.0, bank_angles_rad=(0.0,), throws=(Throw(0.0),),
-                    cylinders=(Cylinder(1, 1, 1, 0.0, 1.0),))
+    engine = Engine(
+        name="slider-crank",
+        cycle=4,
+        speed_rad_s=1.0,
+        crank_radius_m=q,
+        rod_length_m=1.0,
+        bank_angles_rad=(0.0,),
+        throws=(Throw(0.0),),
+        cylinders=(Cylinder(1, 1, 1, 0.0, 1.0),),
+    )
     samples = 256
     theta = 2 * np.pi * np.arange(samples) / samples
-    travel = linkage(engine, theta).travel[1]                    # = q·cos θ + √(1 − q² sin²θ)
+    travel = linkage(engine, theta).travel[1]  # = q·cos θ + √(1 − q² sin²θ)
     c = np.fft.fft(travel - q * np.cos(theta)).real / samples
     a2 = 2 * c[2]
-    if name == "A2_q6":      # (A2 − q²/4 − q⁴/16)/q⁶ → the q⁶ coefficient as q → 0
+    if name == "A2_q6":  # (A2 − q²/4 − q⁴/16)/q⁶ → the q⁶ coefficient as q → 0
         return (a2 - q**2 / 4 - q**4 / 16) / q**6
-    if name == "B2":         # acceleration coefficient of cos 2θ, per r·ω²
+    if name == "B2":  # acceleration coefficient of cos 2θ, per r·ω²
         return 4 * a2 / q
     raise ValueError(name)
 
@@ -490,10 +562,16 @@ def evaluate(record, paper):
     if "data" in paper and "data" not in record:
         record = {**record, "data": paper["data"]}
     return Row(
-        id=record["id"], paper=paper["paper"]["key"], where=record["where"], quantity=record["quantity"],
-        unit=record.get("unit", ""), published=float(record["published"]),
-        ours=float(_quantity(record, frames)), tolerance=float(record["tolerance"]),
-        reason=record["reason"], erratum=record.get("erratum", ""),
+        id=record["id"],
+        paper=paper["paper"]["key"],
+        where=record["where"],
+        quantity=record["quantity"],
+        unit=record.get("unit", ""),
+        published=float(record["published"]),
+        ours=float(_quantity(record, frames)),
+        tolerance=float(record["tolerance"]),
+        reason=record["reason"],
+        erratum=record.get("erratum", ""),
         corrected=record.get("corrected"),
     )
 

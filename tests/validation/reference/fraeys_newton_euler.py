@@ -56,9 +56,19 @@ def solve(samples):
         bnd = -(kd * turn).imag / (LINK_L * cn)
         bndd = (-(kdd * turn).imag + LINK_L * sn * bnd**2) / (LINK_L * cn)
         en = np.exp(1j * (psi + bn))
-        pn, pnd, pndd = k + LINK_L * en, kd + 1j * LINK_L * bnd * en, kdd + LINK_L * (1j * bndd - bnd**2) * en
-        gn, gnd, gndd = k + LINK_H * en, kd + 1j * LINK_H * bnd * en, kdd + LINK_H * (1j * bndd - bnd**2) * en
-        energy += 0.5 * LINK_B * abs(gnd) ** 2 + 0.5 * LINK_J * bnd**2 + 0.5 * PISTON * abs(pnd) ** 2
+        pn, pnd, pndd = (
+            k + LINK_L * en,
+            kd + 1j * LINK_L * bnd * en,
+            kdd + LINK_L * (1j * bndd - bnd**2) * en,
+        )
+        gn, gnd, gndd = (
+            k + LINK_H * en,
+            kd + 1j * LINK_H * bnd * en,
+            kdd + LINK_H * (1j * bndd - bnd**2) * en,
+        )
+        energy += (
+            0.5 * LINK_B * abs(gnd) ** 2 + 0.5 * LINK_J * bnd**2 + 0.5 * PISTON * abs(pnd) ** 2
+        )
         momentum += LINK_B * _cross(gn, gnd) + LINK_J * bnd
         links.append(dict(k=k, p=pn, pdd=pndd, g=gn, gdd=gndd, bdd=bndd, axis=np.exp(1j * psi)))
     from_links, moment_from_links = 0, 0
@@ -66,16 +76,19 @@ def solve(samples):
         normal = 1j * d["axis"]
         free = -PISTON * d["pdd"]
         # the link rod's moments about its knuckle pin give the wall force on its piston
-        lhs = (LINK_J * d["bdd"] + _cross(d["g"] - d["k"], LINK_B * d["gdd"])
-               - _cross(d["p"] - d["k"], free))
+        lhs = (
+            LINK_J * d["bdd"]
+            + _cross(d["g"] - d["k"], LINK_B * d["gdd"])
+            - _cross(d["p"] - d["k"], free)
+        )
         wall = lhs / _cross(d["p"] - d["k"], normal * np.ones_like(lhs))
-        on_link = LINK_B * d["gdd"] - (free + wall * normal)   # master rod -> link, at the knuckle
+        on_link = LINK_B * d["gdd"] - (free + wall * normal)  # master rod -> link, at the knuckle
         from_links = from_links - on_link
         moment_from_links = moment_from_links + _cross(d["k"] - pin, -on_link)
     free1 = -PISTON * p1dd
     lhs = J * b1dd + _cross(g1 - pin, B * g1dd) - _cross(p1 - pin, free1) - moment_from_links
     wall1 = lhs / _cross(p1 - pin, 1j * np.ones_like(lhs))
-    on_master = B * g1dd - (free1 + wall1 * 1j) - from_links   # crank pin -> master rod
+    on_master = B * g1dd - (free1 + wall1 * 1j) - from_links  # crank pin -> master rod
     return theta, energy, momentum, -on_master
 
 

@@ -17,8 +17,9 @@ FIG31, FIG32 = "throw 6–flywheel", "pulley–gear train"
 
 def measured(figure):
     """(speeds rpm, vibratory torque N·m) digitised from the paper's Fig. 31 or 32."""
-    data = np.genfromtxt(HERE / f"torsional_vibration_data_fig{figure}.csv", delimiter=",",
-                         skip_header=1)
+    data = np.genfromtxt(
+        HERE / f"torsional_vibration_data_fig{figure}.csv", delimiter=",", skip_header=1
+    )
     return data[:, 0], data[:, 1]
 
 
@@ -28,7 +29,7 @@ def pressure_at(speed_rpm):
     curve = np.genfromtxt(HERE / "pressure_data.csv", delimiter=";")
     peaks = np.genfromtxt(HERE / "peak_data.csv", delimiter=";")
     peak = np.interp(speed_rpm, peaks[:, 0], peaks[:, 1])
-    angles = (curve[:-1, 0] - 360.0) % 720.0   # from the firing TDC; 720 repeats 0
+    angles = (curve[:-1, 0] - 360.0) % 720.0  # from the firing TDC; 720 repeats 0
     order = np.argsort(angles)
     pressure = curve[:-1, 1][order] / 15.2 * peak * 1e6
     return PressureCurve(angles[order], pressure, 720.0, "pressure_data.csv")
@@ -49,8 +50,11 @@ def response(speeds_rpm, max_order=12):
             peak[name].append(result.torque_nm[0, s])
             summed[name].append(result.order_torque_nm[0, s].sum())
     frequencies = [m.frequency_hz for m in result.modes]
-    return ({k: np.array(v) for k, v in peak.items()},
-            {k: np.array(v) for k, v in summed.items()}, frequencies)
+    return (
+        {k: np.array(v) for k, v in peak.items()},
+        {k: np.array(v) for k, v in summed.items()},
+        frequencies,
+    )
 
 
 def draw(path):
@@ -64,17 +68,22 @@ def draw(path):
     speeds = np.arange(1000.0, 2551.0, 10.0)
     peak, summed, frequencies = response(speeds)
     fig = Figure(figsize=(10, 4.2), layout="constrained")
-    for ax, figure, name in zip(fig.subplots(1, 2), (31, 32), (FIG31, FIG32)):
+    for ax, figure, name in zip(fig.subplots(1, 2), (31, 32), (FIG31, FIG32), strict=True):
         x, y = measured(figure)
         ax.plot(x, y, "k.", markersize=4, label=f"measured (Fig. {figure})")
         ax.plot(speeds, summed[name], "C3", label="balance + openTorsion, orders summed")
         ax.plot(speeds, peak[name], "C0--", linewidth=1.0, label="the same, waveform peak")
-        ax.set(title=f"{name} (Fig. {figure})", xlabel="Engine speed (rpm)",
-               ylabel="Vibratory torque (N·m)")
+        ax.set(
+            title=f"{name} (Fig. {figure})",
+            xlabel="Engine speed (rpm)",
+            ylabel="Vibratory torque (N·m)",
+        )
         ax.legend(fontsize=8)
-    fig.suptitle("Mendes et al. (2008): first mode "
-                 f"{frequencies[0]:.1f} Hz, its 6th order at {frequencies[0] * 10:.0f} rpm",
-                 fontsize=10)
+    fig.suptitle(
+        "Mendes et al. (2008): first mode "
+        f"{frequencies[0]:.1f} Hz, its 6th order at {frequencies[0] * 10:.0f} rpm",
+        fontsize=10,
+    )
     fig.savefig(path, dpi=110)
 
 
