@@ -124,7 +124,10 @@ class RollingMoment:
     @classmethod
     def from_phasor(cls, order, phasor, floor_nm, speed_ratios=()):
         """From C with M(θ) = Re(C·e^{ikθ}); parts below ``floor_nm`` are rounding noise."""
-        clean = lambda x: float(x) if abs(x) >= floor_nm else 0.0  # noqa: E731
+
+        def clean(x):
+            return float(x) if abs(x) >= floor_nm else 0.0
+
         return cls(int(order), clean(phasor.real), clean(-phasor.imag), tuple(speed_ratios))
 
     @property

@@ -101,7 +101,10 @@ def part_values(forward, backward, floor, unit, vertical_rad=0.0, components=Tru
     the vertical and horizontal components, noise as exact zeros. ``axis_deg`` is None where
     the ellipse is a circle (one of the phasors is zero) or nothing is left: there is no
     axis."""
-    clean = lambda z: z if abs(z) >= floor else 0j  # noqa: E731
+
+    def clean(z):
+        return z if abs(z) >= floor else 0j
+
     forward, backward = clean(forward), clean(backward)
     largest, smallest, axis = ellipse(forward, backward)
     values = {

@@ -31,9 +31,9 @@ def arrangement_toml(
 
 
 def as_built_toml(data: dict, tables: dict, header: str = "") -> str:
-    """A complete configuration: the parsed ``data`` of one (see :func:`load_data`) with the
-    rows of ``tables`` (``{"counterweights": [...], "shafts": [...]}``, in the file's keys, as
-    :meth:`balance_cli.analysis.counterweight.Balance.configuration_tables` gives them) added
+    """A complete configuration: the parsed ``data`` of one (``read_configuration(path).data``)
+    with the rows of ``tables`` (``{"counterweights": [...], "shafts": [...]}``, in the file's
+    keys, as :meth:`balance_cli.analysis.balancing.Balance.configuration_tables` gives them) added
     after its own ``[[counterweights]]`` and ``[[shafts]]``; ``header`` becomes comment lines at
     the top. The file's comments are not kept (TOML readers drop them)."""
     data = dict(data)

@@ -68,7 +68,10 @@ def build_tables(problem):
         rows, counts = rows[keep], counts[keep]
     srows, scounts = _assignments(problem, suffix_throws)
     if cap:
-        key_of = lambda c: c.astype(np.int64) @ (cap + 1) ** np.arange(P, dtype=np.int64)  # noqa: E731
+
+        def key_of(c):
+            return c.astype(np.int64) @ (cap + 1) ** np.arange(P, dtype=np.int64)
+
         have = np.sort(key_of(scounts))
         need = key_of(cap - counts)
         total = int((np.searchsorted(have, need, "right") - np.searchsorted(have, need)).sum())

@@ -116,7 +116,10 @@ def label_arrows(ax, arrows):
     :func:`place_labels` finds room."""
     fig = ax.figure
     to_pt = 72.0 / fig.dpi
-    data_to_pt = lambda z: ax.transData.transform((z.imag, z.real)) * to_pt  # noqa: E731
+
+    def data_to_pt(z):
+        return ax.transData.transform((z.imag, z.real)) * to_pt
+
     segments = [(tuple(data_to_pt(tail)), tuple(data_to_pt(head))) for _, tail, head, _ in arrows]
     sizes = [_text_size_pt(label, STAR_LABEL_PT) for label, _, _, _ in arrows]
     centres = place_labels(segments, sizes)

@@ -59,7 +59,10 @@ def compare_parts(comparison, scale):
     share = "percent_of_reference_absolute" if scale.absolute else "percent_of_reference"
     summary = []
     for record, unit_n in zip(records, units, strict=True):
-        force = lambda v, u=unit_n: scale.force(v, u)  # noqa: E731
+
+        def force(v, u=unit_n):
+            return scale.force(v, u)
+
         summary.append(
             [
                 record["name"],

@@ -49,7 +49,10 @@ def regression_tables(regression, fmt, scale=None):
         rows = []
         for row in regression.rows:
             change, relative = row.change, row.relative_change
-            shown = lambda v, q=row.quantity: _in_units(q, v, scale)  # noqa: E731
+
+            def shown(v, q=row.quantity):
+                return _in_units(q, v, scale)
+
             rows.append(
                 [
                     row.engine,

@@ -52,7 +52,10 @@ def order_values(record, unit_n, scale):
     format version 2, so older readers keep their columns) force vertical and horizontal,
     moment min, axis, vertical (pitch) and horizontal (yaw)."""
     f, m = record["force"], record["moment"]
-    force = lambda key: scale.force(f[key], unit_n)  # noqa: E731
+
+    def force(key):
+        return scale.force(f[key], unit_n)
+
     return (
         [force(k) for k in ("forward_N", "backward_N", "max_N", "min_N")]
         + [f["axis_deg"]]
