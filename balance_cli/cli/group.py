@@ -9,7 +9,7 @@ import contextlib
 
 import click
 
-from .. import __version__
+from ..about import __version__
 from ..errors import BalanceError, ConfigError, FiringError
 
 __all__ = ["main", "reported", "message", "FLAGS"]

@@ -7,7 +7,7 @@ caption)``.
 
 from typing import Literal
 
-from .. import __version__
+from ..about import __version__
 from ..units import Scale, rad_s_to_rpm
 from .compare import compare_parts
 from .counterweight import balance_summary
