@@ -14,7 +14,17 @@ from . import batch
 from .batch import load_all, run_each, settings
 from .dispatch import emit, guard
 from .group import main, reported
-from .options import INPUTS, LOAD, MAX_ORDER, OUTPUT, SAMPLES, SPEED, UNIT_CHOICE, quantity_option
+from .options import (
+    FORMAT,
+    INPUTS,
+    LOAD,
+    MAX_ORDER,
+    OUTPUT,
+    SAMPLES,
+    SPEED,
+    UNIT_CHOICE,
+    quantity_option,
+)
 
 __all__ = ["torque", "steadiness"]
 
@@ -59,14 +69,7 @@ __all__ = ["torque", "steadiness"]
     "kgf or lbf) in the tables; JSON stays SI.",
 )
 @SPEED
-@click.option(
-    "--format",
-    "fmt",
-    type=click.Choice(["table", "markdown", "csv", "json"]),
-    default="table",
-    show_default=True,
-    help="Output format.",
-)
+@FORMAT
 @OUTPUT
 def torque(
     paths, pressure, bore, inertia, target, load, samples, max_order, units, speed, fmt, output

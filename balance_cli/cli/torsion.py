@@ -13,7 +13,7 @@ from . import headless
 from .batch import inputs, load_all, passed_over, run_each, settings
 from .dispatch import guard, render, write
 from .group import main, reported
-from .options import INPUTS, OUTPUT, SAMPLES, UNITS, speeds_option
+from .options import FORMAT, INPUTS, OUTPUT, SAMPLES, UNITS, speeds_option
 
 __all__ = ["torsion"]
 
@@ -46,14 +46,7 @@ __all__ = ["torsion"]
     help="Highest order of the excitation (half orders too for a four-stroke).",
 )
 @SAMPLES
-@click.option(
-    "--format",
-    "fmt",
-    type=click.Choice(["table", "markdown", "csv", "json"]),
-    default="table",
-    show_default=True,
-    help="Output format.",
-)
+@FORMAT
 @OUTPUT
 @click.option(
     "--plot",
