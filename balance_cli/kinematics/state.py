@@ -139,7 +139,7 @@ def _closed(engine, samples):
     check_assembly(engine)
     angles = engine_angles(samples)
     closed = linkage_state(engine, angles)
-    return KinematicState(
+    state = KinematicState(
         samples,
         angles,
         closed.masses,
@@ -148,6 +148,19 @@ def _closed(engine, samples):
         closed.opposed_travel,
         _by_crankshaft(engine, closed),
     )
+    # the state is shared by every analysis of the engine: a change in place would reach
+    # them all, so its arrays are read-only
+    for array in _arrays(state):
+        array.flags.writeable = False
+    return state
+
+
+def _arrays(state):
+    yield state.angles_rad
+    yield from (getattr(state.masses, f.name) for f in dataclasses.fields(state.masses))
+    yield from (getattr(state.rods, f.name) for f in dataclasses.fields(state.rods))
+    for by_number in (state.travel, state.opposed_travel, *state.crankshaft_travel.values()):
+        yield from by_number.values()
 
 
 def _by_crankshaft(engine, closed):

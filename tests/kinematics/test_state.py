@@ -119,3 +119,17 @@ def test_kept_states_are_bounded(monkeypatch):
     kinematic_state(fresh(MENDES, "bounded 2"), 64)
     assert kinematic_state(first, 64) is not kept
     assert math.isclose(kinematic_state(first, 64).travel[1][0], kept.travel[1][0])
+
+
+def test_a_kept_state_cannot_be_changed_in_place():
+    """Every analysis of the engine reads the same arrays: writing into one is refused."""
+    state = kinematic_state(fresh(MENDES, "read-only"), 64)
+    for array in (
+        state.masses.positions,
+        state.rods.directions,
+        state.travel[1],
+        state.crankshaft_travel[0][1],
+        state.angles_rad,
+    ):
+        with pytest.raises(ValueError, match="read-only"):
+            array[0] = 0.0
