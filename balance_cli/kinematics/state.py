@@ -29,9 +29,11 @@ __all__ = ["KinematicState", "kinematic_state", "FINE_SAMPLES", "fine_travel"]
 #: the swept volumes read off it
 FINE_SAMPLES = 7200
 
-#: the memory the kept states may take, bytes: an engine's analyses read one state again and
-#: again (its shaking, torque, cylinder torques, torsion), so the most recent few are what
-#: counts; at 256 samples a revolution a state takes 0.1 to 0.5 MB, on the fine grid 3 to 15 MB
+#: what is kept: an engine's analyses read its states again and again (its shaking, torque,
+#: cylinder torques, torsion: the analysis grid and the fine grid), so the most recent few
+#: states are what counts, not every engine a command has seen; and at most this memory, bytes
+#: (at 256 samples a revolution a state takes 0.1 to 0.5 MB, on the fine grid 3 to 15 MB)
+_KEPT_STATES = 4
 _KEPT_BYTES = 64 << 20
 
 
@@ -117,7 +119,7 @@ def kinematic_state(engine, samples: int) -> KinematicState:
     with _LOCK:
         _STATES[key] = state
         size = sum(_bytes(s) for s in _STATES.values())
-        while size > _KEPT_BYTES and len(_STATES) > 1:
+        while len(_STATES) > 1 and (size > _KEPT_BYTES or len(_STATES) > _KEPT_STATES):
             _, dropped = _STATES.popitem(last=False)
             size -= _bytes(dropped)
     return state

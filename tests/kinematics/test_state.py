@@ -121,6 +121,17 @@ def test_kept_states_are_bounded(monkeypatch):
     assert math.isclose(kinematic_state(first, 64).travel[1][0], kept.travel[1][0])
 
 
+def test_only_the_most_recent_states_are_kept():
+    """A command that goes through a library keeps the last few states, not every engine's:
+    the fifth new state lets the first go, the second is still kept."""
+    engines = [fresh(MENDES, f"recent {i}") for i in range(5)]
+    states = [kinematic_state(e, 64) for e in engines[:2]]
+    for e in engines[2:]:
+        kinematic_state(e, 64)
+    assert kinematic_state(engines[1], 64) is states[1]
+    assert kinematic_state(engines[0], 64) is not states[0]
+
+
 def test_a_kept_state_cannot_be_changed_in_place():
     """Every analysis of the engine reads the same arrays: writing into one is refused."""
     state = kinematic_state(fresh(MENDES, "read-only"), 64)
