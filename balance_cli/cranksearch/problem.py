@@ -44,7 +44,7 @@ class Problem:
     weights: np.ndarray  # (C,) score = Σ weights·|channel sum| (+ the TV1 part)
     reversal: bool
     mirror: bool
-    split: int  # prefix throws are 1..split−1 (0-based: 1..split-1)
+    split: int  # the prefix is throws 1 to split − 1 by their place in Engine.throws
     largest: Any = None  # (C,) TV1: score += max over channels of largest·|sum|
     # filled by build_tables
     prefix_rows: Any = None  # (n_pref, split−1) phase indices
