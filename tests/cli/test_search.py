@@ -258,8 +258,6 @@ def test_ctrl_c_in_a_multi_process_search_prints_no_worker_traceback(tmp_path):
             code,
             "search",
             str(template),
-            "--objective",
-            "M1",
             "--workers",
             "2",
         ],
@@ -268,8 +266,10 @@ def test_ctrl_c_in_a_multi_process_search_prints_no_worker_traceback(tmp_path):
         text=True,
         start_new_session=True,
     )
-    # interrupt once the workers run (the search of an in-line 13 takes seconds after they
-    # start): the parent's children, as Linux lists them
+    # interrupt once the workers run (the search of an in-line 13 for the default objective,
+    # every F_k and M_k, takes about six seconds after they start: M1 alone took half a second,
+    # which a Ctrl-C 0.3 s after the workers started could miss): the parent's children, as
+    # Linux lists them
     children = Path(f"/proc/{process.pid}/task/{process.pid}/children")
     deadline = time.monotonic() + 60
     while time.monotonic() < deadline and process.poll() is None:
