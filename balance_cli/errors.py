@@ -22,6 +22,7 @@ __all__ = [
     "SweepError",
     "RegressError",
     "TorsionUnavailable",
+    "NotInResultError",
 ]
 
 
@@ -86,12 +87,17 @@ class AnalysisError(BalanceError, ValueError):
     """Analysis settings that cannot work (too few samples for the orders asked, say)."""
 
 
-class OrderError(AnalysisError, KeyError):
-    """An order that a result does not hold (``result.order(k)``); a KeyError too, as it was
-    before it became a BalanceError."""
+class NotInResultError(AnalysisError, KeyError):
+    """Something a result does not hold: an order (:class:`OrderError`), a cylinder
+    (``CylinderTorques.cylinder(n)``), a quantity (``SweepResult.series(q)``); a KeyError too,
+    as a lookup's error is."""
 
     def __str__(self):
         return self.args[0]  # a KeyError's own str() would quote the message
+
+
+class OrderError(NotInResultError):
+    """An order that a result does not hold (``result.order(k)``)."""
 
 
 class CounterweightError(BalanceError, ValueError):

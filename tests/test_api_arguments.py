@@ -102,6 +102,11 @@ def cases(w):
                 [0.0],
                 [balance.Plane(NAN)],
                 [balance.Plane(INF)],
+                [balance.Plane("x")],
+                [balance.Plane(0.0, 99)],
+                [balance.Plane(0.0, 0)],
+                # throw 1 of the fixture's engine is not at 5 m
+                [balance.Plane(5.0, 1)],
                 [0],
                 [99],
                 [1, 2, 3],

@@ -171,3 +171,21 @@ def test_results_are_objects_with_to_dict_not_tuples(tmp_path):
         == configuration.engine().name
     )
     assert balance.Plane(0.1, 2).to_dict() == {"z_m": 0.1, "throw": 2}
+
+
+def test_a_lookup_of_what_a_result_does_not_hold_is_a_balance_error_and_a_key_error():
+    engine = balance.load(CONFIGS / "inline-4-car.toml")
+    torques = balance.cylinder_torques(engine)
+    with pytest.raises(
+        balance.NotInResultError,
+        match=r"0 is not one of the engine's cylinders "
+        r"\(1, 2, 3, 4\)",
+    ) as caught:
+        torques.cylinder(0)
+    assert isinstance(caught.value, KeyError) and caught.value.parameter == "number"
+    swept = balance.sweep(CONFIGS / "inline-4-car.toml", "speed", ["1000 rpm"], quantities="F2")
+    with pytest.raises(balance.NotInResultError, match="'F9' is not among this sweep's"):
+        swept.series("F9")
+    with pytest.raises(balance.OrderError):
+        balance.analyse(engine).order(99)
+    assert issubclass(balance.OrderError, balance.NotInResultError)

@@ -10,13 +10,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..checks import instance
-from ..errors import AnalysisError
+from ..errors import AnalysisError, NotInResultError
 from ..harmonics import periodic_derivative
 from ..kinematics import kinematic_state
 from ..model import Engine
 from ..output import DOCUMENT_VERSION
 from ..units import rad_s_to_rpm
-from .gas import gas_load
+from .gas import gas_load, piston_gas_torque
 from .inertia import reduced_mass_and_momentum
 from .series import Series, cycle_series
 from .shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings
@@ -80,7 +80,11 @@ class CylinderTorques:
         for c in self.cylinders:
             if c.number == number:
                 return c
-        raise KeyError(f"cylinder {number!r} is not one of the engine's")
+        raise NotInResultError(
+            f"{number!r} is not one of the engine's cylinders "
+            f"({', '.join(str(c.number) for c in self.cylinders)})",
+            "number",
+        )
 
     @property
     def orders(self) -> np.ndarray:
@@ -120,7 +124,7 @@ def cylinder_torques(
         )
     gas = gas_load(engine, samples, pressure, bore_m)
     omega = engine.speed_rad_s
-    turns = int(round(engine.cycle_deg / 360.0))
+    turns = engine.turns_per_cycle
     masses, rods = state.masses, state.rods
     out = []
     for cylinder in engine.cylinders:
@@ -135,7 +139,7 @@ def cylinder_torques(
         if gas is not None:
             torque = cycle_series(
                 engine,
-                -gas.net_pressure[n] * gas.area_m2 * np.tile(state.travel_rates[n], turns),
+                piston_gas_torque(gas.net_pressure[n], gas.area_m2, state.travel_rates[n], turns),
                 max_order,
             )
         out.append(

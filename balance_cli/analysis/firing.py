@@ -1,7 +1,9 @@
 """Firing orders and intervals, fitted to the top dead centres of the geometry."""
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import lru_cache
+from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -37,7 +39,7 @@ class Firing:
         every interval within ``UNIFORM_FIRING_DEG`` of cycle/cylinders
     given : bool
         the order came from the configuration (else it was chosen as the most uniform)
-    tdc_deg : dict
+    tdc_deg : mapping (read-only)
         each cylinder's top-dead-centre engine angle in [0, 360), by cylinder number
     """
 
@@ -46,7 +48,7 @@ class Firing:
     intervals_deg: tuple
     uniform: bool
     given: bool
-    tdc_deg: dict = field(default_factory=dict, compare=False)
+    tdc_deg: Mapping = field(default_factory=dict, compare=False)
 
     @property
     def max_deviation_deg(self) -> float:
@@ -176,7 +178,8 @@ def firing_sequence(engine: "Engine") -> Firing:
     intervals = _intervals(angles, cycle_deg)
     ideal = cycle_deg / len(order)
     uniform = max(abs(i - ideal) for i in intervals) <= UNIFORM_FIRING_DEG
-    return Firing(order, tuple(angles), tuple(intervals), uniform, given, tdc)
+    # kept for the engine and handed to every caller: read-only
+    return Firing(order, tuple(angles), tuple(intervals), uniform, given, MappingProxyType(tdc))
 
 
 def firing_angles(engine: "Engine") -> dict[int, float]:

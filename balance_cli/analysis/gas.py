@@ -20,7 +20,15 @@ from .firing import firing_angles
 from .pressure import PressureCurve, cycle_pressure
 from .shaking import MAX_SAMPLES
 
-__all__ = ["GasLoad", "gas_bore", "gas_load", "gas_torque", "check_gas_sampling", "GAS_CONVERGENCE"]
+__all__ = [
+    "GasLoad",
+    "gas_bore",
+    "gas_load",
+    "gas_torque",
+    "piston_gas_torque",
+    "check_gas_sampling",
+    "GAS_CONVERGENCE",
+]
 
 #: the gas torque's mean may move by this fraction (of its mean, or of a hundredth of its
 #: peak for a cycle that averages out) when the samples are doubled before a warning: the
@@ -111,18 +119,24 @@ def gas_load(engine, samples, pressure=None, bore_m=None) -> "GasLoad | None":
         return None
     fire = firing_angles(engine)
     curves = _pressure_curves(engine, fire, pressure)
-    turns = int(round(engine.cycle_deg / 360.0))
+    turns = engine.turns_per_cycle
     return GasLoad(
         _net_pressures(engine, samples, turns, fire, curves), math.pi * bore**2 / 4, curves, fire
     )
 
 
+def piston_gas_torque(net_pressure_pa, area_m2, travel_rate, turns):
+    """One piston's gas torque over the cycle, N·m: −(p − p_c)·A·ds/dθ (virtual work), its
+    travel rate over a revolution (m/rad) repeated over the cycle's ``turns``."""
+    return -net_pressure_pa * area_m2 * np.tile(travel_rate, turns)
+
+
 def gas_torque(engine, travel_rates, net_pressure, area):
-    """The gas torque over the cycle, N·m: −Σ (p − p_c)·A·ds/dθ with each cylinder's travel
-    rate over a revolution (m/rad, by number) repeated over the cycle."""
-    turns = int(round(engine.cycle_deg / 360.0))
+    """The engine's gas torque over the cycle, N·m: the sum of its pistons'
+    (:func:`piston_gas_torque`), each cylinder's travel rate by number."""
+    turns = engine.turns_per_cycle
     return sum(
-        -net_pressure[c.number] * area * np.tile(travel_rates[c.number], turns)
+        piston_gas_torque(net_pressure[c.number], area, travel_rates[c.number], turns)
         for c in engine.cylinders
     )
 
@@ -134,7 +148,7 @@ def check_gas_sampling(engine, samples, load, gas_curve):
     aliased by 1.3 % at 256 samples, silently. The travel rates at twice the samples come from
     the fine grid's travel (no new closing of the linkage)."""
     finer = 2 * samples
-    turns = int(round(engine.cycle_deg / 360.0))
+    turns = engine.turns_per_cycle
     fine = kinematic_state(engine, FINE_SAMPLES).travel
     numbers = list(fine)
     rates = periodic_derivative(resampled(np.array([fine[n] for n in numbers]), finer)).real

@@ -11,7 +11,7 @@ M1V, M2V) and horizontal (yawing, M1H, M2H) components of balance's exact free m
 import math
 from dataclasses import dataclass
 
-from ..checks import instance, positive
+from ..checks import positive
 from ..errors import AnalysisError, BalanceError
 from ..kinematics import FINE_SAMPLES, kinematic_state
 from .counterweight import counterweights
@@ -224,7 +224,11 @@ def power_related_unbalance(
         :data:`DEFAULT_PRU_CLASSES` or :func:`check_classes` of other bounds
     """
     if not isinstance(getattr(result, "shaking", None), Shaking):
-        instance(result, Shaking, "result", hint=" (balance.analyse(engine))")
+        raise AnalysisError(
+            f"must be an analysed engine (balance.analyse(engine) gives one), got "
+            f"{type(result).__name__}",
+            "result",
+        )
     if classes is not DEFAULT_PRU_CLASSES:
         _check_class_table(classes)
     power, why = engine_power(result.engine, power_w)

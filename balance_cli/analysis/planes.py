@@ -21,7 +21,7 @@ def plane_at_throw(engine, number) -> Plane:
     ):
         raise CounterweightError(
             f"names throw {number!r}, but the engine has throws 1 to "
-            f"{len(engine.throws)}; give throw numbers or axial positions",
+            f"{len(engine.throws)}; give throw numbers or Plane(z_m) for axial positions",
             "planes",
         )
     return Plane(engine.throws[number - 1].z_m, int(number))
@@ -29,6 +29,10 @@ def plane_at_throw(engine, number) -> Plane:
 
 def plane_at(engine, z_m) -> Plane:
     """A plane at an axial position, m; on a throw if one sits there."""
+    if isinstance(z_m, bool) or not isinstance(z_m, numbers.Real):
+        raise CounterweightError(
+            f"has an axial position that is not a number of metres: {z_m!r}", "planes"
+        )
     try:
         check_finite_range(float(z_m), "length", smallest=False)
     except UnitError as exc:
@@ -45,7 +49,17 @@ def plane_of(engine, spec):
     """A plane from a throw number, or a :class:`Plane` (one at an axial position is on the
     throw that sits there, if any)."""
     if isinstance(spec, Plane):
-        return spec if spec.throw is not None else plane_at(engine, spec.z_m)
+        located = plane_at(engine, spec.z_m)
+        if spec.throw is None:
+            return located
+        on = plane_at_throw(engine, spec.throw)
+        if not math.isclose(located.z_m, on.z_m, abs_tol=SAME_POSITION_M):
+            raise CounterweightError(
+                f"names throw {spec.throw} at z = {spec.z_m!r} m, but throw {spec.throw} sits at "
+                f"z = {on.z_m:g} m; give the throw's number, or Plane(z_m) alone",
+                "planes",
+            )
+        return on
     if isinstance(spec, numbers.Integral) and not isinstance(spec, bool):
         return plane_at_throw(engine, spec)
     raise CounterweightError(

@@ -32,7 +32,7 @@ from ..kinematics import kinematic_state, pin_angle
 from ..model import Engine
 from ..output import DOCUMENT_VERSION
 from ..units import rad_s_to_rpm
-from .gas import check_gas_sampling, gas_load, gas_torque
+from .gas import check_gas_sampling, gas_load, gas_torque, piston_gas_torque
 from .guideforce import guide_forces
 from .inertia import reduced_mass_and_momentum
 from .pins import PinForce, pin_forces
@@ -257,7 +257,7 @@ def torque(
     gas_on = gas_load(engine, samples, pressure, bore_m)
     omega = engine.speed_rad_s
     mu, h = reduced_mass_and_momentum(engine, state)
-    turns = int(round(engine.cycle_deg / 360.0))
+    turns = engine.turns_per_cycle
 
     def series(values, unit="Nm"):
         return cycle_series(engine, np.real(values), max_order, unit)
@@ -370,7 +370,7 @@ def _driven(engine, gas, mu, inertia_kgm2, target, load):
             "table an imep",
             "inertia_kgm2" if inertia_kgm2 else "target",
         )
-    turns = int(round(engine.cycle_deg / 360.0))
+    turns = engine.turns_per_cycle
     drive = dict(
         torque_nm=gas.curve,
         period_deg=engine.cycle_deg,
@@ -396,14 +396,12 @@ def _crankshaft_torques(engine, state, turns, net_pressure, area, max_order):
     the virtual work of the parts it alone drives (the gas presses on each piston; the two
     pistons of an opposed cylinder load their two crankshafts)."""
     omega = engine.speed_rad_s
-    travels = state.crankshaft_travel
     out = []
     for index, shaft in enumerate(engine.crankshafts):
         mu, _ = reduced_mass_and_momentum(engine, state, index)
         curve = np.tile(-0.5 * omega**2 * periodic_derivative(mu).real, turns)
         if net_pressure:
-            for number, travel in travels.get(index, {}).items():
-                rate = periodic_derivative(np.asarray(travel)).real
-                curve = curve - net_pressure[number] * area * np.tile(rate, turns)
+            for number, rate in state.crankshaft_travel_rates.get(index, {}).items():
+                curve = curve + piston_gas_torque(net_pressure[number], area, rate, turns)
         out.append((index + 1, shaft.direction, cycle_series(engine, curve, max_order)))
     return out

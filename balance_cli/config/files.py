@@ -6,7 +6,6 @@ shipped one (:mod:`.library`)."""
 import copy
 import os
 from collections.abc import Iterable
-from dataclasses import dataclass
 from pathlib import Path
 
 from .. import checks
@@ -40,15 +39,15 @@ def load(path: "str | os.PathLike[str]") -> Engine:
     return loads(read_text(Path(checks.path(path))), name=str(path))
 
 
-@dataclass(frozen=True)
 class Configuration:
     """A configuration as written: its parsed TOML (``data``) and where it came from (``path``,
     which messages name).
 
     An analysis starts from the :class:`~balance_cli.Engine` it describes (:meth:`engine`); a
     study that varies its keys (:func:`~balance_cli.sweep`) or repeats its cylinders
-    (:func:`~balance_cli.family`) starts from the configuration itself. ``data`` is a copy of
-    what was given: changing the dict given afterwards changes nothing here.
+    (:func:`~balance_cli.family`) starts from the configuration itself. It keeps its own copy
+    of what was given, and ``data`` gives a copy of that: changing either dict afterwards
+    changes nothing here.
 
     Raises
     ------
@@ -56,38 +55,56 @@ class Configuration:
         ``data`` is not a table of keys, or ``path`` not text
     """
 
-    data: dict
-    path: str = "<config>"
+    __slots__ = ("_data", "_path")
 
-    def __post_init__(self):
-        if not isinstance(self.data, dict):
+    def __init__(self, data: dict, path: str = "<config>"):
+        if not isinstance(path, str):
+            raise ConfigError("<config>", "", f"path must be text, got {type(path).__name__}")
+        if not isinstance(data, dict):
             raise ConfigError(
-                str(self.path),
+                path,
                 "",
-                f"data must be the parsed TOML of a "
-                f"configuration (a dict), got "
-                f"{type(self.data).__name__}",
+                f"data must be the parsed TOML of a configuration (a dict), got "
+                f"{type(data).__name__}",
             )
-        if not isinstance(self.path, str):
-            raise ConfigError("<config>", "", f"path must be text, got {type(self.path).__name__}")
-        object.__setattr__(self, "data", copy.deepcopy(self.data))
+        self._data = copy.deepcopy(data)
+        self._path = path
+
+    @property
+    def data(self) -> dict:
+        """The parsed TOML, a copy."""
+        return copy.deepcopy(self._data)
+
+    @property
+    def path(self) -> str:
+        return self._path
+
+    def __eq__(self, other):
+        if not isinstance(other, Configuration):
+            return NotImplemented
+        return (self._path, self._data) == (other._path, other._data)
+
+    __hash__ = None  # type: ignore[assignment]  # equal by value, and its data is a dict
+
+    def __repr__(self):
+        return f"Configuration(path={self._path!r}, name={self._data.get('name')!r})"
 
     def engine(self) -> Engine:
         """The engine it describes (ConfigError naming the file, the key and the fix)."""
-        return build(copy.deepcopy(self.data), self.path)
+        return build(self.data, self._path)
 
     def template(self) -> Engine:
         """The engine of a search template (its ``[[throws]]`` give only ``z``, and it has no
         ``firing_order``: the search chooses both), every throw at phase 0."""
-        return build(copy.deepcopy(self.data), self.path, template=True)
+        return build(self.data, self._path, template=True)
 
     def as_template(self) -> "Configuration":
         """The same configuration without its throws' phases and firing order: a search
         template of the same engine."""
-        return Configuration(as_template(self.data), self.path)
+        return Configuration(as_template(self._data), self._path)
 
     def to_dict(self) -> dict:
-        return {"path": self.path, "data": copy.deepcopy(self.data)}
+        return {"path": self._path, "data": self.data}
 
 
 def read_configuration(path: "str | os.PathLike[str]") -> Configuration:

@@ -3,7 +3,8 @@ reach them from any folder: ``library:NAME`` and ``template:NAME``.
 
 ``library:`` alone is the whole library (the checkout's ``configs/``), ``library:tanaka-part3``
 one of its folders, ``library:today/v/v8-90-cross-plane.toml`` one engine; ``template:NAME``
-is one search template of ``templates/`` (``template:`` alone, all of them). A file's
+is one search template of ``templates/`` (a template is not a configuration: ``template:``
+alone, which no command could take whole, is refused with the list of templates). A file's
 ``.toml`` may be left out. A name is a ``str``; anything else (a ``Path``) is taken as a path.
 
 Where they are: an installed package carries them as package data, the folders
@@ -62,6 +63,12 @@ def resolve(path: "str | os.PathLike[str]") -> "str | os.PathLike[str]":
         if path.startswith(LIBRARY):
             return _find(path, LIBRARY, library_folder(), "engine library")
         if path.startswith(TEMPLATE):
+            if not path[len(TEMPLATE) :].strip(" /"):
+                folder = templates_folder()
+                names = sorted(p.stem for p in folder.glob("*.toml"))
+                raise ConfigError(
+                    path, "", f"names no template; give one of template:{', template:'.join(names)}"
+                )
             return _find(path, TEMPLATE, templates_folder(), "search templates")
     return path
 

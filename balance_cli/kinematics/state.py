@@ -4,8 +4,8 @@ and what every analysis reads from it.
 Shaking forces, torques, gas torque, guide forces, crank-pin forces and torsional excitation
 all start from the same positions, rod directions and piston travel. Closing the linkage is
 the costly step, so it is done once for each engine and grid and kept (the engine is
-immutable, so its state never goes stale); derived quantities (travel rates, each
-crankshaft's piston travel) are computed on first use and kept with it.
+immutable, so its state never goes stale); the travel rates are computed on first use and
+kept with it. Everything kept is read-only: a change in place would reach every analysis.
 
 Two grids are in use: the analysis's own ``samples`` a revolution, and the fine grid of
 :data:`FINE_SAMPLES` on which a parametric gas cycle is integrated and the swept volumes are
@@ -17,9 +17,12 @@ import threading
 from collections import OrderedDict
 from dataclasses import dataclass
 from functools import cached_property
+from types import MappingProxyType
 
 import numpy as np
 
+from ..checks import whole
+from ..errors import ModelError
 from ..harmonics import periodic_derivative, shifted
 from .linkage import MassSet, RodSet, check_assembly, engine_angles, linkage_state
 
@@ -51,12 +54,12 @@ class KinematicState:
         every point mass's position in the fixed frame, with its mass, axial position and owner
     rods : RodSet
         every rod's direction, with its correcting moment of inertia
-    travel : dict
+    travel : mapping
         each cylinder's piston travel from its crank axis along its axis, m, by cylinder
         number (an opposed bore: its two pistons' travels added)
-    opposed_travel : dict
+    opposed_travel : mapping
         an opposed bore's far piston's own travel from its crank axis, m, by cylinder number
-    crankshaft_travel : dict
+    crankshaft_travel : mapping
         each piston's own travel, m, by crankshaft index and then cylinder number: an opposed
         bore has one piston on each of its two crankshafts
     """
@@ -65,16 +68,29 @@ class KinematicState:
     angles_rad: np.ndarray
     masses: MassSet
     rods: RodSet
-    travel: dict
-    opposed_travel: dict
-    crankshaft_travel: dict
+    travel: MappingProxyType
+    opposed_travel: MappingProxyType
+    crankshaft_travel: MappingProxyType
 
     @cached_property
-    def travel_rates(self) -> dict:
+    def travel_rates(self) -> MappingProxyType:
         """ds/dθ of every cylinder's travel, m/rad, by cylinder number (spectral)."""
         numbers = list(self.travel)
         rates = periodic_derivative(np.array([self.travel[n] for n in numbers])).real
-        return dict(zip(numbers, rates, strict=True))
+        rates.flags.writeable = False
+        return MappingProxyType(dict(zip(numbers, rates, strict=True)))
+
+    @cached_property
+    def crankshaft_travel_rates(self) -> MappingProxyType:
+        """ds/dθ of each piston's own travel, m/rad, by crankshaft index and cylinder number."""
+        out = {}
+        for shaft, by_number in self.crankshaft_travel.items():
+            rates = {}
+            for number, travel in by_number.items():
+                rates[number] = periodic_derivative(np.asarray(travel)).real
+                rates[number].flags.writeable = False
+            out[shaft] = MappingProxyType(rates)
+        return MappingProxyType(out)
 
     def parts(self, masses_kept, rods_kept) -> "KinematicState":
         """This state with only the point masses and rods the boolean masks keep: the parts of
@@ -107,8 +123,10 @@ def kinematic_state(engine, samples: int) -> KinematicState:
     Raises
     ------
     ModelError
-        a linkage that cannot be assembled
+        a linkage that cannot be assembled, or ``samples`` that are not a whole number of at
+        least 4
     """
+    samples = whole(samples, "samples", 4, 1 << 20, error=ModelError)
     key = (engine, samples)
     with _LOCK:
         state = _STATES.get(key)
@@ -130,11 +148,7 @@ _LOCK = threading.Lock()
 
 
 def _bytes(state):
-    return (
-        state.masses.positions.nbytes
-        + state.rods.directions.nbytes
-        + sum(t.nbytes for t in state.travel.values())
-    )
+    return sum(array.nbytes for array in _arrays(state))
 
 
 def _closed(engine, samples):
@@ -146,8 +160,8 @@ def _closed(engine, samples):
         angles,
         closed.masses,
         closed.rods,
-        closed.travel,
-        closed.opposed_travel,
+        MappingProxyType(closed.travel),
+        MappingProxyType(closed.opposed_travel),
         _by_crankshaft(engine, closed),
     )
     # the state is shared by every analysis of the engine: a change in place would reach
@@ -172,14 +186,14 @@ def _by_crankshaft(engine, closed):
     for c in engine.cylinders:
         travel = closed.travel[c.number]
         if c.is_opposed:
+            # the two pistons of a bore are on two crankshafts (the model checks it)
             own = closed.opposed_travel[c.number]
             out.setdefault(engine.throws[c.opposed_throw_index].crankshaft_index, {})[c.number] = (
                 own
             )
             travel = travel - own
-        mine = out.setdefault(engine.throws[c.throw_index].crankshaft_index, {})
-        mine[c.number] = mine.get(c.number, 0.0) + travel
-    return out
+        out.setdefault(engine.throws[c.throw_index].crankshaft_index, {})[c.number] = travel
+    return MappingProxyType({shaft: MappingProxyType(by) for shaft, by in out.items()})
 
 
 def fine_travel(engine, number: int, start_deg: float) -> np.ndarray:

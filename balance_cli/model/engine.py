@@ -264,6 +264,11 @@ class Engine:
         return 180.0 * self.cycle
 
     @property
+    def turns_per_cycle(self) -> int:
+        """Revolutions of one working cycle: 1 (two-stroke) or 2 (four-stroke)."""
+        return self.cycle // 2
+
+    @property
     def mean_reciprocating_kg(self) -> float:
         return sum(c.reciprocating_kg for c in self.cylinders) / len(self.cylinders)
 

@@ -63,3 +63,9 @@ class TorsionModel:
     load: ShaftDisk | None = None
     shaft_diameter_m: float | None = None
     shaft_bore_m: float = 0.0
+
+    def __post_init__(self):
+        # lists given in code become tuples: the engine that holds the model stays hashable
+        for name in ("throw_inertia_kgm2", "stiffness_nm_rad", "throw_damping_nms_rad", "front"):
+            if isinstance(getattr(self, name), list):
+                object.__setattr__(self, name, tuple(getattr(self, name)))

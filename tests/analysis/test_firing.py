@@ -94,3 +94,12 @@ def test_eighteen_cylinder_two_row_radial_fires_every_40_degrees():
     fire = firing(engine)
     assert fire.uniform
     assert_allclose(fire.intervals_deg, [40.0] * 18, atol=1e-6)
+
+
+def test_the_kept_firing_sequence_cannot_be_changed_by_a_caller():
+    """The firing sequence is found once per engine and handed to every analysis: its top
+    dead centres are read-only, so moving one cannot move the next torque's gas curves."""
+    sequence = firing(load(CONFIGS / "abc-dragonfly.toml"))
+    with pytest.raises(TypeError):
+        sequence.tdc_deg[sequence.order[0]] += 30.0
+    assert firing(load(CONFIGS / "abc-dragonfly.toml")) is sequence

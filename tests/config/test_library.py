@@ -17,6 +17,7 @@ import pytest
 import balance_cli as balance
 from balance_cli.config import find_configs, load_many, load_template, read_configuration
 from balance_cli.config.library import library_folder, resolve, templates_folder
+from balance_cli.errors import ConfigError
 from tests.support import CONFIGS, PART3, ROOT, TEMPLATES, invoke
 
 
@@ -30,7 +31,13 @@ def elsewhere(tmp_path, monkeypatch):
 def test_the_library_and_templates_of_a_checkout_are_its_own_folders():
     assert library_folder() == CONFIGS
     assert templates_folder() == TEMPLATES
-    assert resolve("library:") == CONFIGS and resolve("template:") == TEMPLATES
+    assert resolve("library:") == CONFIGS
+    with pytest.raises(
+        ConfigError,
+        match="template:: names no template; give one of "
+        "template:inline-12-2stroke, template:inline-3-2stroke",
+    ):
+        resolve("template:")
 
 
 def test_library_names_resolve_to_the_checkouts_files_and_folders(elsewhere):
@@ -57,7 +64,9 @@ def test_template_names_resolve_with_or_without_their_toml(elsewhere):
     engine = load_template("template:inline-3-2stroke")
     assert engine.name == load_template(file).name
     assert read_configuration("template:inline-3-2stroke").data == read_configuration(file).data
-    assert sorted(find_configs(["template:"])) == sorted(TEMPLATES.glob("*.toml"))
+    assert [resolve(f"template:{p.stem}") for p in sorted(TEMPLATES.glob("*.toml"))] == sorted(
+        TEMPLATES.glob("*.toml")
+    )
 
 
 def test_only_strings_are_names_and_other_paths_are_left_alone():
@@ -178,3 +187,16 @@ def test_a_bad_name_on_the_command_line_is_one_line_and_no_traceback(elsewhere):
 def test_library_configs_cite_papers_not_project_files():
     for path in CONFIGS.rglob("*.toml"):
         assert "INDEX.md" not in path.read_text(encoding="utf-8"), path
+
+
+def test_a_configurations_data_is_a_copy_each_time():
+    """Changing the dict it gives, or the dict it was given, changes nothing in it."""
+    given = read_configuration(CONFIGS / "inline-4-car.toml").data
+    configuration = balance.Configuration(given, "car.toml")
+    given["name"] = "changed after"
+    configuration.data["unknown_key"] = 1
+    assert configuration.engine().name == "In-line 4, car proportions"
+    assert "unknown_key" not in configuration.data
+    assert configuration == balance.Configuration(
+        read_configuration(CONFIGS / "inline-4-car.toml").data, "car.toml"
+    )

@@ -144,3 +144,23 @@ def test_a_kept_state_cannot_be_changed_in_place():
     ):
         with pytest.raises(ValueError, match="read-only"):
             array[0] = 0.0
+
+
+def test_a_kept_states_tables_cannot_be_changed_either():
+    """Its mappings and rates are read-only too: replacing a cylinder's travel, or writing
+    into its rate, would reach the next analysis."""
+    state = kinematic_state(fresh(MENDES, "read-only tables"), 64)
+    with pytest.raises(TypeError):
+        state.travel[1] = state.travel[1] * 0
+    with pytest.raises(TypeError):
+        state.crankshaft_travel[0] = {}
+    with pytest.raises(ValueError, match="read-only"):
+        state.travel_rates[1][0] = 0.0
+    with pytest.raises(ValueError, match="read-only"):
+        state.crankshaft_travel_rates[0][1][0] = 0.0
+
+
+@pytest.mark.parametrize("samples", [0, -4, 3, True, 2.5, "256"])
+def test_a_state_needs_a_whole_number_of_samples(samples):
+    with pytest.raises(balance.ModelError, match="samples must be a whole number from 4"):
+        kinematic_state(fresh(MENDES, "samples"), samples)

@@ -84,3 +84,16 @@ def test_the_api_takes_the_opposed_piston_mass_as_the_near_ones_by_default():
     assert cylinder.opposed_reciprocating_kg == 2.0
     with pytest.raises(balance.ModelError, match="direction"):
         balance.Crankshaft(1.0, 0.0, -1.0)
+
+
+def test_a_torsion_model_built_with_lists_keeps_the_engine_hashable():
+    """Every analysis keeps what it finds by engine: a TorsionModel given lists in code, as a
+    user writes it, made that a TypeError (unhashable list)."""
+    from balance_cli import Engine, TorsionModel, analyse, load
+    from tests.support import CONFIGS
+
+    base = load(CONFIGS / "inline-4-car.toml")
+    model = TorsionModel([0.01] * 4, 0.0, [1e5] * 3, [0.0] * 4)
+    engine = base.replace(torsion=model)
+    assert isinstance(engine, Engine) and engine.torsion.stiffness_nm_rad == (1e5, 1e5, 1e5)
+    assert analyse(engine).order(2).force_forward == analyse(base).order(2).force_forward

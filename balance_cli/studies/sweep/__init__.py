@@ -30,7 +30,7 @@ from ...analysis.counterweight import check_options, counterweights
 from ...analysis.results import analyse
 from ...analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES, check_settings
 from ...config import Configuration, build, parse_text, read_text, resolve
-from ...errors import BalanceError, ConfigError, FiringError, SweepError
+from ...errors import BalanceError, ConfigError, FiringError, NotInResultError, SweepError
 from ...output import DOCUMENT_VERSION
 from ...units import parse_quantity, rad_s_to_rpm
 from .keys import (
@@ -119,9 +119,10 @@ class SweepResult:
         for q in self.quantities:
             if quantity in (q.name, q.column):
                 return np.array([p[q.column] for p in self.points], dtype=float)
-        raise KeyError(
+        raise NotInResultError(
             f"{quantity!r} is not among this sweep's quantities "
-            f"({', '.join(q.name for q in self.quantities)})"
+            f"({', '.join(q.name for q in self.quantities)})",
+            "quantity",
         )
 
     def records(self) -> list:
