@@ -64,6 +64,18 @@ TEMPLATE6 = (
 )
 
 
+def pitched_template(folder, extra=""):
+    """TEMPLATE6 with its throws 120 mm apart (and ``extra`` appended), written to a file."""
+    zs, out = iter(range(0, 720, 120)), []
+    for line in TEMPLATE6.split("\n"):
+        out.append(line)
+        if line == "[[throws]]":
+            out.append(f'z = "{next(zs)} mm"')
+    path = folder / "template.toml"
+    path.write_text("\n".join(out) + extra)
+    return path
+
+
 def test_two_disk_frequency():
     """Two disks J1, J2 on a shaft k (free-free): ω = √(k·(J1 + J2)/(J1·J2)); the node divides
     the shaft inversely as the inertias, so the amplitudes are in the ratio −J1/J2."""
@@ -329,14 +341,7 @@ def test_search_v_terms_score_is_the_phase_vector_sum(tmp_path):
     the sum of the listed arrangements' V1 and V2 worked out from their own firing angles and
     first mode (balance_cli.torsion), each |Σ β·e^{ik·φ}|/Σ|β|; and the first mode's V3 is 1
     (a major order: all cylinders in phase) for every even-firing crank."""
-    lines = TEMPLATE6.split("\n")
-    zs, out = iter(range(0, 720, 120)), []
-    for line in lines:
-        out.append(line)
-        if line == "[[throws]]":
-            out.append(f'z = "{next(zs)} mm"')
-    path = tmp_path / "template.toml"
-    path.write_text("\n".join(out) + TORSION6)
+    path = pitched_template(tmp_path, TORSION6)
     template = balance.load_template(path)
     result = balance.search(template, "V1,V2,V3", top=6, workers=1)
     for a in result.arrangements:
@@ -353,14 +358,7 @@ def test_search_v_terms_score_is_the_phase_vector_sum(tmp_path):
 
 
 def test_search_v_term_needs_a_torsion_table(tmp_path):
-    lines = TEMPLATE6.split("\n")
-    zs, out = iter(range(0, 720, 120)), []
-    for line in lines:
-        out.append(line)
-        if line == "[[throws]]":
-            out.append(f'z = "{next(zs)} mm"')
-    path = tmp_path / "template.toml"
-    path.write_text("\n".join(out))
+    path = pitched_template(tmp_path)
     template = balance.load_template(path)
     with pytest.raises(AnalysisError, match=r"no \[torsion\] table"):
         balance.search(template, "M1,V2")
@@ -371,14 +369,7 @@ def test_search_tv1_is_the_largest_minor_order(tmp_path):
     major (for an even-firing four-stroke six, all but 3 and 6). Every arrangement listed (all
     60 distinct ones: pruning by the bound must lose none) has the score its own V_k give,
     recomputed here from balance.torsion's mode and the firing angles; the ranking is by it."""
-    lines = TEMPLATE6.split("\n")
-    zs, out = iter(range(0, 720, 120)), []
-    for line in lines:
-        out.append(line)
-        if line == "[[throws]]":
-            out.append(f'z = "{next(zs)} mm"')
-    path = tmp_path / "template.toml"
-    path.write_text("\n".join(out) + TORSION6)
+    path = pitched_template(tmp_path, TORSION6)
     template = balance.load_template(path)
     result = balance.search(template, "TV1", top=1000, workers=1)
     assert len(result.arrangements) == result.arrangements_distinct == 60
@@ -426,14 +417,7 @@ def test_report_has_a_torsion_section(tmp_path, monkeypatch):
 def test_search_write_keeps_the_torsion_table(tmp_path):
     """``search --write`` writes the template's [torsion] table, sub-tables included, so the
     configuration it writes has the template's shaft line."""
-    lines = TEMPLATE6.split("\n")
-    zs, out = iter(range(0, 720, 120)), []
-    for line in lines:
-        out.append(line)
-        if line == "[[throws]]":
-            out.append(f'z = "{next(zs)} mm"')
-    path = tmp_path / "template.toml"
-    path.write_text("\n".join(out) + TORSION6)
+    path = pitched_template(tmp_path, TORSION6)
     result = invoke(
         "search", path, "--objective", "M1,TV1", "--top", "1", "--write", tmp_path / "best"
     )
