@@ -167,7 +167,7 @@ def _values_of(group, span):
     "--power",
     metavar="POWER",
     help="The engine's power at the speed of every point (the file's, or --speed), for PRU, "
-    "e.g. '14280 kW' (not with --vary power).",
+    "e.g. '14280 kW' (not with --vary power or --vary speed).",
 )
 @click.option(
     "--units",
@@ -230,6 +230,11 @@ def sweep(
             raise click.UsageError(
                 f"{flag} fixes the {key} that --vary {key} varies; give one of them"
             )
+    if power is not None and "speed" in keys:
+        raise click.UsageError(
+            "--power gives the power at one speed, and --vary speed varies the speed; vary "
+            "power too (a grid of speed and power) or leave --power out"
+        )
     overrides = {
         key: value for key, value in (("speed", speed), ("power", power)) if value is not None
     }

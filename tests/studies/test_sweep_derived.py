@@ -292,3 +292,19 @@ def test_rod_ratio_as_an_override_follows_a_varied_crank_radius(tmp_path):
     expected = M_REC * np.array(radii) * rad_s(3000) ** 2 * exact_series_a2(1 / 3.5)
     assert_allclose(result.series("F2"), expected, rtol=2e-5, atol=0)
     assert math.isclose(result.to_dict()["overrides"]["rod_ratio"], 3.5)
+
+
+@pytest.mark.parametrize("parameter", ["rod_ratio", "stroke", "bore_pitch"])
+def test_the_files_own_value_gives_the_file_itself(tmp_path, parameter):
+    # the value a derived parameter has in the file writes the file's keys back unchanged (a
+    # rod or throw already where the value puts it, to rounding, keeps its text): the point is
+    # compare's record of the file, to the last digit
+    path = write(tmp_path, TWIN)
+    data = balance.read_configuration(path).data
+    own = parameter_of(data, parameter, str(path)).file_value
+    result = balance.sweep(path, parameter, [own], "F2,M1,F4")
+    records = balance.analyse(balance.load(path)).to_dict()["orders"]
+    assert result.points[0]["F2_N"] == records[1]["force"]["max_N"]
+    assert result.points[0]["F4_N"] == records[3]["force"]["max_N"]
+    assert result.points[0]["M1_Nm"] == records[0]["moment"]["max_Nm"]
+    assert result.engines[0] == balance.load(path)
