@@ -339,3 +339,28 @@ def test_speed_with_the_files_power_is_refused_and_power_fixes_it(tmp_path):
     pru_file = [float(r[4]) for r in list(csv.reader(io.StringIO(at_file.output)))[1:]]
     # the moment falls as n², the power is the one given: (80/105)² × 14 280 / 8 000
     assert_allclose(pru, np.array(pru_file) * (80 / 105) ** 2 * 14280 / 8000, rtol=1e-12)
+
+
+class _Terminal(io.StringIO):
+    def isatty(self):
+        return True
+
+
+def test_the_bar_shows_before_the_first_point(tmp_path, monkeypatch):
+    # a 10 000-point sweep showed nothing for 19 s: the bar is drawn before any point's engine
+    # is built, so what the terminal holds when the first point is built already shows it
+    import types
+
+    from balance_cli.cli import sweep as command
+    from balance_cli.studies.sweep import run
+
+    terminal = _Terminal()
+    monkeypatch.setattr(command, "sys", types.SimpleNamespace(stderr=terminal))
+    seen = []
+    build = run.build
+    monkeypatch.setattr(run, "build", lambda *a: seen.append(terminal.getvalue()) or build(*a))
+    path = write(tmp_path, TWIN)
+    result = invoke("sweep", path, "--vary", "speed", "--values", "1000 rpm,2000 rpm,3000 rpm")
+    assert result.exit_code == 0, result.output
+    # the first build is the file's own; the bar is up before the second, the first point's
+    assert "Sweeping" not in seen[0] and "Sweeping" in seen[1] and "0%" in seen[1]
