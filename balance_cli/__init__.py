@@ -101,6 +101,8 @@ _LAZY = {
     "Term": (".cranksearch", "Term"),
     "sweep": (".studies.sweep", "sweep"),
     "SweepResult": (".studies.sweep", "SweepResult"),
+    "sweep_grid": (".studies.sweep", "sweep_grid"),
+    "SweepGrid": (".studies.sweep", "SweepGrid"),
     "family": (".studies.family", "family"),
     "FamilyResult": (".studies.family", "FamilyResult"),
     "torsional_vibration": (".torsion", "torsional_vibration"),
