@@ -237,6 +237,8 @@ def test_schema_covers_every_key_of_the_configuration_format():
     text_or_tables = {
         "name",
         "source",
+        "sources",
+        "estimates",
         "frame",
         "firing_order",
         "masses",

@@ -285,7 +285,9 @@ def _quantity(record, frames):
         intervals = _result(_variant(record), record).firing.intervals_deg
         return {"max": max(intervals), "min": min(intervals)}[words[1]]
     if kind == "lead":  # an opposed-piston bore's exhaust lead, degrees
-        return _lead(_variant(record), int(words[1]))
+        lead = _lead(_variant(record), int(words[1]))
+        # "lead N opposed": the opposed (second) piston's lead over the first
+        return (-lead) % 360.0 if words[2:] == ["opposed"] else lead
     if kind == "split":  # the angle between two throws' pins, degrees in [0, 360)
         engine = _variant(record)
         a, b = (engine.throws[int(w) - 1].phase_rad for w in words[1:3])
