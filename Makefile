@@ -5,6 +5,8 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 # what running needs (demo), and that with the test tools (test, bench, ...)
 RUN    := $(VENV)/.installed-run
+# and with openTorsion, for the demo's torsion result
+TORSION := $(VENV)/.installed-torsion
 STAMP  := $(VENV)/.installed-test
 # the linters (lint)
 LINT   := $(VENV)/.installed-lint
@@ -26,6 +28,11 @@ $(RUN): pyproject.toml setup.py | $(VENV)/bin/python
 	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e .
 	@touch $(RUN)
 
+$(TORSION): pyproject.toml setup.py | $(VENV)/bin/python
+	@$(OLD_NAME)
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[torsion]'
+	@touch $(RUN) $(TORSION)
+
 $(STAMP): pyproject.toml setup.py | $(VENV)/bin/python
 	@$(OLD_NAME)
 	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[test]'
@@ -38,10 +45,11 @@ $(LINT): pyproject.toml setup.py | $(VENV)/bin/python
 
 setup: $(STAMP)
 
-demo: $(RUN)
+demo: $(TORSION)
 	$(BIN)/balance validate configs
 	$(BIN)/balance compare configs/tanaka-part3
 	$(BIN)/balance report configs/tanaka-part3 --output report --html
+	$(BIN)/balance torsion configs/today/inline/inline-6-truck-diesel.toml --criticals major
 
 test: $(STAMP)
 	$(BIN)/python -m pytest

@@ -15,6 +15,8 @@ __all__ = [
     "PHASE_CHANGE_DEG",
     "FIRING_CHANGE_DEG",
     "SPECTRUM_FLOOR",
+    "MODE_FLOOR",
+    "RESONANCE_WINDOW",
     "minimum_samples",
 ]
 
@@ -59,6 +61,17 @@ FIRING_CHANGE_DEG = 1e-4
 #: Pictures on a log axis leave out parts below this fraction of the largest m_rec·r·ω²·n,
 #: a thousand times the noise floor, so that no rounding noise is drawn.
 SPECTRUM_FLOOR = 1e-6
+
+#: A torsional mode's amplitude below this fraction of its largest is a node (exactly zero),
+#: and so is a phase-vector sum below it times the number of cylinders: the eigen-solver's
+#: rounding is about 1e-16 times the spread of the line's inertias and stiffnesses, so this
+#: leaves room for a spread of 10⁸, and a cylinder moving 1e-8 as much as the free end
+#: excites nothing a report could show.
+MODE_FLOOR = 1e-8
+
+#: An excitation frequency within this fraction of an undamped mode's natural frequency is
+#: at it: K − ω²·M is singular to within rounding there (its condition grows as 1/distance).
+RESONANCE_WINDOW = 1e-6
 
 
 def minimum_samples(max_order):

@@ -34,6 +34,7 @@ FLAGS = {
     "inertia_kgm2": "--inertia",
     "target": "--target",
     "speed_rad_s": "--speed",
+    "speeds_rpm": "--speeds",
     "load": "--load",
     "torque_nm": "--torque",
     "bore_m": "--bore",

@@ -13,9 +13,24 @@ from . import headless
 from .batch import inputs, load_all, passed_over, run_each, settings
 from .dispatch import guard, render, write
 from .group import main, reported
-from .options import FORMAT, INPUTS, OUTPUT, SAMPLES, UNITS, speeds_option
+from .options import FORMAT, INPUTS, OUTPUT, SAMPLES, UNIT_CHOICE, numbers_option, speeds_option
 
 __all__ = ["torsion"]
+
+#: the library's parameters as this command's flags
+_FLAGS = {"orders": "--orders", "modes": "--modes", "criticals": "--criticals"}
+
+
+def _mode_numbers(text):
+    try:
+        numbers = tuple(int(t) for t in text.split(","))
+    except ValueError:
+        numbers = ()
+    if not numbers or min(numbers) < 1:
+        raise click.BadParameter(
+            f"{text!r}: give mode numbers from 1, such as 1,2", param_hint="--modes"
+        )
+    return numbers
 
 
 @main.command(
@@ -26,7 +41,8 @@ __all__ = ["torsion"]
 
     The excitation is each cylinder's exact gas ([gas] table) and inertia torque, order by
     order, at its throw: the gas torque the same at every speed, the inertia torque growing
-    as the speed squared.
+    as the speed squared. The free end's swing is given whole and as its elastic twist (less
+    the turning of the whole line's centre of inertia).
     """
 )
 @INPUTS
@@ -45,6 +61,30 @@ __all__ = ["torsion"]
     type=click.IntRange(1, 64),
     help="Highest order of the excitation (half orders too for a four-stroke).",
 )
+@click.option(
+    "--criticals",
+    "kind",
+    type=click.Choice(["excited", "major", "all"]),
+    default="excited",
+    show_default=True,
+    help="Criticals listed and marked: those the cylinders excite (a phase-vector sum "
+    "above zero), only the excited ones of major orders, or all (those the cylinders "
+    "cannot excite too, flagged).",
+)
+@click.option(
+    "--orders",
+    default=None,
+    metavar="K,K,...",
+    help="List and mark the criticals of these orders only (e.g. 4.5,6), and show their "
+    "phase-vector sums only; the response is still that of every order.",
+)
+@click.option(
+    "--modes",
+    default=None,
+    metavar="N,N,...",
+    help="List and mark the criticals of these modes only (e.g. 1,2), and show their "
+    "phase-vector sums only.",
+)
 @SAMPLES
 @FORMAT
 @OUTPUT
@@ -55,16 +95,26 @@ __all__ = ["torsion"]
     metavar="DIR",
     help="Also draw, per engine, NAME-campbell.png (Campbell diagram with the "
     "criticals), NAME-modes.png (mode shapes) and NAME-torque.png (vibratory "
-    "torque against speed per section) into DIR; NAME is the file's stem.",
+    "torque against speed per section, the largest peak labelled) into DIR; NAME is "
+    "the file's stem.",
 )
-@UNITS
-def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
+@click.option(
+    "--units",
+    type=UNIT_CHOICE,
+    default="N",
+    show_default=True,
+    help="Unit of the vibratory torques (tables, CSV, pictures): N (N·m), kN (kN·m), MN "
+    "(MN·m), kgf (kgf·m) or lbf (lbf·ft). JSON stays SI.",
+)
+def torsion(paths, speeds, max_order, kind, orders, modes, samples, fmt, output, plot_dir, units):
     from ..torsion import require_opentorsion
     from ..torsion import torsional_vibration as torsion_of
 
     with reported():
         require_opentorsion()  # before any work, and not tied to one file
     speeds_rpm = speeds_option(speeds)
+    chosen_orders = None if orders is None else numbers_option(orders, "--orders")
+    chosen_modes = None if modes is None else _mode_numbers(modes)
     files = inputs(paths)
     guard([output], files)
     settings(samples, max_order)
@@ -100,6 +150,11 @@ def torsion(paths, speeds, max_order, samples, fmt, output, plot_dir, units):
                     param_hint="--output",
                 )
     results = run_each(engines, "Torsion", lambda e: torsion_of(e, speeds_rpm, max_order, samples))
+    chosen = []
+    for result in results:
+        with reported(result.engine, flags=_FLAGS):
+            chosen.append(result.filtered(kind, chosen_orders, chosen_modes))
+    results = chosen
     from ..report.torsion import torsion_csv, torsion_tables
 
     scale = Scale.of(False, units)

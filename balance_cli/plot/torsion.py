@@ -18,8 +18,8 @@ def _figure(fig, size):
 
 def campbell(result, fig=None):
     """The Campbell diagram: each mode's frequency (horizontal lines) and each order's
-    frequency k·n against speed (rays), criticals in the speed range marked (filled: major
-    orders). Returns the Figure."""
+    frequency k·n against speed (rays), the result's criticals marked (filled: major orders;
+    a grey cross: one the cylinders cannot excite). Returns the Figure."""
     fig = _figure(fig, (8, 5))
     ax = fig.add_subplot()
     speeds = np.array([0.0, result.speeds_rpm.max() * 1.05])
@@ -39,6 +39,9 @@ def campbell(result, fig=None):
             )
     for c in result.criticals:
         f = c.order * c.speed_rpm / 60.0
+        if not c.excited:
+            ax.plot(c.speed_rpm, f, "x", color="0.5", markersize=5)
+            continue
         ax.plot(
             c.speed_rpm,
             f,
@@ -75,18 +78,42 @@ def mode_shapes(result, fig=None):
 
 def torque_speed(result, fig=None, scale=None):
     """Vibratory torque (peak of all orders together) against speed, one line per section,
-    criticals of major orders marked, in ``scale``'s moment unit (N·m). Returns the Figure."""
+    the result's excited criticals of major orders marked, and the largest peak labelled
+    with its torque, speed, order (major or minor) and mode, whatever its order, in
+    ``scale``'s moment unit (N·m). Returns the Figure."""
     scale = scale or Scale()
     fig = _figure(fig, (8, 5))
     ax = fig.add_subplot()
     for s, name in enumerate(result.sections):
         ax.plot(result.speeds_rpm, scale.moment(result.torque_nm[:, s]), label=name, linewidth=1.0)
     for c in result.criticals:
-        if c.major:
+        if c.major and c.excited:
             ax.axvline(c.speed_rpm, color="0.6", linestyle=":", linewidth=0.8)
             ax.annotate(
                 f"{c.order:g}/{c.mode}", (c.speed_rpm, ax.get_ylim()[1]), fontsize=7, va="top"
             )
+    # the largest peak, whatever makes it: a minor order's can be the largest of all
+    p = result.peak()
+    top = scale.moment(p.torque_nm)
+    label = (
+        f"order {p.order:g} ({'major' if p.major else 'minor'})"
+        + ("" if p.mode is None else f", mode {p.mode} ({p.critical_rpm:.0f} rpm)")
+        + f":\n{top:.4g} {scale.moment_label} at {p.speed_rpm:g} rpm\n{p.section}"
+    )
+    ax.plot(p.speed_rpm, top, "v", color="C3", markersize=6)
+    low, high = result.speeds_rpm.min(), result.speeds_rpm.max()
+    # text towards the middle of the plot, so that it stays inside
+    right = p.speed_rpm > (low + high) / 2
+    ax.annotate(
+        label,
+        (p.speed_rpm, top),
+        xytext=(-12 if right else 12, -4),
+        textcoords="offset points",
+        ha="right" if right else "left",
+        va="top",
+        fontsize=7,
+        arrowprops={"arrowstyle": "-", "color": "C3", "linewidth": 0.6},
+    )
     ax.set(
         xlabel="Engine speed (rpm)",
         ylabel=f"Vibratory torque ({scale.moment_label})",

@@ -219,7 +219,7 @@ def _torsion_blocks(torsion, scale) -> list[Block]:
                 ],
             )
         )
-        majors = [c for c in r.criticals if c.major]
+        majors = [c for c in r.criticals if c.major and c.excited]
         out.append(
             (
                 "p",

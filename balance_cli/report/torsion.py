@@ -10,14 +10,42 @@ from ..units import Scale, significant
 from .display import figure, markdown_text, plain_text
 from .table import render
 
-__all__ = ["torsion_tables", "torsion_csv"]
-
-#: phase-vector sums below this are shown as 0 (rounding of a sum that cancels)
-_ZERO_SUM = 1e-9
+__all__ = ["torsion_tables", "torsion_csv", "peak_text"]
 
 
 def _sum_text(value):
-    return "0" if value < _ZERO_SUM else significant(value, 3)
+    # the analysis sets a sum that cancels to rounding to exactly 0 (not excited)
+    return "0" if value == 0.0 else significant(value, 3)
+
+
+def _selection_text(r):
+    """The criticals :meth:`TorsionResult.filtered` kept, in words ("" for all of them)."""
+    chosen = r.selection
+    if not chosen:
+        return ""
+    words = {
+        "excited": "those the cylinders excite",
+        "major": "of major orders, excited",
+        "all": "",
+    }[chosen["kind"]]
+    parts = [words] if words else []
+    if chosen["orders"]:
+        parts.append("order " + ", ".join(f"{k:g}" for k in chosen["orders"]))
+    if chosen["modes"]:
+        parts.append("mode " + ", ".join(str(m) for m in chosen["modes"]))
+    return "; ".join(parts)
+
+
+def peak_text(r, scale):
+    """The sweep's largest vibratory torque in words: where, and the order (and mode) there."""
+    p = r.peak()
+    what = f"order {p.order:g} ({'major' if p.major else 'minor'})"
+    if p.mode is not None:
+        what += f", mode {p.mode} (its critical at {p.critical_rpm:.0f} rpm)"
+    return (
+        f"{figure(scale.moment(p.torque_nm))} {scale.moment_label} in {p.section} at "
+        f"{p.speed_rpm:g} rpm, {what}"
+    )
 
 
 def torsion_tables(results, fmt, scale=None):
@@ -41,7 +69,7 @@ def torsion_tables(results, fmt, scale=None):
         rows = [[name, figure(j)] for name, j in zip(r.nodes, r.inertia_kgm2, strict=True)]
         out += ["Shaft line, free end first:", "", render(["Inertia", "J (kg·m²)"], rows, fmt), ""]
         out += [
-            "Natural modes (relative amplitudes, the largest throw amplitude 1):",
+            "Natural modes (relative amplitudes, the largest 1; 0 a node: below 1e-8 of it):",
             "",
             render(
                 ["Mode", "f (Hz)", "f (1/min)"] + list(r.nodes),
@@ -54,17 +82,17 @@ def torsion_tables(results, fmt, scale=None):
             ),
             "",
         ]
-        orders = list(r.orders)
+        chosen = r.selection or {}
+        orders = chosen.get("orders") or [float(k) for k in r.orders]
+        modes = [m for m in r.modes if not chosen.get("modes") or m.number in chosen["modes"]]
         out += [
             "Phase-vector sums |Σ β·e^{ik·φ}| by order (β the throw's amplitude in the "
-            "mode, φ the cylinder's firing angle):",
+            "mode, φ the cylinder's firing angle; 0: the cylinders cannot excite the mode "
+            "at that order):",
             "",
             render(
-                ["Order"] + [f"mode {m.number}" for m in r.modes],
-                [
-                    [f"{k:g}"] + [_sum_text(m.phase_vector_sums[float(k)]) for m in r.modes]
-                    for k in orders
-                ],
+                ["Order"] + [f"mode {m.number}" for m in modes],
+                [[f"{k:g}"] + [_sum_text(m.phase_vector_sums[k]) for m in modes] for k in orders],
                 fmt,
             ),
             "",
@@ -74,38 +102,53 @@ def torsion_tables(results, fmt, scale=None):
                 f"{c.speed_rpm:.0f}",
                 str(c.mode),
                 f"{c.order:g}",
-                "major" if c.major else "minor",
+                c.kind,
                 _sum_text(c.phase_vector_sum),
             ]
             for c in r.criticals
         ]
+        which = _selection_text(r)
         out += [
-            "Criticals in the speed range (the order's frequency equals the mode's):",
+            "Criticals in the speed range (the order's frequency equals the mode's"
+            + (f"; {which}" if which else "")
+            + "):",
             "",
             render(["Speed (rpm)", "Mode", "Order", "Kind", "Phase-vector sum"], rows, fmt)
             if rows
             else "none",
             "",
         ]
-        rows = [
-            [name, figure(scale.moment(t)), f"{v:g}"]
-            + ([] if s is None else [figure(s / 1e6)])
-            + [", ".join(f"{c.order:g}/{c.mode}" for c in r.near(v)) or "-"]
-            for name, t, v, s in r.largest()
-        ]
+        rows = []
+        for s_index, (name, t, v, s) in enumerate(r.largest()):
+            i = int(np.argmax(r.torque_nm[:, s_index]))
+            top = r.orders[int(np.argmax(r.order_torque_nm[i, s_index]))]
+            rows.append(
+                [name, figure(scale.moment(t)), f"{v:g}"]
+                + ([] if s is None else [figure(s / 1e6)])
+                + [f"{top:g}", ", ".join(f"{c.order:g}/{c.mode}" for c in r.near(v)) or "-"]
+            )
         stress = [] if r.stress_pa is None else ["τ (MPa)"]
+        elastic = r.free_end_elastic_deg
         out += [
             "Largest vibratory torque per section (peak of all orders together; the "
-            "criticals, order/mode, that speed of the sweep stands for):",
+            "order of the largest amplitude there; the criticals, order/mode, that speed "
+            "of the sweep stands for):",
             "",
             render(
-                ["Section", f"Torque ({scale.moment_label})", "at (rpm)"] + stress + ["Critical"],
+                ["Section", f"Torque ({scale.moment_label})", "at (rpm)"]
+                + stress
+                + ["Order", "Critical"],
                 rows,
                 fmt,
             ),
             "",
+            f"Largest of all: {peak_text(r, scale)}.",
+            "",
             f"Free end: largest angular amplitude {figure(r.free_end_deg.max())}° at "
-            f"{r.speeds_rpm[int(np.argmax(r.free_end_deg))]:g} rpm.",
+            f"{r.speeds_rpm[int(np.argmax(r.free_end_deg))]:g} rpm (the whole line's rigid "
+            "turning included); its elastic twist (less the turning of the line's centre "
+            f"of inertia) largest {figure(elastic.max())}° at "
+            f"{r.speeds_rpm[int(np.argmax(elastic))]:g} rpm.",
             "",
         ]
     return "\n".join(out)
@@ -114,8 +157,8 @@ def torsion_tables(results, fmt, scale=None):
 def torsion_csv(results, scale=None):
     """The forced response in long form: engine, config, speed_rpm, section, order (``all``
     for the synthesised waveform's peak), torque_Nm (``scale``'s moment unit: torque_kNm,
-    ...), stress_Pa (empty without a shaft diameter), and the free end's amplitude
-    (free_end_deg, on the ``all`` rows)."""
+    ...), stress_Pa (empty without a shaft diameter), and the free end's amplitude and its
+    elastic twist (free_end_deg, free_end_elastic_deg, on the ``all`` rows)."""
     scale = scale or Scale()
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
@@ -129,6 +172,7 @@ def torsion_csv(results, scale=None):
             f"torque_{scale.column_moment}",
             "stress_Pa",
             "free_end_deg",
+            "free_end_elastic_deg",
         ]
     )
     for r in results:
@@ -145,6 +189,7 @@ def torsion_csv(results, scale=None):
                         repr(float(scale.moment(r.torque_nm[i, s]))),
                         stress,
                         repr(float(r.free_end_deg[i])),
+                        repr(float(r.free_end_elastic_deg[i])),
                     ]
                 )
                 for o, k in enumerate(r.orders):
@@ -156,6 +201,7 @@ def torsion_csv(results, scale=None):
                             name,
                             repr(float(k)),
                             repr(float(scale.moment(r.order_torque_nm[i, s, o]))),
+                            "",
                             "",
                             "",
                         ]

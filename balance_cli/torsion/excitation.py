@@ -4,6 +4,8 @@ every cylinder's exact tangential torque at its firing phase, and phase-vector s
 import numpy as np
 
 from ..analysis.cylinders import cylinder_torques
+from ..checks import curve, is_real
+from ..errors import AnalysisError
 
 __all__ = ["excitation", "phase_vector_sum"]
 
@@ -27,7 +29,21 @@ def excitation(engine, samples, max_order, pressure, bore_m):
 def phase_vector_sum(amplitudes, firing_deg, order) -> complex:
     """Σ_c β_c·e^{ik·φ_c}: the phase-vector sum of order ``order`` (k) for cylinders firing at
     crank angles ``firing_deg`` (φ_c, degrees) whose throws move with relative amplitudes
-    ``amplitudes`` (β_c) in a mode."""
-    beta = np.asarray(amplitudes, dtype=float)
-    phi = np.radians(np.asarray(firing_deg, dtype=float))
+    ``amplitudes`` (β_c) in a mode.
+
+    Raises
+    ------
+    AnalysisError
+        amplitudes or angles that are not finite numbers, lists of unequal lengths, an order
+        that is not a finite number
+    """
+    beta = curve(amplitudes, "amplitudes")
+    phi = np.radians(curve(firing_deg, "firing_deg"))
+    if len(beta) != len(phi):
+        raise AnalysisError(
+            f"must give one angle per amplitude: {len(phi)} angles for {len(beta)} amplitudes",
+            "firing_deg",
+        )
+    if not is_real(order) or not np.isfinite(order):
+        raise AnalysisError(f"must be a finite number, got {order!r}", "order")
     return complex(np.sum(beta * np.exp(1j * order * phi)))

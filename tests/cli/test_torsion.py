@@ -41,7 +41,10 @@ def test_tables_json_csv_and_pictures(tmp_path):
         "torsion", path, "--speeds", "1000,2000", "--format", "csv", "--plot", tmp_path / "pics"
     )
     lines = result.stdout.splitlines()
-    assert lines[0] == "engine,config,speed_rpm,section,order,torque_Nm,stress_Pa,free_end_deg"
+    assert lines[0] == (
+        "engine,config,speed_rpm,section,order,torque_Nm,stress_Pa,free_end_deg,"
+        "free_end_elastic_deg"
+    )
     # 2 speeds × 7 sections (pulley, 6 throws, flywheel) × (24 orders + all)
     assert len(lines) == 1 + 2 * 7 * 25
     assert sorted(p.name for p in (tmp_path / "pics").iterdir()) == [
@@ -123,3 +126,77 @@ def test_units_convert_the_vibratory_torque(tmp_path):
     for a, b in zip(si[1:], kn[1:], strict=True):
         assert_allclose(float(b.split(",")[5]), float(a.split(",")[5]) / 1000, rtol=1e-12)
     assert "Torque (kN·m)" in invoke("torsion", path, "--speeds", "2000", "--units", "kn").output
+
+
+def test_help_names_only_the_options_it_has():
+    """``torsion --help`` once told of an --absolute it does not have (the --units help of the
+    force commands)."""
+    result = invoke("torsion", "--help")
+    assert result.exit_code == 0
+    assert "--absolute" not in result.output
+    for option in ("--criticals", "--orders", "--modes", "--units"):
+        assert option in result.output
+
+
+def criticals_rows(output):
+    """(speed, mode, order, kind) of the criticals table of one engine's text output."""
+    lines = output.split("Criticals in the speed range")[1].split("\n\n")[1].splitlines()[2:]
+    return [tuple(line.split(maxsplit=3)[:3]) + (line.split()[3],) for line in lines]
+
+
+def test_criticals_orders_and_modes_choose_the_criticals(tmp_path):
+    path = tmp_path / "six.toml"
+    path.write_text(INLINE6 + TORSION6)
+    every = criticals_rows(invoke("torsion", path).output)
+    major = criticals_rows(invoke("torsion", path, "--criticals", "major").output)
+    assert major and all(kind == "major" for *_, kind in major)
+    # an even six's major orders are the multiples of 3 (k·120° a multiple of 360°)
+    assert [r for r in every if float(r[2]) % 3 == 0] == major
+    chosen = criticals_rows(invoke("torsion", path, "--orders", "4.5,6", "--modes", "1").output)
+    assert chosen == [r for r in every if r[2] in ("4.5", "6") and r[1] == "1"]
+    document = json.loads(invoke("torsion", path, "--orders", "6", "--format", "json").output)[
+        "engines"
+    ][0]
+    assert {c["order"] for c in document["criticals"]} == {6.0}
+    assert document["criticals_chosen"] == {"kind": "excited", "orders": [6.0], "modes": None}
+
+
+@pytest.mark.parametrize(
+    "args, status, words",
+    [
+        (["--orders", "4.25"], 1, "--orders has 4.25"),
+        (["--orders", "x"], 2, "--orders"),
+        (["--modes", "0"], 2, "--modes"),
+        (["--modes", "1,x"], 2, "--modes"),
+        (["--modes", "12"], 1, "--modes has 12"),
+        (["--criticals", "minor"], 2, "--criticals"),
+    ],
+)
+def test_bad_filters_are_one_line_and_write_nothing(tmp_path, args, status, words):
+    path = tmp_path / "six.toml"
+    path.write_text(INLINE6 + TORSION6)
+    out = tmp_path / "out.json"
+    result = invoke("torsion", path, *args, "--format", "json", "-o", out, "--plot", tmp_path / "p")
+    assert result.exit_code == status
+    assert words in result.output and "Traceback" not in result.output
+    assert len([line for line in result.output.splitlines() if line.startswith("Error")]) == 1
+    assert not out.exists() and not (tmp_path / "p").exists()
+
+
+def test_the_tables_name_the_largest_peak_and_the_elastic_twist(tmp_path):
+    path = tmp_path / "six.toml"
+    path.write_text(INLINE6 + TORSION6)
+    text = invoke("torsion", path).output
+    assert "Largest of all: " in text and "elastic twist" in text
+    document = json.loads(invoke("torsion", path, "--format", "json").output)["engines"][0]
+    assert set(document["peak"]) == {
+        "section",
+        "torque_Nm",
+        "speed_rpm",
+        "order",
+        "mode",
+        "critical_rpm",
+        "major",
+    }
+    first = document["response"][0]
+    assert "free_end_elastic_deg" in first and "elastic_deg" in first["free_end_orders"][0]
