@@ -272,11 +272,13 @@ class Scale:
     units: str = "N"
 
     @classmethod
-    def of(cls, absolute, units):
-        """The scale of the command-line options: any unit but N implies absolute forces; the
-        unit's name in any letter case."""
-        units = unit_system(units)
-        return cls(absolute=absolute or units != "N", units=units)
+    def of(cls, absolute, units=None):
+        """The scale of the command-line options: ``units`` None when none was chosen (forces
+        absolute only if ``absolute``, moments in N·m); any unit chosen, N too, means absolute
+        forces in it. The unit's name in any letter case."""
+        if units is None:
+            return cls(absolute=bool(absolute), units="N")
+        return cls(absolute=True, units=unit_system(units))
 
     @property
     def force_label(self) -> str:
