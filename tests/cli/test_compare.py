@@ -208,3 +208,55 @@ def test_percentages_beyond_a_thousand_are_ratios(twin):
         if line.startswith("test twin")
     ][0]
     assert "×" in row and " %" not in row
+
+
+CROSS_PLANE_4 = """\
+name = "Cross-plane in-line 4"
+cycle = 4
+speed = "10000 rpm"
+crank_radius = "26 mm"
+rod_length = "100 mm"
+firing_order = [1, 3, 2, 4]
+
+[masses]
+reciprocating = "300 g"
+
+[[banks]]
+angle = 0
+
+[[throws]]
+phase = 0
+z = "0 mm"
+[[throws]]
+phase = 270
+z = "80 mm"
+[[throws]]
+phase = 90
+z = "160 mm"
+[[throws]]
+phase = 180
+z = "240 mm"
+"""
+
+
+def test_uneven_intervals_are_printed_in_firing_order(tmp_path):
+    """A cross-plane in-line 4 (Yamaha's R1 crank) with throws 0, 270, 90, 180° firing
+    1-3-2-4. By hand: a cylinder on a throw of phase β reaches top dead centre at θ = −β
+    (mod 360°): cylinder 1 at 0° and 360°, 3 at 270° and 630°, 2 at 90° and 450°, 4 at 180°
+    and 540°. Each fires at its first TDC after the one before: 1 at 0, 3 at 270, 2 at 450, 4
+    at 540, and 1 again at 720: intervals 270, 180, 90, 180, printed as the sequence (the
+    table said "90.0 to 270.0")."""
+    path = tmp_path / "r1.toml"
+    path.write_text(CROSS_PLANE_4, encoding="utf-8")
+    for fmt in ("table", "markdown"):
+        result = invoke("compare", path, "--format", fmt)
+        assert result.exit_code == 0, result.output
+        row = next(line for line in result.output.splitlines() if "1-3-2-4" in line)
+        assert "270-180-90-180" in row and " to " not in row
+    firing = json.loads(invoke("compare", path, "--format", "json").output)["engines"][0]["firing"]
+    assert_allclose(firing["intervals_deg"], [270, 180, 90, 180], atol=1e-4)  # TDC search
+    # throws 0, 180, 0, 180 firing 1-2-3-4 (TDCs 0, 180, 360, 540): every 180° (a flat crank)
+    flat = CROSS_PLANE_4.replace("270", "180", 1).replace("phase = 90", "phase = 0")
+    path.write_text(flat.replace("[1, 3, 2, 4]", "[1, 2, 3, 4]"), encoding="utf-8")
+    row = next(line for line in invoke("compare", path).output.splitlines() if "1-2-3-4" in line)
+    assert row.rstrip().endswith("every 180")
