@@ -97,7 +97,7 @@ def test_compare_table_markdown_csv():
 def test_reference_by_prefix_changes_the_percentages():
     result = invoke("compare", PART3, "--reference", "60° W12,")
     assert result.exit_code == 0, result.output
-    assert "% of 60° W12, link rods on t…" in result.output
+    assert "% of 60° W12, link rods on…" in result.output  # at a word
 
 
 def test_ambiguous_reference_lists_only_the_matches(tmp_path):
