@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import instance, items
+from ..checks import instance, items, positive
 from ..errors import AnalysisError
 from ..kinematics import check_assembly
 from ..model import Engine
@@ -175,16 +175,22 @@ class EngineResult:
         return power_related_unbalance(self, power_w, orders, classes or DEFAULT_PRU_CLASSES)
 
     def to_dict(
-        self, reference: "EngineResult | None" = None, pru_classes=None, pru_orders=(1, 2)
+        self,
+        reference: "EngineResult | None" = None,
+        pru_classes=None,
+        pru_orders=(1, 2),
+        power_w: float | None = None,
     ) -> dict:
         """This engine's entry of ``compare --format json`` (SI units; see the README).
 
         ``reference`` is the result the percentage refers to (default: this one, as in the
         comparison of a single engine); ``pru_classes`` the bounds of the power related
         unbalance's classes (default the project guides') and ``pru_orders`` the orders it
-        judges.
+        judges; ``power_w`` the power (W) at the speed analysed that the power related
+        unbalance refers to instead of the engine's own (its ``power_source`` is then
+        "option").
         """
-        pru = self.power_related_unbalance(orders=pru_orders, classes=pru_classes)
+        pru = self.power_related_unbalance(power_w, orders=pru_orders, classes=pru_classes)
         engine = self.engine
         return {
             "name": engine.name,
@@ -337,6 +343,8 @@ class Comparison:
     reference_index: int
     pru_classes: tuple | None = None
     pru_orders: tuple = (1, 2)
+    #: the power (W) every engine's power related unbalance refers to, instead of its own
+    power_w: float | None = None
 
     @property
     def reference(self) -> EngineResult:
@@ -358,7 +366,8 @@ class Comparison:
             "max_order": self.max_order,
             "reference": self.reference.engine.name,
             "engines": [
-                r.to_dict(self.reference, self.pru_classes, self.pru_orders) for r in self.results
+                r.to_dict(self.reference, self.pru_classes, self.pru_orders, self.power_w)
+                for r in self.results
             ],
         }
 
@@ -368,13 +377,17 @@ def compare(
     reference: str | None = None,
     pru_classes=None,
     pru_orders=None,
+    power_w: float | None = None,
 ) -> Comparison:
     """The comparison of analysed engines (:func:`analyse`, same settings); ``reference`` is
     the name (or a unique prefix) of the engine the percentages refer to, default the first;
     ``pru_classes`` the bounds of the power related unbalance's classes (N·m/kW; default the
     project guides' 60, 120, 220) and ``pru_orders`` the orders it judges (default 1 and
-    2, those analysed)."""
+    2, those analysed); ``power_w`` the engines' power at the speed analysed (W), which the
+    power related unbalance refers to instead of each engine's own (``compare --power``)."""
     results = tuple(items(results, EngineResult, "results"))
+    if power_w is not None:
+        power_w = positive(power_w, "power_w", "power")
     if reference is not None and not isinstance(reference, str):
         raise AnalysisError(
             f"must be an engine's name (a str) or None, got {reference!r}", "reference"
@@ -410,4 +423,4 @@ def compare(
         raise AnalysisError(
             f"must be orders from 1 to {results[0].max_order}, got {pru_orders!r}", "pru_orders"
         )
-    return Comparison(results, find_reference(results, reference), pru_classes, pru_orders)
+    return Comparison(results, find_reference(results, reference), pru_classes, pru_orders, power_w)

@@ -88,10 +88,11 @@ def compare(
     settings(samples, max_order)
     classes = None if pru_classes is None else numbers_option(pru_classes, "--pru-classes")
     orders = None if pru_orders is None else orders_option(pru_orders, "--pru-orders")
-    engines = _with_power(load_all(files, speed), power)
+    power_w = quantity_option(power, "--power", "power")
+    engines = load_all(files, speed)
     results = analyse_all(engines, samples, max_order)
     with reported(flags={"pru_classes": "--pru-classes", "pru_orders": "--pru-orders"}):
-        comparison = comparison_of(results, reference, classes, orders)
+        comparison = comparison_of(results, reference, classes, orders, power_w)
     scale = Scale.of(absolute, units)
     emit(
         output,
@@ -109,15 +110,3 @@ def compare_document(comparison, overridden=None):
     if overridden:
         document["speed_override_rpm"] = rad_s_to_rpm(overridden[0].speed_rad_s)
     return document
-
-
-def _with_power(engines, power):
-    """The engines with --power as their power at the speed they are analysed at."""
-    if power is None:
-        return engines
-    power_w = quantity_option(power.replace("\u202f", " "), "--power", "power")
-    out = []
-    for engine in engines:
-        with reported(engine):
-            out.append(engine.replace(power_w=power_w, power_speed_rad_s=engine.speed_rad_s))
-    return out

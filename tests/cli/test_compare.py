@@ -260,3 +260,44 @@ def test_uneven_intervals_are_printed_in_firing_order(tmp_path):
     path.write_text(flat.replace("[1, 3, 2, 4]", "[1, 2, 3, 4]"), encoding="utf-8")
     row = next(line for line in invoke("compare", path).output.splitlines() if "1-2-3-4" in line)
     assert row.rstrip().endswith("every 180")
+
+
+@pytest.mark.parametrize(
+    "power, kilowatts",
+    [
+        ("14 280 kW", 14_280.0),
+        # 19 000 mechanical horsepower of 550 ft·lbf/s: 19 000 × 745.69987158227 W
+        ("19 000 hp", 19_000 * 550 * 0.3048 * 0.45359237 * 9.80665 / 1e3),
+        ("14\u202f280 kW", 14_280.0),
+    ],
+)
+def test_power_option_as_its_help_writes_it(power, kilowatts):
+    """The help's own examples, thousands set apart by a space: read, and the power related
+    unbalance refers to them as given with the analysis ("option", shown "(--power)"), the
+    PRU being each moment over that power."""
+    marine = CONFIGS / "marine-6-2stroke.toml"
+    result = invoke("compare", marine, "--power", power, "--format", "json")
+    assert result.exit_code == 0, result.output
+    record = json.loads(result.output)["engines"][0]
+    assert_allclose(record["power_kW"], kilowatts, rtol=1e-15)
+    pru = record["pru"]
+    assert pru["power_source"] == "option"
+    second = next(e for e in pru["orders"] if e["order"] == 2)
+    assert_allclose(second["vertical_Nm_per_kW"], second["vertical_Nm"] / kilowatts, rtol=1e-14)
+    table = invoke("compare", marine, "--power", power).output
+    assert "(--power)" in table
+
+
+def test_power_of_the_library_comparison():
+    """balance.compare(power_w=...) is what --power passes; the engines keep their own power."""
+    import balance_cli as balance
+
+    result = balance.analyse(balance.load(CONFIGS / "marine-6-2stroke.toml"))
+    own = balance.compare([result]).to_dict()["engines"][0]["pru"]
+    assert own["power_source"] == "given"
+    given = balance.compare([result], power_w=1.2e7).to_dict()["engines"][0]
+    assert given["pru"]["power_source"] == "option" and given["power_kW"] == 12_000.0
+    assert result.engine.power_w is not None and result.engine.power_w != 1.2e7
+    for bad in (0.0, -1.0, float("nan"), "12 MW", 1e300):
+        with pytest.raises(balance.AnalysisError, match="power_w"):
+            balance.compare([result], power_w=bad)
