@@ -46,8 +46,8 @@ __all__ = ["compare", "compare_document"]
     default=None,
     metavar="POWER",
     help="The engines' power at the speed analysed (e.g. '14 280 kW', '21 MW', "
-    "'19 000 hp'), for the power related unbalance; default each file's power "
-    "(or its [gas] cycle's indicated power).",
+    "'19 000 hp'; hp mechanical, PS metric), for the power related unbalance; default "
+    "each file's power (or its [gas] cycle's indicated power).",
 )
 @click.option(
     "--pru-classes",
