@@ -38,7 +38,12 @@ from .analysis.counterweight import counterweights
 from .analysis.cylinders import CylinderTorque, CylinderTorques, cylinder_torques
 from .analysis.firing import Firing
 from .analysis.guideforce import GuideForces
-from .analysis.marine import PowerRelatedUnbalance, power_related_unbalance
+from .analysis.marine import (
+    FirstOrderBalance,
+    PowerRelatedUnbalance,
+    first_order_balance,
+    power_related_unbalance,
+)
 from .analysis.pins import PinForce
 from .analysis.pressure import CycleCurve, PressureCurve, read_cycle_csv, read_pressure_csv
 from .analysis.results import Comparison, EngineResult, analyse, compare
@@ -96,6 +101,8 @@ _LAZY = {
     "Term": (".cranksearch", "Term"),
     "sweep": (".studies.sweep", "sweep"),
     "SweepResult": (".studies.sweep", "SweepResult"),
+    "sweep_grid": (".studies.sweep", "sweep_grid"),
+    "SweepGrid": (".studies.sweep", "SweepGrid"),
     "family": (".studies.family", "family"),
     "FamilyResult": (".studies.family", "FamilyResult"),
     "torsional_vibration": (".torsion", "torsional_vibration"),
@@ -152,6 +159,8 @@ __all__ = [
     "Firing",
     "power_related_unbalance",
     "PowerRelatedUnbalance",
+    "first_order_balance",
+    "FirstOrderBalance",
     # counterweights and balancer shafts
     "counterweights",
     "Balance",

@@ -491,6 +491,61 @@ def cases(w):
             [3, NAN, ["F0"], ["X2"], ["F99"], [3], ["F2", "F2"]],
         ),
         (
+            "sweep.load",
+            lambda v: balance.sweep(CONFIGS / "inline-4-car.toml", "speed", ["1000 rpm"], load=v),
+            "load",
+            ["x", None, 3, NAN, [], True],
+        ),
+        (
+            "sweep.overrides",
+            lambda v: balance.sweep(
+                CONFIGS / "inline-4-car.toml", "rod_length", ["140 mm"], overrides=v
+            ),
+            "overrides",
+            [
+                5,
+                "speed",
+                NAN,
+                [],
+                [("speed", "1000 rpm")],
+                {"speed": 5},
+                {3: "x"},
+                {"sped": "1 rpm"},
+                {"balance_factor": 0.5},
+                {"rod_length": "150 mm"},
+            ],
+        ),
+        (
+            "sweep.progress",
+            lambda v: balance.sweep(
+                CONFIGS / "inline-4-car.toml", "speed", ["1000 rpm"], progress=v
+            ),
+            "progress",
+            ["x", 5, NAN, [], True],
+        ),
+        (
+            "sweep_grid.parameters",
+            lambda v: balance.sweep_grid(
+                CONFIGS / "inline-4-car.toml", v, [["1000 rpm", "2000 rpm"], ["140 mm", "150 mm"]]
+            ),
+            "parameters",
+            [None, 3, "speed", ["speed"], ["speed", "speed"], [3, "speed"], ("a", "b", "c")],
+        ),
+        (
+            "sweep_grid.values",
+            lambda v: balance.sweep_grid(CONFIGS / "inline-4-car.toml", ["speed", "rod_length"], v),
+            "values",
+            [
+                None,
+                3,
+                "x",
+                [],
+                [["1000 rpm"]],
+                [["1000 rpm", "2000 rpm"], 3],
+                [["1000 rpm", "2000 rpm"], ["140 mm"]],
+            ],
+        ),
+        (
             "power_related_unbalance.result",
             lambda v: balance.power_related_unbalance(v),
             "result",
@@ -679,6 +734,16 @@ def test_the_good_values_the_cases_replace_work(world):
         str(CONFIGS / "inline-4-car.toml"), "speed", ("1000 rpm", "2000 rpm"), quantities="F2"
     )
     assert len(swept.points) == 2
+    grid = balance.sweep_grid(
+        str(CONFIGS / "inline-4-car.toml"),
+        ("speed", "rod_length"),
+        (("1000 rpm", "2000 rpm"), np.array(["140 mm", "150 mm"])),
+        quantities="F2",
+        load="constant",
+        overrides={"pin_offset": "1 mm"},
+        progress=lambda done, total: None,
+    )
+    assert grid.shape == (2, 2)
 
 
 @pytest.mark.parametrize("error", ["Series", "PinForce", "EngineResult"])

@@ -103,6 +103,22 @@ def render():
             f"- records: {records}",
             "",
         ]
+    lines += [
+        "## balance's own errors",
+        "",
+        "What balance itself printed wrong, found against the published data, and corrected.",
+        "",
+    ]
+    for e in evaluate.own_errors():
+        lines += [
+            f"### {e['id']} (fixed in {e['fixed_in']}): {e['where']}",
+            "",
+            f"- printed: {e['printed']}",
+            f"- correct: {e['correct']}",
+            f"- evidence: {e['evidence']}",
+            f"- records: {', '.join(e['records'])}",
+            "",
+        ]
     return "\n".join(lines)
 
 

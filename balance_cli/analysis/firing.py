@@ -114,6 +114,17 @@ def _scores(base, shifts, ideal, cycle_deg):
     return worst, spread, sequence
 
 
+def _phase_sums(angles, n, cycle_deg):
+    """Σ_{m=1}^{n−1} |Σ_j e^{2πi·m·a_j/cycle}|² for each row of firing angles a_j, degrees:
+    the squared phase sums of the gas torque's orders below the n-th of the cycle, which an
+    even firing cancels."""
+    turns = np.asarray(angles) / cycle_deg
+    total = np.zeros(len(turns))
+    for m in range(1, n):
+        total += np.abs(np.exp(2j * np.pi * m * turns).sum(axis=1)) ** 2
+    return total
+
+
 def _most_uniform_four_stroke(numbers, tdc, cycle_deg):
     """Choose for each cylinder which of its two TDCs fires, making the gaps most uniform.
 
@@ -146,6 +157,10 @@ def _most_uniform_four_stroke(numbers, tdc, cycle_deg):
     worst, spread, sequence = _scores(base, shifts, ideal, cycle_deg)
     best = np.lexsort((spread, worst))[0]
     tied = np.flatnonzero((worst == worst[best]) & (spread == spread[best]))
+    # gaps alike (the H16's 0° and 90°) can still bunch the firings (one in a 90° slot, three
+    # in another): of those, the one that excites least gas torque below the n-th order
+    excitation = _phase_sums(base[None, :] + shifts[tied], n, cycle_deg)
+    tied = tied[excitation <= excitation.min() + 1e-6 * n * n]
     choice = min(tied, key=lambda i: tuple(numbers[j] for j in sequence[i]))
     angles = base + shifts[choice]
     order = tuple(numbers[j] for j in sequence[choice])

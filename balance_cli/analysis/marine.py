@@ -6,6 +6,18 @@ moment compensator is needed (MAN B&W, "Power Related Unbalance", section 17.04 
 guides, Table 17.04.01; WinGD Marine Installation Manuals, section 6.1): 0–60 not relevant,
 60–120 unlikely, 120–220 likely, above 220 most likely. The moments are the vertical (pitching,
 M1V, M2V) and horizontal (yawing, M1H, M2H) components of balance's exact free moments.
+
+The first order is judged as the guides give it: with their **standard balancing**,
+counterweights for the rotating masses and half the reciprocating ones, so that the first-order
+moments act vertically and horizontally with the same magnitude (MAN B&W project guides, chapter
+17 "External Forces and Moments"; WinGD Marine Installation Manuals, section 6.1.1: "standard
+counterweights, fitted to the ends of the crankshaft", and non-standard ones to reduce M1V or
+M1H instead). The seven-cylinder S80MC-C7's printed PRU1/PRU2 = 9.3/36.4 fits that balance, not
+the rotating masses' alone (docs/VALIDATION.md). The balance factor can be chosen, and two named
+alternatives are kept beside it: the rotating masses alone balanced (factor 0: the reciprocating
+masses' first order stays, vertical only, twice the standard figure) and the crank as it stands
+(no counterweights but those built). Every higher order is as the crank stands: counterweights
+turn at crank speed.
 """
 
 import math
@@ -19,6 +31,12 @@ from .shaking import Shaking
 
 __all__ = [
     "DEFAULT_PRU_CLASSES",
+    "FIRST_ORDER_BALANCES",
+    "FirstOrderBalance",
+    "first_order_balance",
+    "first_order_moments",
+    "judged_balance",
+    "STANDARD_BALANCE",
     "DEFAULT_PRU_ORDERS",
     "Power",
     "PowerRelatedUnbalance",
@@ -38,6 +56,16 @@ DEFAULT_PRU_CLASSES = (
 #: the orders the guides give: first and second
 DEFAULT_PRU_ORDERS = (1, 2)
 _CLASS_WORDS = ("not relevant", "unlikely", "likely", "most likely")
+#: the named first-order balances: the fraction of the reciprocating masses the counterweights
+#: carry besides the rotating masses, None for the crank as it stands
+FIRST_ORDER_BALANCES = {"standard": 0.5, "rotating": 0.0, "crank": None}
+_BALANCE_WORDS = {
+    "standard": "the project guides' standard balance: counterweights for the rotating masses "
+    "and half the reciprocating ones (balance factor 0.5), M1V = M1H",
+    "rotating": "counterweights for the rotating masses only (balance factor 0): the "
+    "reciprocating masses' first order stays, vertical",
+    "crank": "as the crank stands (no counterweights but those built)",
+}
 #: crank angles a revolution on which a cylinder's stroke is found (its extremes are flat:
 #: 3600 points put them within 1e-8 of the exact stroke): every second point of the fine grid
 _STROKE_SAMPLES = 3600
@@ -59,6 +87,82 @@ class Power:
     @property
     def kilowatts(self) -> float:
         return self.watts / 1e3
+
+
+@dataclass(frozen=True)
+class FirstOrderBalance:
+    """How the first-order moments are judged: ``name`` "standard", "rotating", "crank" or
+    "factor" (a balance factor of one's own); ``balance_factor`` the fraction (0 to 1) of the
+    reciprocating masses the counterweights carry besides the rotating masses, None for the
+    crank as it stands."""
+
+    name: str
+    balance_factor: float | None
+
+    @property
+    def description(self) -> str:
+        if self.name == "factor":
+            return (
+                f"counterweights for the rotating masses and {self.balance_factor:g} of the "
+                f"reciprocating ones (balance factor {self.balance_factor:g})"
+            )
+        return _BALANCE_WORDS[self.name]
+
+    def to_dict(self) -> dict:
+        return {
+            "name": self.name,
+            "balance_factor": self.balance_factor,
+            "description": self.description,
+        }
+
+
+#: the guides' standard balance, the default
+STANDARD_BALANCE = FirstOrderBalance("standard", 0.5)
+
+
+def first_order_balance(value="standard") -> FirstOrderBalance:
+    """A :class:`FirstOrderBalance` from a name ("standard", "rotating", "crank"), a balance
+    factor from 0 to 1 (a number, or its text), or one already made."""
+    if isinstance(value, FirstOrderBalance):
+        if value.name in FIRST_ORDER_BALANCES and FIRST_ORDER_BALANCES[value.name] == (
+            value.balance_factor
+        ):
+            return value
+        if value.name == "factor":
+            return first_order_balance(value.balance_factor)
+    elif isinstance(value, str) and value.strip().lower() in FIRST_ORDER_BALANCES:
+        name = value.strip().lower()
+        return FirstOrderBalance(name, FIRST_ORDER_BALANCES[name])
+    elif not isinstance(value, bool):
+        try:
+            factor = float(value) if isinstance(value, (int, float, str)) else math.nan
+        except ValueError:
+            factor = math.nan
+        if 0.0 <= factor <= 1.0:
+            factor += 0.0  # not -0
+            named = next((n for n, f in FIRST_ORDER_BALANCES.items() if f == factor), None)
+            # a factor of a named balance is that balance, so one figure has one name
+            return FirstOrderBalance(named or "factor", factor)
+    raise AnalysisError(
+        f"must be standard (the project guides': balance factor 0.5), rotating (0), crank (as "
+        f"the crank stands) or a balance factor from 0 to 1, got {value!r}",
+        "first_order_balance",
+    )
+
+
+def first_order_moments(result, balance=STANDARD_BALANCE) -> dict | None:
+    """The first-order moment of an analysed engine under a first-order balance: its JSON
+    record (``vertical_Nm``, ``horizontal_Nm``, forward and backward parts, ...) after the
+    counterweights ``balance`` calls for; None where counterweights are not proposed (a
+    rotary, whose crank does not turn; several crankshafts) unless it is "crank"."""
+    balance = first_order_balance(balance)
+    engine = result.engine
+    if balance.balance_factor is None:
+        return dict(result.order_records()[0]["moment"])
+    if engine.is_rotary or engine.has_several_crankshafts:
+        return None
+    built = counterweights(result, balance_factor=balance.balance_factor)
+    return dict(built.residual.records(engine)[0]["moment"])
 
 
 def check_classes(bounds):
@@ -154,11 +258,16 @@ class PowerRelatedUnbalance:
     orders : tuple of dict
         per order k: ``order``, ``vertical_Nm`` and ``horizontal_Nm`` (M_kV, M_kH: the
         amplitudes of the pitching and yawing moments), ``vertical_Nm_per_kW`` and
-        ``horizontal_Nm_per_kW`` (their PRU) and ``vertical_class``, ``horizontal_class``
-    first_order_balanced : dict or None
-        the same for the first order once counterweights balance the rotating masses (the
-        crank's own and the big ends'), as a crank is built: ``balance_factor`` 0 of
-        :func:`~balance_cli.counterweights`; None on a rotary, whose crank does not turn
+        ``horizontal_Nm_per_kW`` (their PRU) and ``vertical_class``, ``horizontal_class``;
+        the first order under ``balance``, the others as the crank stands
+    balance : FirstOrderBalance
+        the first-order balance the first order is judged under (default the project
+        guides' standard balance; "crank" on a rotary or an engine with several crankshafts,
+        whose counterweights are not proposed)
+    first_order : dict or None
+        the first order under each named balance ("standard", "rotating", "crank"): an entry
+        as in ``orders``, None where counterweights are not proposed; None when the first
+        order is not judged
     classes : tuple of (bound, word)
     note : str or None
         why there is no PRU (no power), else None
@@ -166,7 +275,8 @@ class PowerRelatedUnbalance:
 
     power: Power | None
     orders: tuple = ()
-    first_order_balanced: dict | None = None
+    balance: FirstOrderBalance = STANDARD_BALANCE
+    first_order: dict | None = None
     classes: tuple = DEFAULT_PRU_CLASSES
     note: str | None = None
 
@@ -188,12 +298,12 @@ class PowerRelatedUnbalance:
                 for b, w in self.classes
             ],
             "orders": list(self.orders),
-            "first_order_balanced": self.first_order_balanced,
+            "first_order_balance": self.balance.to_dict(),
+            "first_order": self.first_order,
         }
 
 
-def _entry(order, record, kilowatts, classes):
-    moment = record["moment"]
+def _entry(order, moment, kilowatts, classes):
     v, h = moment["vertical_Nm"], moment["horizontal_Nm"]
     return {
         "order": order,
@@ -206,8 +316,21 @@ def _entry(order, record, kilowatts, classes):
     }
 
 
+def judged_balance(engine, balance=STANDARD_BALANCE) -> FirstOrderBalance:
+    """The balance the first order is judged under: ``balance``, or the crank as it stands
+    where counterweights are not proposed (a rotary, several crankshafts)."""
+    balance = first_order_balance(balance)
+    if balance.balance_factor is not None and (engine.is_rotary or engine.has_several_crankshafts):
+        return FirstOrderBalance("crank", None)
+    return balance
+
+
 def power_related_unbalance(
-    result, power_w=None, orders=DEFAULT_PRU_ORDERS, classes=DEFAULT_PRU_CLASSES
+    result,
+    power_w=None,
+    orders=DEFAULT_PRU_ORDERS,
+    classes=DEFAULT_PRU_CLASSES,
+    balance=STANDARD_BALANCE,
 ):
     """The :class:`PowerRelatedUnbalance` of an analysed engine
     (:class:`~balance_cli.EngineResult`); without a power, one that says why
@@ -222,6 +345,9 @@ def power_related_unbalance(
         the orders whose moments are judged (default 1 and 2), each within the analysis
     classes : tuple of (bound, word)
         :data:`DEFAULT_PRU_CLASSES` or :func:`check_classes` of other bounds
+    balance : str, float or FirstOrderBalance
+        the first order's balance (:func:`first_order_balance`): "standard" (default, the
+        project guides'), "rotating", "crank" or a balance factor from 0 to 1
     """
     if not isinstance(getattr(result, "shaking", None), Shaking):
         raise AnalysisError(
@@ -231,25 +357,36 @@ def power_related_unbalance(
         )
     if classes is not DEFAULT_PRU_CLASSES:
         _check_class_table(classes)
-    power, why = engine_power(result.engine, power_w)
-    if power is None:
-        return PowerRelatedUnbalance(None, classes=classes, note=why)
+    balance = judged_balance(result.engine, balance)
     if (
         isinstance(orders, (str, bytes))
+        or not isinstance(orders, (list, tuple, range))
+        or not orders
         or not all(
             isinstance(k, int) and not isinstance(k, bool) and 1 <= k <= result.max_order
             for k in orders
         )
-        or not orders
     ):
         raise AnalysisError(
-            f"must be orders from 1 to {result.max_order}, got {orders!r}", "orders"
+            f"must be a list of orders from 1 to {result.max_order}, got {orders!r}", "orders"
         )
+    power, why = engine_power(result.engine, power_w)
+    if power is None:
+        return PowerRelatedUnbalance(None, classes=classes, note=why, balance=balance)
+    kilowatts = power.kilowatts
     records = result.order_records()
-    entries = tuple(_entry(k, records[k - 1], power.kilowatts, classes) for k in orders)
-    balanced = None
-    # counterweights are proposed for an engine with one crankshaft only
-    if not result.engine.is_rotary and not result.engine.has_several_crankshafts:
-        built = counterweights(result, balance_factor=0.0)
-        balanced = _entry(1, built.residual.records(result.engine)[0], power.kilowatts, classes)
-    return PowerRelatedUnbalance(power, entries, balanced, classes)
+    alternatives = None
+    if 1 in orders:
+        alternatives = {}
+        for name in FIRST_ORDER_BALANCES:
+            moment = first_order_moments(result, name)
+            alternatives[name] = None if moment is None else _entry(1, moment, kilowatts, classes)
+    entries = []
+    for k in orders:
+        if k == 1:
+            named = alternatives.get(balance.name) if alternatives else None
+            moment = first_order_moments(result, balance)
+            entries.append(named or _entry(1, moment, kilowatts, classes))
+        else:
+            entries.append(_entry(k, records[k - 1]["moment"], kilowatts, classes))
+    return PowerRelatedUnbalance(power, tuple(entries), balance, alternatives, classes)

@@ -13,7 +13,14 @@ from ..model import Engine
 from ..output import DOCUMENT_VERSION
 from ..units import rad_s_to_rpm, wrap_degrees
 from .firing import Firing, firing_sequence
-from .marine import DEFAULT_PRU_CLASSES, check_classes, power_related_unbalance
+from .marine import (
+    DEFAULT_PRU_CLASSES,
+    STANDARD_BALANCE,
+    FirstOrderBalance,
+    check_classes,
+    first_order_balance,
+    power_related_unbalance,
+)
 from .shaking import (
     DEFAULT_MAX_ORDER,
     DEFAULT_SAMPLES,
@@ -168,29 +175,37 @@ class EngineResult:
             object.__setattr__(self, "_order_records", cached)
         return cached
 
-    def power_related_unbalance(self, power_w: float | None = None, orders=(1, 2), classes=None):
+    def power_related_unbalance(
+        self, power_w: float | None = None, orders=(1, 2), classes=None, balance=STANDARD_BALANCE
+    ):
         """The power related unbalance of this engine (:mod:`balance_cli.analysis.marine`): a
         :class:`~balance_cli.analysis.marine.PowerRelatedUnbalance` (``available`` False, with
-        its ``note``, without a power)."""
-        return power_related_unbalance(self, power_w, orders, classes or DEFAULT_PRU_CLASSES)
+        its ``note``, without a power); ``balance`` the first order's (default the project
+        guides' standard balance)."""
+        return power_related_unbalance(
+            self, power_w, orders, classes or DEFAULT_PRU_CLASSES, balance
+        )
 
     def to_dict(
         self,
         reference: "EngineResult | None" = None,
         pru_classes=None,
         pru_orders=(1, 2),
+        pru_balance=STANDARD_BALANCE,
         power_w: float | None = None,
     ) -> dict:
         """This engine's entry of ``compare --format json`` (SI units; see the README).
 
         ``reference`` is the result the percentage refers to (default: this one, as in the
         comparison of a single engine); ``pru_classes`` the bounds of the power related
-        unbalance's classes (default the project guides') and ``pru_orders`` the orders it
-        judges; ``power_w`` the power (W) at the speed analysed that the power related
-        unbalance refers to instead of the engine's own (its ``power_source`` is then
-        "option").
+        unbalance's classes (default the project guides'), ``pru_orders`` the orders it
+        judges, ``pru_balance`` the first order's balance (default the guides' standard) and
+        ``power_w`` the power (W) at the speed analysed that the power related unbalance
+        refers to instead of the engine's own (its ``power_source`` is then "option").
         """
-        pru = self.power_related_unbalance(power_w, orders=pru_orders, classes=pru_classes)
+        pru = self.power_related_unbalance(
+            power_w, orders=pru_orders, classes=pru_classes, balance=pru_balance
+        )
         engine = self.engine
         return {
             "name": engine.name,
@@ -343,6 +358,7 @@ class Comparison:
     reference_index: int
     pru_classes: tuple | None = None
     pru_orders: tuple = (1, 2)
+    pru_balance: FirstOrderBalance = STANDARD_BALANCE
     #: the power (W) every engine's power related unbalance refers to, instead of its own
     power_w: float | None = None
 
@@ -366,7 +382,13 @@ class Comparison:
             "max_order": self.max_order,
             "reference": self.reference.engine.name,
             "engines": [
-                r.to_dict(self.reference, self.pru_classes, self.pru_orders, self.power_w)
+                r.to_dict(
+                    self.reference,
+                    self.pru_classes,
+                    self.pru_orders,
+                    self.pru_balance,
+                    self.power_w,
+                )
                 for r in self.results
             ],
         }
@@ -377,14 +399,18 @@ def compare(
     reference: str | None = None,
     pru_classes=None,
     pru_orders=None,
+    pru_balance=STANDARD_BALANCE,
     power_w: float | None = None,
 ) -> Comparison:
     """The comparison of analysed engines (:func:`analyse`, same settings); ``reference`` is
     the name (or a unique prefix) of the engine the percentages refer to, default the first;
     ``pru_classes`` the bounds of the power related unbalance's classes (N·m/kW; default the
-    project guides' 60, 120, 220) and ``pru_orders`` the orders it judges (default 1 and
-    2, those analysed); ``power_w`` the engines' power at the speed analysed (W), which the
-    power related unbalance refers to instead of each engine's own (``compare --power``)."""
+    project guides' 60, 120, 220), ``pru_orders`` the orders it judges (default 1 and
+    2, those analysed), ``pru_balance`` the first order's balance: "standard" (default:
+    the project guides', counterweights for the rotating masses and half the reciprocating
+    ones), "rotating", "crank" or a balance factor from 0 to 1; ``power_w`` the engines' power
+    at the speed analysed (W), which the power related unbalance refers to instead of each
+    engine's own (``compare --power``)."""
     results = tuple(items(results, EngineResult, "results"))
     if power_w is not None:
         power_w = positive(power_w, "power_w", "power")
@@ -423,4 +449,7 @@ def compare(
         raise AnalysisError(
             f"must be orders from 1 to {results[0].max_order}, got {pru_orders!r}", "pru_orders"
         )
-    return Comparison(results, find_reference(results, reference), pru_classes, pru_orders, power_w)
+    pru_balance = first_order_balance(pru_balance)
+    return Comparison(
+        results, find_reference(results, reference), pru_classes, pru_orders, pru_balance, power_w
+    )

@@ -13,6 +13,7 @@ from .dispatch import emit, guard
 from .group import main, reported
 from .options import (
     ABSOLUTE,
+    FIRST_ORDER_BALANCE,
     FORMAT,
     INPUTS,
     MAX_ORDER,
@@ -62,6 +63,7 @@ __all__ = ["compare", "compare_document"]
     metavar="K[,K...]",
     help="Orders whose moments the power related unbalance judges  [default: 1,2].",
 )
+@FIRST_ORDER_BALANCE
 @FORMAT
 @OUTPUT
 def compare(
@@ -75,6 +77,7 @@ def compare(
     power,
     pru_classes,
     pru_orders,
+    first_order_balance,
     fmt,
     output,
 ):
@@ -91,8 +94,16 @@ def compare(
     power_w = quantity_option(power, "--power", "power")
     engines = load_all(files, speed)
     results = analyse_all(engines, samples, max_order)
-    with reported(flags={"pru_classes": "--pru-classes", "pru_orders": "--pru-orders"}):
-        comparison = comparison_of(results, reference, classes, orders, power_w)
+    flags = {
+        "pru_classes": "--pru-classes",
+        "pru_orders": "--pru-orders",
+        "first_order_balance": "--first-order-balance",
+        "power_w": "--power",
+    }
+    with reported(flags=flags):
+        comparison = comparison_of(
+            results, reference, classes, orders, first_order_balance, power_w=power_w
+        )
     scale = Scale.of(absolute, units)
     emit(
         output,

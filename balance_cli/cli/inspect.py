@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING
 import click
 
 from ..analysis.firing import firing_sequence
-from ..config import load
+from ..config import build, load, parse_text, read_provenance, read_text
 from ..config.library import LIBRARY, TEMPLATE, resolve
 from ..errors import ConfigError
 from ..report.inspect import list_tables, show_table
@@ -50,7 +50,10 @@ def validate(paths):
 @click.argument("folder", required=False, default=LIBRARY, metavar="[DIR]")
 def list_(folder):
     """List the engines in DIR (default: the engine library shipped with balance, library:):
-    name, cylinders, cycle, frame, source.
+    name, cylinders, cycle, frame, estimates, source.
+
+    Estimates: how many of the file's numbers its `estimates` key names ("none" where it
+    declares sources and no estimates; blank where it declares neither).
 
     One table per folder, headed by the folder's path relative to DIR (DIR itself for the
     files directly in it): the files of DIR first, then each folder in path order, a folder
@@ -67,23 +70,31 @@ def list_(folder):
     # in the shipped library, folders and files by their names: what the other commands take
     named = folder.startswith((LIBRARY, TEMPLATE))
     inside = (folder if folder.endswith((":", "/")) else folder + "/") if named else ""
-    groups: dict[tuple[str, ...], list[Engine]] = {}  # by the folder's path parts
+    # by the folder's path parts: its engines and how many of each one's numbers are estimates
+    groups: dict[tuple[str, ...], list[tuple[Engine, int | None]]] = {}
     errors: list[str] = []
     for path in inputs([root]):
         try:
-            engine = load(path)
+            data = parse_text(read_text(Path(path)), str(path))
+            engine = build(data, str(path))
+            provenance = read_provenance(data, str(path))
             where = Path(path).relative_to(root)
             if named:
                 engine = engine.replace(config_path=inside + where.as_posix())
         except ConfigError as exc:
             errors.append(str(exc))
             continue
-        groups.setdefault(where.parent.parts, []).append(engine)
+        estimated = len(provenance.estimated(data)) if provenance.declared else None
+        groups.setdefault(where.parent.parts, []).append((engine, estimated))
     # folders sorted by their path parts: DIR's own files first, a folder before its subfolders
     if groups:
         click.echo(
             list_tables(
-                (inside + "/".join(parts) if parts else folder, groups[parts])
+                (
+                    inside + "/".join(parts) if parts else folder,
+                    [engine for engine, _ in groups[parts]],
+                    [estimated for _, estimated in groups[parts]],
+                )
                 for parts in sorted(groups)
             )
         )

@@ -116,6 +116,20 @@ SPEED = click.option(
 )
 
 
+FIRST_ORDER_BALANCE = click.option(
+    "--first-order-balance",
+    "first_order_balance",
+    default="standard",
+    show_default=True,
+    metavar="standard|rotating|crank|FACTOR",
+    help="The balance the first-order moments (M1V, M1H and their PRU) are given under: "
+    "standard, the project guides' (counterweights for the rotating masses and half the "
+    "reciprocating ones: M1V = M1H); rotating (the rotating masses only: M1V twice as "
+    "large, M1H 0); crank (as the crank stands); or a balance factor from 0 to 1 (the "
+    "fraction of the reciprocating masses the counterweights carry).",
+)
+
+
 LOAD = click.option(
     "--load",
     type=click.Choice(["propeller", "constant"]),
@@ -262,7 +276,12 @@ def counts_option(text):
     counts: list[int] = []
     try:
         for token in text.split(","):
-            low, _, high = token.strip().partition("-")
+            low, dash, high = token.strip().partition("-")
+            if dash and not (low.strip() and high.strip()):
+                raise click.BadParameter(
+                    f"{token.strip()!r} leaves a range open: give both ends, such as 5-14",
+                    param_hint="--cylinders",
+                )
             low, high = int(low), int(high or low)
             if high < low:
                 raise click.BadParameter(

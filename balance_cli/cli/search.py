@@ -21,6 +21,7 @@ from .batch import settings
 from .dispatch import emit, guard, render, same_path, write
 from .group import main, message, reported
 from .options import (
+    FIRST_ORDER_BALANCE,
     FORMAT,
     MAX_ORDER,
     OUTPUT,
@@ -67,7 +68,7 @@ def _search_reported(engine):
         raise click.ClickException(text) from None
 
 
-def _search_progress():
+def _search_progress(label="Searching"):
     """A progress bar on standard error when it is a terminal: (callback, bar or None)."""
     if not sys.stderr.isatty():
         return None, contextlib.nullcontext()
@@ -75,7 +76,7 @@ def _search_progress():
 
     def update(done, total):
         if "bar" not in state:
-            state["bar"] = click.progressbar(length=total, label="Searching", file=sys.stderr)
+            state["bar"] = click.progressbar(length=total, label=label, file=sys.stderr)
             state["bar"].__enter__()
         state["bar"].update(done - state["bar"].pos)
 
@@ -296,8 +297,8 @@ def search(
     default=None,
     metavar="TERMS",
     help="What each firing order minimises, as for balance search (M1,M2, X4, "
-    "F2:4, ...)  [default: the first-order couple left with the rotating masses "
-    "balanced plus the second-order couple, in N·m: M1-:w,M2].",
+    "F2:4, ...)  [default: the pitching plus yawing couples of orders 1, 2 and 4, "
+    "M1V + M1H + M2V + M2H + M4V + M4H in N·m: M1-:w1,M2,M4:w4].",
 )
 @click.option(
     "--firing-order",
@@ -328,6 +329,7 @@ def search(
     metavar="N",
     help="Processes for the searches [default: every core].",
 )
+@FIRST_ORDER_BALANCE
 @SAMPLES
 @MAX_ORDER
 @UNITS
@@ -341,6 +343,7 @@ def family_(
     pitch,
     power,
     workers,
+    first_order_balance,
     samples,
     max_order,
     units,
@@ -348,9 +351,10 @@ def family_(
     output,
 ):
     """A project-guide table of an engine family: for each number of cylinders, the firing
-    order (proved best for the objective, or given), the external moments M1V, M1H, M2V, M2H,
-    their power related unbalance and class, the largest H- and X-type guide-force moments
-    and whether a second-order compensator is indicated.
+    order (proved best for the objective, or given), the external moments M1V, M1H (under
+    the project guides' standard balance unless --first-order-balance says otherwise), M2V,
+    M2H, M4V, M4H, their power related unbalance and class, the largest H- and X-type
+    guide-force moments and whether a second-order compensator is indicated.
 
     FILE.toml is a configuration or search template of the family's in-line engine: one
     cylinder's data repeated at the pitch (its throws' phases and firing order are not used).
@@ -372,9 +376,10 @@ def family_(
         "firing_orders": "--firing-order",
         "objective": "--objective",
         "workers": "--workers",
+        "first_order_balance": "--first-order-balance",
         "template": path,
     }
-    callback, bar = _search_progress()
+    callback, bar = _search_progress("Family")
     with reported():
         configuration = read_configuration(path)
     with reported(flags=flags), bar:
@@ -389,6 +394,7 @@ def family_(
             max_order,
             workers,
             progress=callback,
+            first_order_balance=first_order_balance,
         )
 
     def csv():

@@ -1,5 +1,5 @@
 """balance sweep: one engine analysed again and again with one value of its configuration
-changed, as tables and a picture.
+changed, or two over a grid, as tables and a picture.
 """
 
 import sys
@@ -17,34 +17,129 @@ from .options import FORMAT, LOAD, MAX_ORDER, OUTPUT, SAMPLES, UNIT_CHOICE, quan
 
 __all__ = ["sweep"]
 
+#: the options that say what a sweep varies: each --vary takes those that follow it
+_VARY = ("--vary", "--from", "--to", "--steps", "--values")
+_ORDER = "balance.sweep.order"
 
-@main.command()
+
+def _occurrences(args):
+    """The options of :data:`_VARY` in the order the command line gives them."""
+    order = []
+    tokens = iter(args)
+    for token in tokens:
+        if token == "--":
+            break
+        name = token.split("=", 1)[0]
+        if name in _VARY:
+            order.append(name)
+            if "=" not in token:
+                next(tokens, None)  # its value, whatever it looks like
+    return order
+
+
+class _SweepCommand(click.Command):
+    """A command that keeps the order of its --vary options and their values (click gathers
+    each repeated option into one tuple and loses which --vary a --values follows)."""
+
+    def parse_args(self, ctx, args):
+        ctx.meta[_ORDER] = _occurrences(args)
+        return super().parse_args(ctx, args)
+
+
+def _groups(order, parameters, starts, stops, steps, listed):
+    """One dict per --vary: its parameter and the --from/--to/--steps or --values after it
+    (any given before the first --vary belong to the first)."""
+    given = {
+        "--vary": list(parameters),
+        "--from": list(starts),
+        "--to": list(stops),
+        "--steps": list(steps),
+        "--values": list(listed),
+    }
+    if [order.count(name) for name in _VARY] != [len(given[name]) for name in _VARY]:
+        raise click.UsageError(
+            "give each --vary its values after it: --vary A --from X --to Y --steps N "
+            "--vary B --values a,b,c"
+        )
+    groups: list = []
+    early: dict = {}
+    for name in order:
+        value = given[name].pop(0)
+        if name == "--vary":
+            groups.append({**early, "--vary": value} if not groups else {"--vary": value})
+            early = {}
+            continue
+        group = groups[-1] if groups else early
+        if name in group:
+            which = f" for --vary {group['--vary']}" if "--vary" in group else ""
+            raise click.UsageError(f"{name} given twice{which}; give each --vary its own values")
+        group[name] = value
+    return groups
+
+
+def _values_of(group, span):
+    """The values of one --vary: its --values, or --from/--to/--steps spaced evenly."""
+    key = group["--vary"]
+    spanned = [group.get(flag) for flag in ("--from", "--to", "--steps")]
+    if "--values" in group:
+        if any(v is not None for v in spanned):
+            raise click.UsageError(f"--vary {key}: give --values or --from/--to/--steps, not both")
+        return group["--values"].split(",")
+    if any(v is None for v in spanned):
+        missing = [
+            flag
+            for flag, v in zip(("--from", "--to", "--steps"), spanned, strict=True)
+            if v is None
+        ]
+        raise click.UsageError(
+            f"--vary {key}: give --values, or --from, --to and --steps "
+            f"({', '.join(missing)} missing)"
+        )
+    return span(*spanned)
+
+
+@main.command(cls=_SweepCommand)
 @click.argument("path", metavar="FILE")
 @click.option(
     "--vary",
-    "parameter",
+    "parameters",
     required=True,
+    multiple=True,
     metavar="PARAM",
     help="The configuration key to vary, as written in the file: speed, crank_radius, "
     "rod_length, pin_offset, masses.rotating, banks[2].angle, throws[3].phase, "
-    "throws[2].z, gas.imep, cylinders[4].reciprocating, ... (any number of the "
-    "file; a key the format allows may be added), or balance_factor (classic "
-    "per-throw counterweights of that factor, 0 to 1).",
+    "throws[2].z, gas.imep, power (for PRU), cylinders[4].reciprocating, ... (any number "
+    "of the file; a key the format allows may be added); or one derived from the keys: "
+    "rod_ratio (rod_length / crank_radius: sets rod_length, holds crank_radius; not for "
+    "link rods), stroke (2 × crank_radius: sets crank_radius, holds rod_length), "
+    "bore_pitch (the even spacing of the throws' z: sets every throw's z from the first, "
+    "moving listed cylinders' and counterweights' z with their throws); or balance_factor "
+    "(classic per-throw counterweights of that factor, 0 to 1). Give --vary twice for a "
+    "grid of every pair of values, each --vary followed by its own values.",
 )
 @click.option(
     "--from",
-    "start",
+    "starts",
+    multiple=True,
     metavar="A",
     help="First value, as in the file: '140 mm', "
     "'3000 rpm', or a plain number for angles and ratios.",
 )
-@click.option("--to", "stop", metavar="B", help="Last value (in any unit of the same kind).")
 @click.option(
-    "--steps", type=int, metavar="N", help="Values from --from to --to, both included (2 or more)."
+    "--to", "stops", multiple=True, metavar="B", help="Last value (in any unit of the same kind)."
+)
+@click.option(
+    "--steps",
+    "step_counts",
+    type=int,
+    multiple=True,
+    metavar="N",
+    help="Values from --from to --to, both included (2 or more).",
 )
 @click.option(
     "--values",
     "listed",
+    multiple=True,
     metavar="a,b,c",
     help="The values instead, comma-separated: '140 mm,150 mm,170 mm'.",
 )
@@ -57,14 +152,22 @@ __all__ = ["sweep"]
     "with M for free moments (M1V pitching, M1H yawing); largest_force, "
     "largest_moment (after an ideal counterweight); torque_mean, torque_max, "
     "torque_min, torque_range (ΔC of the total torque); steadiness (needs "
-    "--inertia and a [gas] table). Default: largest_force,largest_moment.",
+    "--inertia and a [gas] table); PRU<k>V, PRU<k>H (power related unbalance, N·m/kW: "
+    "needs the power at each point's speed). Default: largest_force,largest_moment.",
 )
 @click.option("--inertia", metavar="I", help="Flywheel inertia for steadiness, e.g. '2.5 kg*m^2'.")
 @LOAD
 @click.option(
     "--speed",
     metavar="SPEED",
-    help="Speed of every point instead of the file's, e.g. '3000 rpm' (not with --vary speed).",
+    help="Speed of every point instead of the file's, e.g. '3000 rpm' (not with --vary "
+    "speed). The file's power is given at the file's speed: for PRU give --power too.",
+)
+@click.option(
+    "--power",
+    metavar="POWER",
+    help="The engine's power at the speed of every point (the file's, or --speed), for PRU, "
+    "e.g. '14280 kW' (not with --vary power or --vary speed).",
 )
 @click.option(
     "--units",
@@ -82,19 +185,21 @@ __all__ = ["sweep"]
     "--plot",
     "picture",
     metavar="FILE.png|svg|pdf",
-    help="Also draw the quantities against the parameter into this picture.",
+    help="Also draw the quantities against the parameter into this picture (of two --vary: "
+    "a heat map with contour lines per quantity).",
 )
 def sweep(
     path,
-    parameter,
-    start,
-    stop,
-    steps,
+    parameters,
+    starts,
+    stops,
+    step_counts,
     listed,
     quantities,
     inertia,
     load,
     speed,
+    power,
     units,
     samples,
     max_order,
@@ -102,40 +207,48 @@ def sweep(
     output,
     picture,
 ):
-    """Analyse one engine again and again with one value of its configuration changed.
+    """Analyse one engine again and again with one value of its configuration changed, or
+    with two over every pair of their values (--vary A ... --vary B ...).
 
     Each value is set in the file's TOML and the engine rebuilt and checked exactly as a file
     is, so a value that makes no engine is reported with the file, the key and the value.
     """
     from ..config.library import resolve
     from ..report.sweeps import sweep_csv, sweep_tables
-    from ..studies.sweep import span
+    from ..studies.sweep import SweepGrid, SweepResult, span, sweep_grid
     from ..studies.sweep import sweep as sweep_of
 
-    spanned = (start, stop, steps)
-    if listed is not None and any(v is not None for v in spanned):
-        raise click.UsageError("give --values or --from/--to/--steps, not both")
-    if listed is None and any(v is None for v in spanned):
-        missing = [
-            flag
-            for flag, v in zip(("--from", "--to", "--steps"), spanned, strict=True)
-            if v is None
-        ]
+    order = click.get_current_context().meta.get(_ORDER, [])
+    groups = _groups(order, parameters, starts, stops, step_counts, listed)
+    if len(groups) > 2:
         raise click.UsageError(
-            f"give --values, or --from, --to and --steps ({', '.join(missing)} missing)"
+            f"--vary is given {len(groups)} times; a sweep varies one key, or two over a grid"
         )
+    keys = [g["--vary"].strip() for g in groups]
+    for flag, value, key in (("--speed", speed, "speed"), ("--power", power, "power")):
+        if value is not None and key in keys:
+            raise click.UsageError(
+                f"{flag} fixes the {key} that --vary {key} varies; give one of them"
+            )
+    if power is not None and "speed" in keys:
+        raise click.UsageError(
+            "--power gives the power at one speed, and --vary speed varies the speed; vary "
+            "power too (a grid of speed and power) or leave --power out"
+        )
+    overrides = {
+        key: value for key, value in (("speed", speed), ("power", power)) if value is not None
+    }
     flags = {
         "parameter": "--vary",
+        "parameters": "--vary",
         "values": "--values",
         "quantities": "--quantity",
         "start": "--from",
         "stop": "--to",
         "steps": "--steps",
         "inertia_kgm2": "--inertia",
-        "overrides": "--speed",
+        "overrides": "--speed" if speed is not None else "--power",
     }
-    if speed is not None and parameter.strip() == "speed":
-        raise click.UsageError("--speed fixes the speed that --vary speed varies; give one of them")
     outputs = [output] + ([picture] if picture else [])
     with reported():
         guard(outputs, [Path(resolve(path))])
@@ -144,6 +257,7 @@ def sweep(
     settings(samples, max_order)
     inertia_kgm2 = quantity_option(inertia, "--inertia", "moment of inertia")
     quantity_option(speed, "--speed", "angular speed")  # its unit, in the option's words
+    quantity_option(power, "--power", "power")
     if picture is not None:
         headless.use_agg()
         from .. import plot  # matplotlib only when a picture is asked for
@@ -151,7 +265,7 @@ def sweep(
         with reported(flags={"path": "--plot"}):
             plot.format_of(picture)
     with reported(flags=flags):
-        values = listed.split(",") if listed is not None else span(start, stop, steps)
+        values = [_values_of(group, span) for group in groups]
     state: dict = {}
 
     def progress(done, total):
@@ -166,18 +280,21 @@ def sweep(
         warnings.simplefilter("always", SamplingWarning)
         try:
             with reported(flags=flags):
-                result = sweep_of(
-                    path,
-                    parameter,
-                    values,
-                    quantities,
-                    samples,
-                    max_order,
+                options = dict(
                     inertia_kgm2=inertia_kgm2,
                     load=load,
                     progress=progress,
-                    overrides=None if speed is None else {"speed": speed},
+                    overrides=overrides or None,
                 )
+                result: SweepResult | SweepGrid
+                if len(groups) == 1:
+                    result = sweep_of(
+                        path, keys[0], values[0], quantities, samples, max_order, **options
+                    )
+                else:
+                    result = sweep_grid(
+                        path, keys, values, quantities, samples, max_order, **options
+                    )
         finally:
             if "bar" in state:
                 state["bar"].__exit__(None, None, None)

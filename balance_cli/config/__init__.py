@@ -11,8 +11,9 @@ cylinder is found by its number.
 Modules: :mod:`.reader` (the text, its TOML, and typed values with units), :mod:`.builder`
 (the Engine from parsed data), :mod:`.sections` (crankshafts, counterweights and shafts,
 parts, gas, torsion), :mod:`.files` (files and folders to engines and configurations),
-:mod:`.library` (the shipped engines and templates, named ``library:`` and ``template:``) and
-:mod:`.write` (configurations written back as TOML).
+:mod:`.library` (the shipped engines and templates, named ``library:`` and ``template:``),
+:mod:`.provenance` (a file's ``sources`` and ``estimates``) and :mod:`.write` (configurations
+written back as TOML).
 """
 
 from .builder import build
@@ -27,6 +28,7 @@ from .files import (
     read_configuration,
 )
 from .library import library_folder, resolve, templates_folder
+from .provenance import Note, Provenance, number_paths, read_provenance
 from .reader import parse_text, read_text
 from .write import WRITE_DIGITS, arrangement_toml, as_built_toml
 
@@ -48,4 +50,8 @@ __all__ = [
     "library_folder",
     "templates_folder",
     "resolve",
+    "Provenance",
+    "Note",
+    "read_provenance",
+    "number_paths",
 ]

@@ -9,6 +9,7 @@ import re
 from ..errors import ConfigError, ModelError
 from ..kinematics.linkage import check_assembly
 from ..model import FRAMES, Cylinder, Engine, Throw
+from .provenance import read_provenance
 from .reader import (
     BANK_KEYS,
     CYLINDER_KEYS,
@@ -67,6 +68,7 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
     top = Reader(path, data, "", TOP_KEYS)
     name = top.string("name")
     source = top.string("source", required=False, default="")
+    read_provenance(data, path)  # their form only: a template or a family drops keys they name
     cycle = top.integer("cycle")
     speed = top.quantity("speed", "angular speed")
     crank_radius = top.quantity("crank_radius", "length")

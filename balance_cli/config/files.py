@@ -13,6 +13,7 @@ from ..errors import ConfigError
 from ..model import Engine
 from .builder import build
 from .library import resolve
+from .provenance import Provenance, read_provenance
 from .reader import parse_text, read_text
 
 __all__ = [
@@ -88,6 +89,11 @@ class Configuration:
 
     def __repr__(self):
         return f"Configuration(path={self._path!r}, name={self._data.get('name')!r})"
+
+    @property
+    def provenance(self) -> Provenance:
+        """Its ``sources`` and ``estimates`` (ConfigError where their form is wrong)."""
+        return read_provenance(self._data, self._path)
 
     def engine(self) -> Engine:
         """The engine it describes (ConfigError naming the file, the key and the fix)."""

@@ -34,6 +34,8 @@ __all__ = [
 TOP_KEYS = {
     "name",
     "source",
+    "sources",
+    "estimates",
     "cycle",
     "speed",
     "crank_radius",

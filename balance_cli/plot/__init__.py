@@ -12,7 +12,7 @@ those of the free moment instead of the force.
 :func:`save` writes a figure in the format its file name's extension names.
 
 Also :func:`campbell`, :func:`mode_shapes` and :func:`torque_speed` of a torsional vibration
-analysis, and :func:`sweep_figure` of a sweep.
+analysis, and :func:`sweep_figure` of a sweep (curves) or a grid of two parameters (heat maps).
 
 One module per picture: ``loci``, ``spectra``, ``stars`` (its labels placed by ``labels``),
 ``firings``, ``torques``, ``torsion`` and ``sweep``; ``figure`` holds what they share.

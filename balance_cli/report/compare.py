@@ -133,7 +133,8 @@ def compare_parts(comparison, scale):
 def _pru_parts(records, scale):
     """The power related unbalance table, when any engine has a power: per engine its power
     and, per order judged, the pitching and yawing moments' PRU with their class; the first
-    order as the crank stands and with its rotating masses balanced."""
+    order under the balance asked (default the project guides' standard balance), with the
+    rotating-only and as-the-crank-stands figures beside it."""
     with_power = [r for r in records if r["pru"] is not None]
     if not with_power:
         # a power given at another speed than analysed is worth a word; no power at all is not
@@ -144,50 +145,52 @@ def _pru_parts(records, scale):
             else []
         )
     orders = [e["order"] for e in with_power[0]["pru"]["orders"]]
+    alternatives = ("rotating", "crank")
     headers = ["Engine", "Power (kW)"]
     for k in orders:
         headers += [f"M{k}V", f"M{k}H"]
         if k == 1:
-            headers += ["M1V balanced", "M1H balanced"]
+            headers += [f"M1{d} {name}" for name in alternatives for d in "VH"]
     rows = []
+    balances = set()
     for record in records:
         pru = record["pru"]
         if pru is None:
             rows.append([record["name"], "—"] + ["—"] * (len(headers) - 2))
             continue
+        balances.add(pru["first_order_balance"]["description"])
         source = {"given": "", "option": " (--power)", "indicated": " (indicated)"}
         row = [record["name"], figure(pru["power_kW"]) + source[pru["power_source"]]]
         for entry in pru["orders"]:
             row += [pru_text(entry, "vertical"), pru_text(entry, "horizontal")]
             if entry["order"] == 1:
-                balanced = pru["first_order_balanced"]
-                row += (
-                    ["—", "—"]
-                    if balanced is None
-                    else [pru_text(balanced, "vertical"), pru_text(balanced, "horizontal")]
-                )
+                for name in alternatives:
+                    named = pru["first_order"][name]
+                    row += (
+                        ["—", "—"]
+                        if named is None
+                        else [pru_text(named, "vertical"), pru_text(named, "horizontal")]
+                    )
         rows.append(row)
     classes = with_power[0]["pru"]["classes"]
     bounds = ", ".join(f"below {c['below_Nm_per_kW']:g} {c['class']}" for c in classes[:-1])
     bounds += f", above {classes[-2]['below_Nm_per_kW']:g} {classes[-1]['class']}"
     missing = [r["name"] for r in records if r["pru"] is None]
+    first = (
+        " M1 under " + "; ".join(sorted(balances)) + "; 'rotating' with counterweights for "
+        "the rotating masses only, 'crank' as the crank stands (--first-order-balance "
+        "chooses)."
+        if 1 in orders
+        else ""
+    )
     note = (
         "PRU = external moment / engine power (N·m/kW) at the speed analysed, and the need "
         "for a moment compensator: " + bounds + ". MkV is the "
-        "pitching moment of order k, MkH the yawing one; M1 as the crank stands, and "
-        "'balanced' with counterweights for the rotating masses (balance factor 0)."
+        "pitching moment of order k, MkH the yawing one."
+        + first
         + (
             " —: " + "; ".join(sorted({r["pru_note"] for r in records if r["pru"] is None})) + "."
             if missing
-            else ""
-        )
-        + (
-            " 'Balanced' is not given for a rotary (its crank does not turn) or an engine with "
-            "several crankshafts (each would need "
-            "its own counterweights)."
-            if any(
-                r["pru"] is not None and r["pru"]["first_order_balanced"] is None for r in records
-            )
             else ""
         )
     )

@@ -228,13 +228,14 @@ def family_csv(result):
     """One row per number of cylinders, SI, full precision."""
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    moments = [f"M{k}{d}_Nm" for k in (1, 2) for d in "VH"] + ["M1V_balanced_Nm", "M1H_balanced_Nm"]
+    moments = [f"M{k}{d}_Nm" for k in (1, 2, 4) for d in "VH"] + [
+        f"M1{d}_{name}_Nm" for name in ("standard", "rotating", "crank") for d in "VH"
+    ]
     pru = [f"PRU_M{k}{d}_Nm_per_kW" for k in (1, 2) for d in "VH"] + [
-        "PRU_M1V_balanced_Nm_per_kW",
-        "PRU_M1H_balanced_Nm_per_kW",
+        f"PRU_M1{d}_{name}_Nm_per_kW" for name in ("standard", "rotating", "crank") for d in "VH"
     ]
     writer.writerow(
-        ["cylinders", "firing_order", "method", "score"]
+        ["cylinders", "firing_order", "method", "score", "first_order_balance_factor"]
         + moments
         + ["power_kW"]
         + pru
@@ -247,9 +248,10 @@ def family_csv(result):
             for k in (1, 2)
             for side in ("vertical", "horizontal")
         ]
-        balanced = None if row["pru"] is None else row["pru"]["first_order_balanced"]
+        named = {} if row["pru"] is None else row["pru"]["first_order"] or {}
         values += [
-            None if balanced is None else balanced[f"{side}_Nm_per_kW"]
+            None if named.get(name) is None else named[name][f"{side}_Nm_per_kW"]
+            for name in ("standard", "rotating", "crank")
             for side in ("vertical", "horizontal")
         ]
         guides = []
@@ -262,6 +264,7 @@ def family_csv(result):
                 "-".join(map(str, row["firing_order"])),
                 row["method"],
                 _value(row["score"]),
+                _value(row["first_order_balance"]["balance_factor"]),
             ]
             + [_value(row.get(m)) for m in moments]
             + [_value(row["power_kW"])]

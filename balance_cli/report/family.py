@@ -23,33 +23,22 @@ def family_parts(result, scale):
         f"{m_to_mm(record['pitch_m']):g} mm{power}; guide-force moments from "
         f"{record['guide_forces_from']}"
     )
-    headers = [
-        "Cyl",
-        "Firing order",
-        "Found",
-        f"M1V* ({ml})",
-        f"M1H* ({ml})",
-        f"M2V ({ml})",
-        f"M2H ({ml})",
-        "PRU M1V*",
-        "PRU M1H*",
-        "PRU M2V",
-        "PRU M2H",
-        "H-type (order)",
-        "X-type (order)",
-        "2nd-order compensator",
-    ]
+    moments = [(k, d) for k in (1, 2, 4) for d in "VH"]
+    headers = (
+        ["Cyl", "Firing order", "Found"]
+        + [f"M{k}{d} ({ml})" for k, d in moments]
+        + ["PRU M1V", "PRU M1H", "PRU M2V", "PRU M2H"]
+        + ["H-type (order)", "X-type (order)", "2nd-order compensator"]
+    )
     rows = []
     for row in record["rows"]:
         pru = row["pru"]
         cells = [str(row["cylinders"]), "-".join(map(str, row["firing_order"])), row["method"]]
-        # the first order with the rotating masses balanced, as the project guides give it
-        first = "_balanced" if "M1V_balanced_Nm" in row else ""
-        cells += [figure(scale.moment(row[f"M1{d}{first}_Nm"])) for d in "VH"]
-        cells += [figure(scale.moment(row[f"M2{d}_Nm"])) for d in "VH"]
+        cells += [
+            "—" if row[f"M{k}{d}_Nm"] is None else figure(scale.moment(row[f"M{k}{d}_Nm"]))
+            for k, d in moments
+        ]
         entries = {} if pru is None else {e["order"]: e for e in pru["orders"]}
-        if pru is not None and pru["first_order_balanced"] is not None:
-            entries[1] = pru["first_order_balanced"]
         for k in (1, 2):
             for side in ("vertical", "horizontal"):
                 cells.append(pru_text(entries[k], side) if k in entries else "—")
@@ -63,10 +52,13 @@ def family_parts(result, scale):
         compensator = row["second_order_compensator"]
         cells.append("—" if compensator is None else "yes" if compensator else "no")
         rows.append(cells)
+    balances = sorted({row["first_order_balance"]["description"] for row in record["rows"]})
     notes = [
         "Found: exhaustive (proved best for the objective), heuristic (the best found, not "
-        "proved) or given. M1*: the first-order couple with counterweights for the rotating "
-        "masses (balance factor 0), as the project guides give it; M2 as the crank stands; "
+        "proved) or given. M1: the first-order couple under "
+        + "; ".join(balances)
+        + " (the JSON and CSV give the rotating-only and as-the-crank-stands figures "
+        "beside it); M2 and M4 as the crank stands; "
         "PRU in N·m/kW with the need for a compensator; H-type and X-type: the largest "
         f"guide-force moment ({record['guide_forces_from']}: a [gas] table adds the gas "
         "forces) of the orders analysed (at least up to the number of cylinders) and its "

@@ -10,22 +10,35 @@ from .table import render
 __all__ = ["list_table", "list_tables", "show_table"]
 
 
-def list_table(engines):
+def list_table(engines, estimates=None):
+    """The engines of one folder; ``estimates``, parallel to them, the number of each file's
+    numbers an estimate names (None: the file declares no ``sources`` or ``estimates``)."""
+    if estimates is None:
+        estimates = [None] * len(engines)
     rows = [
-        [e.config_path, e.name, str(e.n_cylinders), str(e.cycle), e.frame, e.source]
-        for e in engines
+        [e.config_path, e.name, str(e.n_cylinders), str(e.cycle), e.frame, _estimates(n), e.source]
+        for e, n in zip(engines, estimates, strict=True)
     ]
-    return render(["Config", "Name", "Cyl", "Cycle", "Frame", "Source"], rows, "table")
+    return render(["Config", "Name", "Cyl", "Cycle", "Frame", "Estimates", "Source"], rows, "table")
+
+
+def _estimates(count):
+    """The Estimates cell: how many numbers are estimates, "none", or blank (not declared)."""
+    if count is None:
+        return ""
+    return str(count) if count else "none"
 
 
 def list_tables(groups):
     """``balance list``: one table per folder, under its heading. ``groups`` is a sequence of
-    (heading, engines), in the order to print them."""
+    (heading, engines, estimates), in the order to print them (``estimates`` as
+    :func:`list_table` takes them)."""
     blocks = []
-    for heading, engines in groups:
+    for heading, engines, estimates in groups:
         count = len(engines)
         blocks.append(
-            f"{heading} ({count} engine{'s' if count != 1 else ''})\n{list_table(engines)}"
+            f"{heading} ({count} engine{'s' if count != 1 else ''})\n"
+            f"{list_table(engines, estimates)}"
         )
     return "\n\n".join(blocks)
 

@@ -4,9 +4,11 @@ For each cylinder count the in-line engine is built at the family's cylinder pit
 and firing order found by the exhaustive search (:func:`balance_cli.cranksearch`, proved optimal
 for the objective; the labelled heuristic where the count is too large to enumerate) or taken
 from the firing orders the user gives, and analysed as the makers' project guides tabulate
-it: the external moments M1V, M1H, M2V, M2H, their power related unbalance and its class, the
-largest H-type and X-type guide-force moments, and whether a second-order compensator is
-indicated.
+it: the external moments M1V, M1H, M2V, M2H and M4V, M4H, their power related unbalance and its
+class, the largest H-type and X-type guide-force moments, and whether a second-order compensator
+is indicated. The first order is under the guides' standard balance unless another is asked
+(:mod:`balance_cli.analysis.marine`), with the rotating-only and as-the-crank-stands figures
+beside it.
 """
 
 import math
@@ -15,6 +17,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from ..analysis import marine
 from ..analysis.results import analyse
 from ..analysis.shaking import DEFAULT_MAX_ORDER, DEFAULT_SAMPLES
 from ..analysis.torque import torque
@@ -28,6 +31,9 @@ __all__ = ["FamilyRow", "FamilyResult", "family", "default_objective"]
 
 #: the PRU classes that call for a second-order compensator
 _COMPENSATOR = ("likely", "most likely")
+#: the orders whose moments the table shows besides the first: the second, and the fourth the
+#: guides single out (MAN B&W's seven-cylinder engines; WinGD's M4V)
+_MOMENT_ORDERS = (2, 4)
 
 
 @dataclass(frozen=True)
@@ -45,21 +51,26 @@ class FamilyRow:
     score: float | None
     result: Any
     guide: Any
+    balance: Any = marine.STANDARD_BALANCE
 
     def to_dict(self) -> dict:
-        record = self.result.to_dict()
+        record = self.result.to_dict(pru_balance=self.balance)
         orders = record["orders"]
-        moments = {
-            f"M{k}{d}_Nm": orders[k - 1]["moment"][f"{w}_Nm"]
-            for k in (1, 2)
-            for d, w in (("V", "vertical"), ("H", "horizontal"))
-        }
+        balance = marine.judged_balance(self.result.engine, self.balance)
+        first = marine.first_order_moments(self.result, balance)
+        # judged_balance falls back to the crank where no counterweights are proposed
+        assert first is not None
+        moments = {"M1V_Nm": first["vertical_Nm"], "M1H_Nm": first["horizontal_Nm"]}
+        for name in marine.FIRST_ORDER_BALANCES:
+            named = marine.first_order_moments(self.result, name)
+            for d, w in (("V", "vertical"), ("H", "horizontal")):
+                moments[f"M1{d}_{name}_Nm"] = None if named is None else named[f"{w}_Nm"]
+        for k in _MOMENT_ORDERS:
+            for d, w in (("V", "vertical"), ("H", "horizontal")):
+                moments[f"M{k}{d}_Nm"] = (
+                    orders[k - 1]["moment"][f"{w}_Nm"] if k <= len(orders) else None
+                )
         pru = record["pru"]
-        balanced = None if pru is None else pru["first_order_balanced"]
-        if balanced is not None:
-            moments.update(
-                M1V_balanced_Nm=balanced["vertical_Nm"], M1H_balanced_Nm=balanced["horizontal_Nm"]
-            )
         second = None if pru is None else next((e for e in pru["orders"] if e["order"] == 2), None)
         return {
             "cylinders": self.cylinders,
@@ -67,6 +78,7 @@ class FamilyRow:
             "score": self.score,
             "firing_order": record["firing"]["order"],
             "phases_deg": [math.degrees(t.phase_rad) % 360.0 for t in self.result.engine.throws],
+            "first_order_balance": balance.to_dict(),
             **moments,
             "power_kW": record["power_kW"],
             "pru": pru,
@@ -106,6 +118,7 @@ class FamilyResult:
     samples: int
     max_order: int
     has_gas: bool = False
+    first_order_balance: Any = marine.STANDARD_BALANCE
 
     def to_dict(self) -> dict:
         """What ``balance family --format json`` writes (SI; see the README)."""
@@ -114,6 +127,7 @@ class FamilyResult:
             "name": self.name,
             "config": self.config,
             "objective": self.objective,
+            "first_order_balance": self.first_order_balance.to_dict(),
             "pitch_m": self.pitch_m,
             "guide_forces_from": "gas and inertia" if self.has_gas else "inertia only",
             "power_per_cylinder_kW": None
@@ -134,20 +148,38 @@ def _counts(cylinders):
     return sorted({whole(n, "cylinders", 2, 24) for n in counts})
 
 
-def default_objective(data, path, samples, max_order):
-    """The family's default objective in N·m (per pitch): the search's coefficients are each
-    in its order's own unit (one throw's largest order-k force × pitch), so M1⁻ and M2 add up
-    physically only weighted by those forces: 2·|M1⁻| is the first-order couple left with the
-    rotating masses balanced (what the reciprocating masses make: forward and backward halves
-    alike), |M2| the second-order couple. Returns "M1-:w,M2" with w = 2·F1/F2 of one throw."""
+def default_objective(data, path, samples, max_order, balance=marine.STANDARD_BALANCE):
+    """The family's default objective in N·m (per pitch): the pitching plus the yawing couple
+    of orders 1, 2 and 4, M1V + M1H + M2V + M2H + M4V + M4H, the moments the guides tabulate.
+
+    The search's coefficients are each in its order's own unit (one throw's largest order-k
+    force F_k × pitch), so they add up physically only weighted by those forces. Counterweights
+    carrying the rotating masses and a fraction c of the reciprocating ones leave (1 − c) of
+    the reciprocating first order vertical and c of it horizontal: M1V + M1H = 2·|M1⁻| (the
+    backward part, which only the reciprocating masses make) whatever c is, so the crank
+    chosen does not depend on the balance factor; as the crank stands it is 2·|M1⁺|. An
+    in-line engine's higher orders act along the cylinders: M_kV = |M_k⁺| + |M_k⁻|, M_kH = 0.
+    Returns "M1-:w1,M2,M4:w4" (M1+ as the crank stands) with w1 = 2·F1/F2 and w4 = F4/F2 of
+    one throw; orders beyond ``max_order`` are left out.
+    """
+    balance = marine.first_order_balance(balance)
     one = {k: v for k, v in data.items() if k not in ("throws", "power", "firing_order")}
     one["throws"] = [{"z": "0 m"}]
-    orders = analyse(build(one, path, template=True), samples, max(2, min(max_order, 2))).shaking
-    f1 = abs(orders.order(1).force_forward) + abs(orders.order(1).force_backward)
-    f2 = abs(orders.order(2).force_forward) + abs(orders.order(2).force_backward)
+    top = max(2, min(max_order, max(_MOMENT_ORDERS)))
+    orders = analyse(build(one, path, template=True), samples, top).shaking
+
+    def force(k):
+        order = orders.order(k)
+        return abs(order.force_forward) + abs(order.force_backward)
+
+    first = "M1+" if balance.balance_factor is None else "M1-"
+    f2 = force(2)
     if f2 == 0.0:
-        return "M1-"
-    return f"M1-:{2 * f1 / f2:.6g},M2"
+        return first
+    terms = [f"{first}:{2 * force(1) / f2:.6g}", "M2"]
+    if top >= 4 and force(4) > 0.0:
+        terms.append(f"M4:{force(4) / f2:.6g}")
+    return ",".join(terms)
 
 
 def _even_phases(order, n):
@@ -169,6 +201,7 @@ def family(
     workers: int | None = None,
     limit: int | None = None,
     progress: Callable[[int, int], None] | None = None,
+    first_order_balance="standard",
 ) -> FamilyResult:
     """The family table of an in-line engine: its one cylinder at every number of cylinders.
 
@@ -181,8 +214,8 @@ def family(
     cylinders : sequence of int
         the numbers of cylinders, 2 to 24
     objective : str, optional
-        what the search minimises (default :func:`default_objective`: the balanced
-        first-order couple plus the second-order couple, in N·m)
+        what the search minimises (default, or empty: :func:`default_objective`, the
+        pitching plus yawing couples of orders 1, 2 and 4, in N·m)
     pitch_m : float, optional
         the cylinder pitch, m (default the template's mean throw pitch)
     power_per_cylinder_w : float, optional
@@ -193,6 +226,14 @@ def family(
     workers, limit : int, optional
         as for :func:`~balance_cli.cranksearch`; a count whose exhaustive search would pass
         ``limit`` is searched by the heuristic, and labelled so
+    progress : callable(done, total), optional
+        called at once with (0, total) and as each count's search goes on: ``total`` is
+        1000 a count, each count's share filled as its own search reports
+    first_order_balance : str, float or FirstOrderBalance
+        the balance the first-order moments are given under
+        (:func:`~balance_cli.analysis.marine.first_order_balance`): "standard" (default, the
+        project guides': the rotating masses and half the reciprocating ones), "rotating",
+        "crank" or a balance factor from 0 to 1
 
     Raises
     ------
@@ -200,6 +241,13 @@ def family(
         naming the parameter, or the file and key
     """
     counts = _counts(cylinders)
+    balance = marine.first_order_balance(first_order_balance)
+    if limit is not None:
+        limit = whole(limit, "limit", 1, 10**15)
+    if objective is not None:
+        instance(objective, str, "objective", hint=" of terms such as 'M1-,M2'")
+    if progress is not None and not callable(progress):
+        raise AnalysisError(f"must be a function of (done, total), got {progress!r}", "progress")
     if isinstance(configuration, (str, os.PathLike)):
         configuration = read_configuration(configuration)
     instance(
@@ -261,9 +309,18 @@ def family(
                 "fixes the crank; a four-stroke's does not)",
                 "firing_orders",
             )
-    objective = objective or default_objective(data, path, samples, max_order)
+    objective = objective.strip() if objective else ""
+    objective = objective or default_objective(data, path, samples, max_order, balance)
     rows = []
+    share = 1000
+    if progress is not None:
+        progress(0, share * len(counts))
     for done, n in enumerate(counts):
+
+        def searching(part, whole_, base=done * share):
+            if progress is not None and whole_:
+                progress(base + min(share, share * part // whole_), share * len(counts))
+
         throws = [{"z": f"{j * pitch_m!r} m"} for j in range(n)]
         case = {k: v for k, v in data.items() if k not in ("throws", "power", "firing_order")}
         case.update(throws=throws, name=f"{data.get('name', 'family')} ({n} cylinders)"[:120])
@@ -288,21 +345,28 @@ def family(
                     limit=limit or DEFAULT_LIMIT,
                     samples=samples,
                     max_order=max_order,
+                    progress=searching,
                 )
             except BalanceError as exc:
                 if getattr(exc, "parameter", None) != "limit":
                     raise
                 found = search(
-                    engine, objective, top=1, heuristic=True, samples=samples, max_order=max_order
+                    engine,
+                    objective,
+                    top=1,
+                    heuristic=True,
+                    samples=samples,
+                    max_order=max_order,
+                    progress=searching,
                 )
             best = found.arrangements[0]
             result, method, score = best.result, found.method, best.score
         # an n-cylinder's H-type moment lives at order n: analyse the torques that far
         orders = max(max_order, n) if samples >= 4 * n + 1 else max_order
         guide = torque(result.engine, samples, orders, bearings=False).guide
-        rows.append(FamilyRow(n, method, score, result, guide))
+        rows.append(FamilyRow(n, method, score, result, guide, balance))
         if progress is not None:
-            progress(done + 1, len(counts))
+            progress((done + 1) * share, share * len(counts))
     return FamilyResult(
         data.get("name", ""),
         path,
@@ -313,4 +377,5 @@ def family(
         samples,
         max_order,
         template.gas is not None,
+        balance,
     )

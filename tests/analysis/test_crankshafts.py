@@ -533,13 +533,15 @@ def test_a_third_piston_in_an_opposed_bore_is_refused():
 
 def test_ideal_counterweights_on_a_reversed_crankshaft_take_the_backward_first_order():
     """Counterweights in two planes of a crankshaft turning against the first make any backward
-    first-order force and couple, as those of the first make any forward one: the H16's
-    first-order couple (forward and backward 7.55 kN·m) is all taken; the summary's figure is
-    then what the other orders leave (none)."""
-    result = balance.analyse(balance.load("configs/today/h/brm-h16.toml"))
+    first-order force and couple, as those of the first make any forward one: an H16 on
+    cross-plane cranks 0-90-270-180 (the library's H16 has flat ones, and no first-order
+    couple at all) has a planar primary couple in each half, forward and backward parts alike;
+    it is all taken, and the summary's figure is then what the other orders leave (none)."""
+    result = balance.analyse(flat8_pair(45, -1, crank=(0, 90, 270, 180)))
     assert result.counterweight_cancels == (True, True)
     o = result.order(1)
-    assert abs(o.moment_forward) > 1e3 and abs(o.moment_backward) > 1e3
+    couple = M * R * OMEGA**2 * 0.1  # m·r·ω²·d: the halves' couples are √10·2 of it
+    assert abs(o.moment_forward) > couple and abs(o.moment_backward) > couple
     assert result.counterweighted_moment_nm == 0.0
     single = balance.analyse(balance.load("configs/today/v/v8-90-cross-plane.toml"))
     assert single.counterweight_cancels == (True, False)
@@ -591,13 +593,15 @@ def test_the_readmes_mirror_image_rule_for_a_slanted_bore(direction, gamma, gear
 def test_the_jumo_205s_bores_by_hand():
     """The library's Jumo 205, one bore at a time (its reciprocating masses alone): with its
     upper throw moved to the mirror image (180° from the lower in its own sense) the bore's two
-    pistons leave no free force of any order; at the file's 11° lead, order k leaves
+    pistons leave no free force of any order; at the file's 11° lead (the upper, exhaust piston
+    ahead), order k leaves
     m·ω²·k²·|a_k|·2·|sin(11°·k/2)| along the bore (a_k the travel's harmonic, by quadrature)."""
     engine = balance.load(JUMO)
     one = engine.cylinders[0]
     lower, upper = engine.throws[one.throw_index], engine.throws[one.opposed_throw_index]
+    # the upper (exhaust) throw at 180° + 11° from the lower: the upper piston leads by 11°
     lead = math.degrees(math.remainder(math.pi - (upper.phase_rad - lower.phase_rad), 2 * math.pi))
-    assert_allclose(lead, 11.0, atol=1e-12)
+    assert_allclose(lead, -11.0, atol=1e-12)
     m, r, rod, omega = (
         one.reciprocating_kg,
         engine.crank_radius_m,

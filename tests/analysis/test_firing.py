@@ -103,3 +103,16 @@ def test_the_kept_firing_sequence_cannot_be_changed_by_a_caller():
     with pytest.raises(TypeError):
         sequence.tdc_deg[sequence.order[0]] += 30.0
     assert firing(load(CONFIGS / "abc-dragonfly.toml")) is sequence
+
+
+def test_gaps_alike_are_shared_out_evenly_among_the_revolutions():
+    """A four-stroke in-line 8 on a flat crank 0-180-180-0-0-180-180-0: its TDCs fall at 0° and
+    180° only, four cylinders each, so every choice leaves gaps of 0° and 180°, four of each;
+    but one puts two firings in each of the slots 0, 180, 360 and 540° and another three in
+    one slot and one in the next. The phase sums Σ_j e^{2πi·m·a_j/720}, m = 1..7, are
+    Σ_s c_s·i^{ms} over the slots' counts c_s: all zero for c_s = 2 but m = 4 (which gives 8),
+    larger for any other counts: the even pairs are chosen."""
+    crank = [(p, 0.1 * i) for i, p in enumerate((0, 180, 180, 0, 0, 180, 180, 0))]
+    fire = firing(make_engine([0], crank))
+    slots = [round(a) for a in fire.angles_deg]
+    assert sorted(slots) == [0, 0, 180, 180, 360, 360, 540, 540]

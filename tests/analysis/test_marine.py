@@ -14,7 +14,7 @@ from numpy.testing import assert_allclose
 import balance_cli as balance
 from balance_cli.analysis.marine import DEFAULT_PRU_CLASSES, check_classes, pru_class
 from balance_cli.units import parse_quantity
-from tests.support import CONFIGS, TWIN, exact_b, invoke
+from tests.support import CONFIGS, TWIN, exact_b, invoke, write
 
 MARINE = CONFIGS / "marine-6-2stroke.toml"
 
@@ -45,27 +45,73 @@ def test_marine_six_pru_of_its_second_order_couple():
     assert 120 < second["vertical_Nm_per_kW"] < 220 and second["vertical_class"] == "likely"
     assert second["horizontal_Nm"] == 0.0 and second["horizontal_class"] == "not relevant"
     # the first order of this firing order is zero, with and without counterweights
-    assert (
-        pru["orders"][0]["vertical_Nm"] == 0.0 and pru["first_order_balanced"]["vertical_Nm"] == 0.0
-    )
+    assert pru["orders"][0]["vertical_Nm"] == 0.0
+    for name in ("standard", "rotating", "crank"):
+        assert pru["first_order"][name]["vertical_Nm"] == 0.0, name
 
 
-def test_twin_first_order_as_built_and_with_its_rotating_masses_balanced():
+def test_twin_first_order_under_each_balance_by_hand():
     """180° twin, pitch d, reciprocating m and rotating m_rot per throw. About z̄ the rotating
     masses make −d·m_rot·r·ω²·e^{iθ} (turning) and the reciprocating ones −d·m·r·ω²·cos θ (along
-    the cylinder axis): as built M1V = (m + m_rot)·r·ω²·d and M1H = m_rot·r·ω²·d; with the
-    rotating masses balanced M1V = m·r·ω²·d, M1H = 0. PRU divides by the power: 50 kW."""
+    the cylinder axis). Counterweights carrying m_rot + c·m per throw turn against the first and
+    cancel −d·c·m·r·ω²·e^{iθ} of it: what stays is (1 − c)·m·cos θ along the axis and c·m·sin θ
+    across it, so M1V = (1 − c)·m·r·ω²·d and M1H = c·m·r·ω²·d. As the crank stands (no
+    counterweights) M1V = (m + m_rot)·r·ω²·d and M1H = m_rot·r·ω²·d. With m = 0.5 kg and
+    m_rot = 0.3 kg: standard (c = ½) 0.25, 0.25; rotating (c = 0) 0.5, 0; crank 0.8, 0.3;
+    c = 0.3 gives 0.35, 0.15 (in units of r·ω²·d). PRU divides by the power: 50 kW."""
     text = TWIN.replace('reciprocating = "500 g"', 'reciprocating = "500 g"\nrotating = "300 g"')
     engine = balance.loads('power = "50 kW"\n' + text)
     unit = 0.040 * (3000 * math.pi / 30) ** 2 * 0.090  # r·ω²·d
-    pru = balance.analyse(engine).to_dict()["pru"]
-    built, balanced = pru["orders"][0], pru["first_order_balanced"]
+    result = balance.analyse(engine)
+    pru = result.to_dict()["pru"]
+    by_hand = {"standard": (0.25, 0.25), "rotating": (0.5, 0.0), "crank": (0.8, 0.3)}
+    assert pru["first_order_balance"]["name"] == "standard"
+    assert pru["first_order_balance"]["balance_factor"] == 0.5
+    for name, (v, h) in by_hand.items():
+        entry = pru["first_order"][name]
+        # atol: the zero horizontal moment of "rotating" is rounding of 3e-2 N·m phasors
+        assert_allclose(
+            [entry["vertical_Nm"], entry["horizontal_Nm"]],
+            [v * unit, h * unit],
+            rtol=1e-9,
+            atol=1e-12 * unit,
+        )
+    first = pru["orders"][0]
+    assert_allclose([first["vertical_Nm"], first["horizontal_Nm"]], [0.25 * unit] * 2, rtol=1e-9)
+    assert_allclose(first["vertical_Nm_per_kW"], 0.25 * unit / 50.0, rtol=1e-9)
+    own = result.power_related_unbalance(balance=0.3).orders[0]
     assert_allclose(
-        [built["vertical_Nm"], built["horizontal_Nm"]], [0.8 * unit, 0.3 * unit], rtol=1e-9
+        [own["vertical_Nm"], own["horizontal_Nm"]], [0.35 * unit, 0.15 * unit], rtol=1e-9
     )
-    assert_allclose(balanced["vertical_Nm"], 0.5 * unit, rtol=1e-9)
-    assert balanced["horizontal_Nm"] == 0.0
-    assert_allclose(built["vertical_Nm_per_kW"], 0.8 * unit / 50.0, rtol=1e-9)
+    named = balance.power_related_unbalance(result, balance=0.0)
+    assert named.balance.name == "rotating" and named.orders[0] == pru["first_order"]["rotating"]
+
+
+def test_first_order_balance_on_the_command_line_and_its_refusals(tmp_path):
+    """--first-order-balance picks the first order of compare's PRU; bad values are one
+    line naming the option."""
+    text = TWIN.replace('reciprocating = "500 g"', 'reciprocating = "500 g"\nrotating = "300 g"')
+    unit = 0.040 * (3000 * math.pi / 30) ** 2 * 0.090
+    twin = write(tmp_path, 'power = "50 kW"\n' + text)
+    for value, (v, h) in (("crank", (0.8, 0.3)), ("0.3", (0.35, 0.15)), ("rotating", (0.5, 0))):
+        out = invoke("compare", twin, "--first-order-balance", value, "--format", "json")
+        assert out.exit_code == 0, out.output
+        first = json.loads(out.output)["engines"][0]["pru"]["orders"][0]
+        assert_allclose(
+            [first["vertical_Nm"], first["horizontal_Nm"]],
+            [v * unit, h * unit],
+            rtol=1e-9,
+            atol=1e-12 * unit,
+        )
+    for bad in ("1.5", "-0.1", "half", "nan"):
+        target = tmp_path / "x.json"
+        out = invoke("compare", MARINE, "--first-order-balance", bad, "--output", target)
+        assert out.exit_code == 1 and "--first-order-balance" in out.output, out.output
+        assert not target.exists()
+        assert "Traceback" not in out.output and len(out.output.strip().splitlines()) == 1
+    for bad in (True, 2, "x", None, [0.5]):
+        with pytest.raises(balance.AnalysisError, match="first_order_balance"):
+            balance.first_order_balance(bad)
 
 
 def test_indicated_power_is_the_mean_gas_torque_times_the_speed():
@@ -149,7 +195,11 @@ def test_no_power_no_table_and_a_rotary_has_no_balanced_first_order():
             "compare", CONFIGS / "clerget-rotary.toml", "--power", "97 kW", "--format", "json"
         ).output
     )["engines"][0]
-    assert record["pru"]["first_order_balanced"] is None
+    # a rotary's crank does not turn: no counterweights, so its first order as it stands
+    pru = record["pru"]
+    assert pru["first_order"]["standard"] is None and pru["first_order"]["rotating"] is None
+    assert pru["first_order_balance"]["name"] == "crank"
+    assert pru["orders"][0] == pru["first_order"]["crank"]
 
 
 def test_milliwatts_and_megawatts_are_not_guessed():

@@ -52,8 +52,9 @@ def test_spectrum_gives_every_engine_its_own_colour_and_aligns_its_panels(librar
     assert force.get_xlim() == moment.get_xlim() == (0.5, 8.5)
     # over both panels: an engine may have bars in one only (the MAN B&W 7S80MC-C7, an in-line
     # seven, has no free force below the 14th order, only moments), or none above the panels'
-    # floors, and then no colour on the axes: in configs/today the flat 12 has nothing in any
-    # order and the boxer 6 only a sixth-order couple of 0.17 N·m, under the moment floor
+    # floors, and then no colour on the axes: in configs/today the flat 12 and the H16 (two
+    # flat-eights on flat cranks) have nothing in any order and the boxer 6 only a sixth-order
+    # couple of 0.17 N·m, under the moment floor
     faces = {
         tuple(np.round(c.get_facecolor()[0][:3], 6))
         for ax in (force, moment)
@@ -68,8 +69,12 @@ def test_spectrum_gives_every_engine_its_own_colour_and_aligns_its_panels(librar
     ]
     assert len(library) == len(balance.find_configs([CONFIGS]))
     hidden = {e["name"] for e in data["engines"]} - {e["name"] for e in shown}
-    assert hidden == {"Flat 12, 180° V (Ferrari 512 BB)", "Boxer 6 (Porsche 9A1 3.8)"}
-    assert len(faces) == len(shown) == len(library) - 2
+    assert hidden == {
+        "Flat 12, 180° V (Ferrari 512 BB)",
+        "Boxer 6 (Porsche 9A1 3.8)",
+        "BRM H16 (two flat-8s geared)",
+    }
+    assert len(faces) == len(shown) == len(library) - 3
     # every bar of order 1 lies inside the axis
     for ax in (force, moment):
         for collection in ax.collections:

@@ -185,6 +185,8 @@ def test_records_and_json_keys(tmp_path):
         "kind": "length",
         "unit_SI": "m",
         "file_value": "140 mm",
+        "changes": ["rod_length"],
+        "meaning": None,
         "values": list(result.values),
         "values_SI": list(result.values_si),
     }
@@ -235,6 +237,8 @@ def test_schema_covers_every_key_of_the_configuration_format():
     text_or_tables = {
         "name",
         "source",
+        "sources",
+        "estimates",
         "frame",
         "firing_order",
         "masses",
@@ -314,15 +318,6 @@ def test_a_key_that_changes_nothing_is_refused():
     assert caught.value.parameter == "parameter"
 
 
-def test_progress_is_reported_point_by_point(tmp_path):
-    path = write(tmp_path, TWIN)
-    calls = []
-    balance.sweep(
-        path, "speed", span("1000 rpm", "2000 rpm", 3), progress=lambda *a: calls.append(a)
-    )
-    assert calls == [(1, 3), (2, 3), (3, 3)]
-
-
 def test_the_readme_example_runs_as_written(monkeypatch):
     text = (ROOT / "README.md").read_text(encoding="utf-8")
     section = text[text.index("## Parameter sweeps") : text.index("## Python API")]
@@ -350,3 +345,92 @@ def test_overrides_set_other_keys_at_every_point(tmp_path):
         with pytest.raises(balance.SweepError) as caught:
             balance.sweep(path, "rod_length", ["140 mm"], overrides=overrides)
         assert caught.value.parameter == "overrides"
+
+
+MARINE = CONFIGS / "marine-6-2stroke.toml"  # 14 280 kW at 105 rpm, no [gas] table
+
+
+def test_power_sweep_divides_the_moment(tmp_path):
+    # `sweep --vary power` ended in KeyError 'power': PRU = M / P (kW), P as written
+    powers_kw = [10000.0, 14280.0, 20000.0]
+    result = balance.sweep(MARINE, "power", [f"{p:g} kW" for p in powers_kw], "PRU2V,M2V,PRU1H")
+    assert result.parameter.unit_si == "W"
+    assert_allclose(result.values_si, np.array(powers_kw) * 1e3, rtol=1e-15, atol=0)
+    moment = result.series("M2V")
+    assert moment[0] > 0 and np.all(moment == moment[0])  # the power moves no mass
+    assert_allclose(result.series("PRU2V"), moment / powers_kw, rtol=1e-12, atol=0)
+    json.dumps(result.to_dict(), allow_nan=False)
+    with pytest.raises(balance.SweepError, match="power changes only the power related"):
+        balance.sweep(MARINE, "power", ["1 MW"])
+
+
+def test_the_files_power_stays_at_the_files_speed(tmp_path):
+    # the file's 14 280 kW is given at 105 rpm: at 80 rpm (overrides, the CLI's --speed) the PRU
+    # has no power, and saying so beats dividing by the power of another speed
+    at_file = balance.sweep(MARINE, "rod_length", ["2900 mm", "3000 mm"], "PRU2V")
+    with pytest.raises(balance.SweepError) as caught:
+        balance.sweep(
+            MARINE, "rod_length", ["2900 mm", "3000 mm"], "PRU2V", overrides={"speed": "80 rpm"}
+        )
+    assert caught.value.parameter == "overrides"
+    assert "given at 105 rpm" in str(caught.value) and "set the power" in str(caught.value)
+    # with the power at 80 rpm given too: the moment falls as the speed squared
+    at_80 = balance.sweep(
+        MARINE,
+        "rod_length",
+        ["2900 mm", "3000 mm"],
+        "PRU2V",
+        overrides={"speed": "80 rpm", "power": "8000 kW"},
+    )
+    expected = at_file.series("PRU2V") * (80 / 105) ** 2 * 14280 / 8000
+    assert_allclose(at_80.series("PRU2V"), expected, rtol=1e-12, atol=0)
+    # a speed sweep carries no power to other speeds: the point at 80 rpm is refused
+    with pytest.raises(balance.SweepError) as caught:
+        balance.sweep(MARINE, "speed", ["105 rpm", "80 rpm"], "PRU2V")
+    assert caught.value.value == "80 rpm"
+    assert "needs the power at the point's speed, 80 rpm, but the power is given at 105 rpm" in (
+        str(caught.value)
+    )
+    # ... and a power given with the overrides is given at the overrides' speed
+    with pytest.raises(balance.SweepError, match="given at 105 rpm"):
+        balance.sweep(MARINE, "speed", ["105 rpm", "80 rpm"], "PRU2V", overrides={"power": "1 MW"})
+
+
+def test_a_grid_of_speed_and_power(tmp_path):
+    # each point's power is given at its own speed: PRU = M(n) / P, M ∝ n²
+    speeds, powers = [80.0, 105.0], [8000.0, 14280.0]
+    grid = balance.sweep_grid(
+        MARINE,
+        ["speed", "power"],
+        [[f"{n:g} rpm" for n in speeds], [f"{p:g} kW" for p in powers]],
+        "PRU2V",
+    )
+    at_file = balance.sweep(MARINE, "rod_length", ["2900 mm"], "PRU2V").series("PRU2V")[0]
+    expected = [[at_file * (n / 105) ** 2 * 14280 / p for p in powers] for n in speeds]
+    assert_allclose(grid.grid("PRU2V"), expected, rtol=1e-12, atol=0)
+
+
+@pytest.mark.parametrize(
+    "keyword, value, error",
+    [
+        ("load", "x", "load"),
+        ("load", None, "load"),
+        ("overrides", 5, "overrides"),
+        ("overrides", ["speed"], "overrides"),
+        ("overrides", {"speed": 5}, "overrides"),
+        ("overrides", {3: "x"}, "overrides"),
+        ("overrides", {"balance_factor": 0.5}, "overrides"),
+        ("progress", "x", "progress"),
+        ("progress", 5, "progress"),
+        ("inertia_kgm2", -1.0, "inertia_kgm2"),
+        ("inertia_kgm2", "x", "inertia_kgm2"),
+    ],
+)
+def test_every_keyword_is_checked_before_any_work(tmp_path, keyword, value, error):
+    # API arguments were accepted silently (load) or failed late with Python's own errors
+    # (overrides=5: AttributeError; progress='x': TypeError after the whole sweep)
+    path = write(tmp_path, TWIN)
+    with pytest.raises(balance.SweepError) as caught:
+        balance.sweep(path, "rod_length", ["140 mm"], "F2", **{keyword: value})
+    assert caught.value.parameter == error
+    assert "\n" not in str(caught.value)

@@ -48,6 +48,14 @@ def test_every_erratum_is_used_and_the_known_ones_are_all_checked():
     )
 
 
+def test_our_own_errors_point_at_records_that_now_agree():
+    by_id = {r.id: r for r in ROWS}
+    for error in evaluate.own_errors():
+        assert error["records"], error["id"]
+        for record in error["records"]:
+            assert record in by_id and by_id[record].agrees, (error["id"], record)
+
+
 def test_enough_figures_per_paper():
     counts = {}
     for row in ROWS:

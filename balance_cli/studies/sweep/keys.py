@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 from ...errors import SweepError
 from ...units import DIMENSIONS
+from .derived import DERIVED, Derived
 
 __all__ = [
     "SCHEMA",
@@ -23,6 +24,7 @@ __all__ = [
     "Parameter",
     "parameter_of",
     "NUMBER_TEXT",
+    "DERIVED",
 ]
 
 #: kinds of value that are not a dimension of :data:`balance_cli.units.DIMENSIONS`
@@ -113,6 +115,7 @@ _SI_UNITS = {
     "moment of inertia": "kg*m^2",
     "pressure": "Pa",
     "torque": "N*m",
+    "power": "W",
     "unbalance": "kg*m",
     ANGLE: "rad",
     NUMBER: "",
@@ -141,13 +144,51 @@ class Parameter:
     path : tuple
         where the key sits in the parsed TOML: names, and 0-based indices into arrays
     file_value : object
-        the value the file gives (None when the key is added, or for balance_factor)
+        the value the file gives (None when the key is added, or for balance_factor); of a
+        derived parameter, the value the file's keys give it
+    derived : Derived or None
+        for ``rod_ratio``, ``stroke`` and ``bore_pitch``: how it is computed and set
     """
 
     key: str
     kind: str
     path: tuple
     file_value: object = None
+    derived: Derived | None = None
+
+    @property
+    def changes(self) -> tuple:
+        """The keys a value sets (``[]`` standing for any table's number): the key itself, a
+        derived parameter's keys, none for balance_factor."""
+        if self.derived is not None:
+            return self.derived.changes
+        return () if self.kind == FRACTION else (self.key,)
+
+    @property
+    def meaning(self) -> str | None:
+        """What a derived parameter or balance_factor is and sets; None for a file's key."""
+        if self.derived is not None:
+            return self.derived.meaning
+        if self.kind == FRACTION:
+            return (
+                "balance factor of classic per-throw counterweights (the rotating masses "
+                "plus this fraction of the reciprocating ones); changes no key"
+            )
+        return None
+
+    @property
+    def rank(self) -> int:
+        """Order of setting at a point: the file's keys first, then derived parameters
+        (after those setting a key they read)."""
+        return 0 if self.derived is None else self.derived.rank
+
+    def conflicts(self, other: "Parameter") -> str | None:
+        """A key both this and ``other`` set, or None."""
+        for mine in self.changes:
+            for theirs in other.changes:
+                if mine == theirs or _generic(mine) == theirs or mine == _generic(theirs):
+                    return mine if "[]" not in mine else theirs
+        return None
 
     @property
     def in_file(self) -> bool:
@@ -161,6 +202,11 @@ class Parameter:
     @property
     def takes_units(self) -> bool:
         return self.kind in DIMENSIONS
+
+
+def _generic(key):
+    """``throws[2].z`` -> ``throws[].z``: the pattern a derived parameter's keys are named by."""
+    return re.sub(r"\[\d+\]", "[]", key)
 
 
 def _segments(key):
@@ -229,8 +275,9 @@ def _refused(text, problem, data, path, listing=True):
     has = ", ".join(_compressed(present))
     more = f"; it may add {', '.join(addable)}" if addable else ""
     return SweepError(
-        f"{text!r}: {problem}; {path} has {has}{more}, and there is "
-        "balance_factor (of the counterweights)",
+        f"{text!r}: {problem}; {path} has {has}{more}, and there are "
+        f"{', '.join(DERIVED)} (derived from those keys) and balance_factor (of the "
+        "counterweights)",
         "parameter",
     )
 
@@ -239,13 +286,15 @@ def parameter_of(data: dict, key: str, path: str = "<config>") -> Parameter:
     """The :class:`Parameter` for configuration ``key`` in the parsed configuration ``data``.
 
     A key the format allows but the file leaves out (``pin_offset``, ``masses.rotating``) is
-    added at each point; a key of a table the file does not have is refused.
+    added at each point; a key of a table the file does not have is refused. ``rod_ratio``,
+    ``stroke`` and ``bore_pitch`` are derived from the file's keys (see :mod:`.derived`).
 
     Raises
     ------
     SweepError
-        an unknown key, a key of text or a list, an index outside the file's array
-        (``parameter``); the message lists the keys there are
+        an unknown key, a key of text or a list, an index outside the file's array, a derived
+        parameter the engine does not define (``parameter``); the message lists the keys
+        there are, or says why
     """
     if not isinstance(key, str) or not key.strip():
         raise SweepError(
@@ -255,6 +304,10 @@ def parameter_of(data: dict, key: str, path: str = "<config>") -> Parameter:
     text = key.strip()
     if text == BALANCE_FACTOR:
         return Parameter(text, FRACTION, ())
+    if text in DERIVED:
+        derived = DERIVED[text]
+        # the file's own value, or the reason the engine has none (link rods, uneven throws)
+        return Parameter(text, derived.kind, (), derived.file_value(data, path), derived)
     segments = _segments(text)
     if segments is None or len(segments) > 2:
         raise _refused(

@@ -72,7 +72,7 @@ def papers():
     """Every paper file: its [paper] table, frames and figures."""
     out = []
     for path in sorted(HERE.glob("*.toml")):
-        if path.name == "errata.toml":
+        if path.name in ("errata.toml", "own_errors.toml"):
             continue
         data = tomllib.loads(path.read_text(encoding="utf-8"))
         data["file"] = path.name
@@ -82,6 +82,11 @@ def papers():
 
 def errata():
     return tomllib.loads((HERE / "errata.toml").read_text(encoding="utf-8"))["erratum"]
+
+
+def own_errors():
+    """balance's own errors, found against the published data and corrected."""
+    return tomllib.loads((HERE / "own_errors.toml").read_text(encoding="utf-8"))["error"]
 
 
 # ---------------------------------------------------------------- engines and variants
@@ -280,7 +285,9 @@ def _quantity(record, frames):
         intervals = _result(_variant(record), record).firing.intervals_deg
         return {"max": max(intervals), "min": min(intervals)}[words[1]]
     if kind == "lead":  # an opposed-piston bore's exhaust lead, degrees
-        return _lead(_variant(record), int(words[1]))
+        lead = _lead(_variant(record), int(words[1]))
+        # "lead N opposed": the opposed (second) piston's lead over the first
+        return (-lead) % 360.0 if words[2:] == ["opposed"] else lead
     if kind == "split":  # the angle between two throws' pins, degrees in [0, 360)
         engine = _variant(record)
         a, b = (engine.throws[int(w) - 1].phase_rad for w in words[1:3])
@@ -304,6 +311,8 @@ def _quantity(record, frames):
     if kind == "series":
         return _series_check(words[1], record)
     if kind == "pru":
+        if len(words) == 5 and words[3] == "/":  # "pru V 1 / 2": order 1's over order 2's
+            return _pru(record, words[1], int(words[2])) / _pru(record, words[1], int(words[4]))
         return _pru(record, words[1], int(words[2]))
     if kind == "torsion":
         return _torsion(words[1], int(words[2]), record.get("speeds_rpm"))
@@ -351,7 +360,8 @@ def _pru(record, part, k):
     :func:`power_related_unbalance` and the configuration's ``power``. With ``over`` (a second
     configuration), the ratio of the two engines' PRU: the project guides tabulate one engine
     type at several cylinder numbers, and a ratio cancels the maker's masses and dimensions
-    that are common to the family, leaving the firing orders and cylinder numbers."""
+    that are common to the family, leaving the firing orders and cylinder numbers. The first
+    order is judged under the project guides' standard balance (the library's default)."""
 
     def value(config):
         engine = _variant({**record, "config": config})
