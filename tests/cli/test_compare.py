@@ -301,3 +301,14 @@ def test_power_of_the_library_comparison():
     for bad in (0.0, -1.0, float("nan"), "12 MW", 1e300):
         with pytest.raises(balance.AnalysisError, match="power_w"):
             balance.compare([result], power_w=bad)
+
+
+def test_power_in_groups_that_are_not_threes_is_refused(tmp_path):
+    """'14 28 kW' is not fourteen hundred and twenty-eight: one line naming --power and the
+    rule, status 1, no traceback, no output file."""
+    before = snapshot(tmp_path)
+    result = invoke(
+        "compare", CONFIGS / "marine-6-2stroke.toml", "--power", "14 28 kW", "-o", tmp_path / "x"
+    )
+    check_refused(result, 1, "--power: cannot read '14 28 kW'", before, tmp_path)
+    assert "in groups of three" in result.stderr
