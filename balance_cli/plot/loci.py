@@ -23,6 +23,8 @@ __all__ = ["COINCIDE", "locus", "locus_points", "coinciding"]
 #: are then closer than a quarter of a line's width (1.6 pt on 6.7-inch axes), one hiding the
 #: other
 COINCIDE = 1e-3
+#: points of each locus the coincidence test compares
+_COMPARED = 512
 #: points of a dash of a coinciding curve
 _DASH_PT = 5.0
 
@@ -82,6 +84,10 @@ def coinciding(points, tolerance=COINCIDE):
     from the other curve (whatever crank angle it is reached at); a locus that is all zeros
     coincides with nothing (its legend says it has nothing)."""
     curves = [np.asarray(x) * 1j + np.asarray(y) for x, y in points]
+    # at most _COMPARED points a curve (a locus has 4 × samples, up to 262 144): a chord between
+    # them strays from a smooth curve by about (2π/512)²/8 = 2e-5 of its radius, far below the
+    # tolerance, and the distances of 512 × 512 points take 4 MB
+    thin = [c[:: max(1, math.ceil(len(c) / _COMPARED))] for c in curves]
     # bounding box and largest radius: two curves differ in each by no more than their
     # distance, so that those apart in any are apart without the full test
     boxes = [
@@ -89,7 +95,7 @@ def coinciding(points, tolerance=COINCIDE):
         for c in curves
     ]
     found: list[int | None] = []
-    for j, c in enumerate(curves):
+    for j in range(len(curves)):
         match = None
         for i in range(j):
             gap = tolerance * max(boxes[i][4], boxes[j][4])
@@ -98,8 +104,8 @@ def coinciding(points, tolerance=COINCIDE):
                 and boxes[i][4] > 0
                 and boxes[j][4] > 0
                 and np.abs(boxes[i] - boxes[j]).max() <= gap
-                and _distances(c, curves[i]).max() <= gap
-                and _distances(curves[i], c).max() <= gap
+                and _distances(thin[j], thin[i]).max() <= gap
+                and _distances(thin[i], thin[j]).max() <= gap
             ):
                 match = i
                 break
