@@ -17,6 +17,7 @@ __all__ = [
     "DIMENSIONS",
     "LIMITS",
     "STANDARD_GRAVITY",
+    "THOUSANDS_SEPARATORS",
     "parse_quantity",
     "check_finite_range",
     "rad_s_to_rpm",
@@ -128,9 +129,18 @@ LIMITS = {
     "torsional damping": (1e-9, 1e12, "N*m*s/rad", 1.0),
 }
 
-# ASCII digits only; any unit word, so that an unknown one is reported as a unit
+#: what may set the thousands of a number apart (SI, ISO 80000-1: a space, never a comma or a
+#: point), and the number from its unit: a space, a no-break space, a thin space or a narrow
+#: no-break space
+THOUSANDS_SEPARATORS = " \u00a0\u2009\u202f"
+_AS_SPACE = str.maketrans({c: " " for c in THOUSANDS_SEPARATORS})
+# ASCII digits only; the whole part's digits in groups of three, each set apart by one space
+# ("14 280", "1 000 000"), or not grouped at all; any unit word, so that an unknown one is
+# reported as a unit
 _QUANTITY = re.compile(
-    r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\s\d.+-].*?)\s*$", re.ASCII
+    r"^\s*([-+]?(?:\d{1,3}(?: \d{3})+(?:\.\d*)?|\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)"
+    r"\s*([^\s\d.+-].*?)\s*$",
+    re.ASCII,
 )
 _EXAMPLES = {
     "length": "82.5 mm",
@@ -156,7 +166,8 @@ def parse_quantity(text, dimension):
     Parameters
     ----------
     text : str
-        the value as written, e.g. ``"82.5 mm"``
+        the value as written, e.g. ``"82.5 mm"``; the whole part's digits may be grouped by
+        threes, each group set apart by one of :data:`THOUSANDS_SEPARATORS` (``"14 280 kW"``)
     dimension : str
         one of the keys of :data:`DIMENSIONS`
 
@@ -173,10 +184,13 @@ def parse_quantity(text, dimension):
     example = _EXAMPLES[dimension]
     if isinstance(text, bool) or not isinstance(text, str):
         raise UnitError(f'expected a string with a unit such as "{example}", got {text!r}')
-    match = _QUANTITY.match(text)
+    match = _QUANTITY.match(text.translate(_AS_SPACE))
     if not match:
-        raise UnitError(f'cannot read {text!r}: write a number and a unit, such as "{example}"')
-    number, written = float(match.group(1)), match.group(2)
+        raise UnitError(
+            f'cannot read {text!r}: write a number and a unit, such as "{example}" (thousands '
+            'may be set apart by spaces, in groups of three: "14 280 kW")'
+        )
+    number, written = float(match.group(1).replace(" ", "")), match.group(2)
     unit = _spelling(written)
     factors = DIMENSIONS[dimension]
     if unit not in factors:
@@ -272,11 +286,13 @@ class Scale:
     units: str = "N"
 
     @classmethod
-    def of(cls, absolute, units):
-        """The scale of the command-line options: any unit but N implies absolute forces; the
-        unit's name in any letter case."""
-        units = unit_system(units)
-        return cls(absolute=absolute or units != "N", units=units)
+    def of(cls, absolute, units=None):
+        """The scale of the command-line options: ``units`` None when none was chosen (forces
+        absolute only if ``absolute``, moments in N·m); any unit chosen, N too, means absolute
+        forces in it. The unit's name in any letter case."""
+        if units is None:
+            return cls(absolute=bool(absolute), units="N")
+        return cls(absolute=True, units=unit_system(units))
 
     @property
     def force_label(self) -> str:

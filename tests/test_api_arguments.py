@@ -81,6 +81,7 @@ def cases(w):
             "reference",
             [NAN, 3, [], object(), "no such engine"],
         ),
+        ("compare.power_w", lambda v: balance.compare([r], power_w=v), "power_w", NUMBERS),
         (
             "counterweights.engine",
             lambda v: balance.counterweights(v),
@@ -676,6 +677,7 @@ def test_the_good_values_the_cases_replace_work(world):
     ]
     assert balance.analyse(e, samples=np.int64(64), max_order=np.int64(8)).samples == 64
     assert balance.compare([r], reference=e.name).reference is not None
+    assert balance.compare([r], power_w=np.float64(5e4)).power_w == 5e4
     assert (
         len(
             balance.counterweights(

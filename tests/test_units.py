@@ -114,3 +114,39 @@ def test_wrap_and_round_degrees():
     assert wrap_degrees(179.9999999, 180.0) == 0.0 and wrap_degrees(179.99, 180.0) == 179.99
     assert wrap_degrees(-90.0) == 270.0 and wrap_degrees(725.0) == 5.0
     assert round_degrees(359.996, 2) == 0.0 and round_degrees(359.994, 2) == 359.99
+
+
+@pytest.mark.parametrize(
+    "text, dimension, si",
+    [
+        ("14 280 kW", "power", 14_280e3),
+        # 19 000 mechanical horsepower, 550 ft·lbf/s each: 19 000 × 550 × 0.3048 m ×
+        # 0.45359237 kg × 9.80665 m/s² = 14 168 297.56 W
+        ("19 000 hp", "power", 19_000 * 550 * 0.3048 * 0.45359237 * 9.80665),
+        ("19 000 PS", "power", 19_000 * 75 * 9.80665),  # metric: 75 kgf·m/s each
+        ("1 000 000 W", "power", 1e6),
+        ("14\u202f280\u202fkW", "power", 14_280e3),  # narrow no-break spaces (SI's)
+        ("14\u2009280 kW", "power", 14_280e3),  # a thin space
+        ("21\u00a0MW", "power", 21e6),  # a no-break space before the unit
+        ("-1 000.5 mm", "length", -1.0005),
+        ("2 500 rpm", "angular speed", 2500 * math.pi / 30),
+    ],
+)
+def test_thousands_set_apart_by_spaces(text, dimension, si):
+    assert_allclose(parse_quantity(text, dimension), si, rtol=1e-15)  # exact but for rounding
+
+
+@pytest.mark.parametrize(
+    "text", ["12 34 mm", "1 2345 mm", "14  280 mm", "1 000 00 mm", "1 0000 mm"]
+)
+def test_groups_that_are_not_threes_are_refused(text):
+    """A space inside a number only sets apart groups of three digits, one space each: "12 34"
+    is two numbers, not twelve hundred and thirty-four."""
+    with pytest.raises(balance.UnitError, match="in groups of three"):
+        parse_quantity(text, "length")
+
+
+def test_a_comma_is_no_thousands_separator():
+    """1,000 is a thousand in English and one in French: refused, as a unit it cannot read."""
+    with pytest.raises(balance.UnitError, match="unknown unit ',000 kW'"):
+        parse_quantity("1,000 kW", "power")

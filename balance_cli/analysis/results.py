@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import instance, items
+from ..checks import instance, items, positive
 from ..errors import AnalysisError
 from ..kinematics import check_assembly
 from ..model import Engine
@@ -192,16 +192,19 @@ class EngineResult:
         pru_classes=None,
         pru_orders=(1, 2),
         pru_balance=STANDARD_BALANCE,
+        power_w: float | None = None,
     ) -> dict:
         """This engine's entry of ``compare --format json`` (SI units; see the README).
 
         ``reference`` is the result the percentage refers to (default: this one, as in the
         comparison of a single engine); ``pru_classes`` the bounds of the power related
         unbalance's classes (default the project guides'), ``pru_orders`` the orders it
-        judges and ``pru_balance`` the first order's balance (default the guides' standard).
+        judges, ``pru_balance`` the first order's balance (default the guides' standard) and
+        ``power_w`` the power (W) at the speed analysed that the power related unbalance
+        refers to instead of the engine's own (its ``power_source`` is then "option").
         """
         pru = self.power_related_unbalance(
-            orders=pru_orders, classes=pru_classes, balance=pru_balance
+            power_w, orders=pru_orders, classes=pru_classes, balance=pru_balance
         )
         engine = self.engine
         return {
@@ -356,6 +359,8 @@ class Comparison:
     pru_classes: tuple | None = None
     pru_orders: tuple = (1, 2)
     pru_balance: FirstOrderBalance = STANDARD_BALANCE
+    #: the power (W) every engine's power related unbalance refers to, instead of its own
+    power_w: float | None = None
 
     @property
     def reference(self) -> EngineResult:
@@ -377,7 +382,13 @@ class Comparison:
             "max_order": self.max_order,
             "reference": self.reference.engine.name,
             "engines": [
-                r.to_dict(self.reference, self.pru_classes, self.pru_orders, self.pru_balance)
+                r.to_dict(
+                    self.reference,
+                    self.pru_classes,
+                    self.pru_orders,
+                    self.pru_balance,
+                    self.power_w,
+                )
                 for r in self.results
             ],
         }
@@ -389,15 +400,20 @@ def compare(
     pru_classes=None,
     pru_orders=None,
     pru_balance=STANDARD_BALANCE,
+    power_w: float | None = None,
 ) -> Comparison:
     """The comparison of analysed engines (:func:`analyse`, same settings); ``reference`` is
     the name (or a unique prefix) of the engine the percentages refer to, default the first;
     ``pru_classes`` the bounds of the power related unbalance's classes (N·m/kW; default the
     project guides' 60, 120, 220), ``pru_orders`` the orders it judges (default 1 and
-    2, those analysed) and ``pru_balance`` the first order's balance: "standard" (default:
+    2, those analysed), ``pru_balance`` the first order's balance: "standard" (default:
     the project guides', counterweights for the rotating masses and half the reciprocating
-    ones), "rotating", "crank" or a balance factor from 0 to 1."""
+    ones), "rotating", "crank" or a balance factor from 0 to 1; ``power_w`` the engines' power
+    at the speed analysed (W), which the power related unbalance refers to instead of each
+    engine's own (``compare --power``)."""
     results = tuple(items(results, EngineResult, "results"))
+    if power_w is not None:
+        power_w = positive(power_w, "power_w", "power")
     if reference is not None and not isinstance(reference, str):
         raise AnalysisError(
             f"must be an engine's name (a str) or None, got {reference!r}", "reference"
@@ -435,5 +451,5 @@ def compare(
         )
     pru_balance = first_order_balance(pru_balance)
     return Comparison(
-        results, find_reference(results, reference), pru_classes, pru_orders, pru_balance
+        results, find_reference(results, reference), pru_classes, pru_orders, pru_balance, power_w
     )

@@ -47,8 +47,8 @@ __all__ = ["compare", "compare_document"]
     default=None,
     metavar="POWER",
     help="The engines' power at the speed analysed (e.g. '14 280 kW', '21 MW', "
-    "'19 000 hp'), for the power related unbalance; default each file's power "
-    "(or its [gas] cycle's indicated power).",
+    "'19 000 hp'; hp mechanical, PS metric), for the power related unbalance; default "
+    "each file's power (or its [gas] cycle's indicated power).",
 )
 @click.option(
     "--pru-classes",
@@ -91,15 +91,19 @@ def compare(
     settings(samples, max_order)
     classes = None if pru_classes is None else numbers_option(pru_classes, "--pru-classes")
     orders = None if pru_orders is None else orders_option(pru_orders, "--pru-orders")
-    engines = _with_power(load_all(files, speed), power)
+    power_w = quantity_option(power, "--power", "power")
+    engines = load_all(files, speed)
     results = analyse_all(engines, samples, max_order)
     flags = {
         "pru_classes": "--pru-classes",
         "pru_orders": "--pru-orders",
         "first_order_balance": "--first-order-balance",
+        "power_w": "--power",
     }
     with reported(flags=flags):
-        comparison = comparison_of(results, reference, classes, orders, first_order_balance)
+        comparison = comparison_of(
+            results, reference, classes, orders, first_order_balance, power_w=power_w
+        )
     scale = Scale.of(absolute, units)
     emit(
         output,
@@ -117,15 +121,3 @@ def compare_document(comparison, overridden=None):
     if overridden:
         document["speed_override_rpm"] = rad_s_to_rpm(overridden[0].speed_rad_s)
     return document
-
-
-def _with_power(engines, power):
-    """The engines with --power as their power at the speed they are analysed at."""
-    if power is None:
-        return engines
-    power_w = quantity_option(power.replace("\u202f", " "), "--power", "power")
-    out = []
-    for engine in engines:
-        with reported(engine):
-            out.append(engine.replace(power_w=power_w, power_speed_rad_s=engine.speed_rad_s))
-    return out

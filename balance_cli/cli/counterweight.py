@@ -6,7 +6,7 @@ import click
 
 from ..analysis.balancing import Balances
 from ..analysis.counterweight import check_options, counterweights
-from ..config import as_built_toml, read_configuration
+from ..config import WRITE_DIGITS, as_built_toml, read_configuration
 from ..report.counterweight import balance_tables
 from ..report.csvfile import balance_csv
 from ..units import Scale
@@ -91,7 +91,8 @@ __all__ = ["counterweight"]
     metavar="FILE.toml",
     help="Write the engine's configuration (one input file) with the proposed "
     "counterweights added as [[counterweights]] and, with --shafts, the proposed "
-    "shafts as [[shafts]]: loading it gives the residual reported here. Atomic.",
+    "shafts as [[shafts]], named 'NAME, balanced' and to 12 significant digits: loading "
+    "it gives the residual reported here. Atomic.",
 )
 @SAMPLES
 @MAX_ORDER
@@ -196,13 +197,16 @@ def counterweight(
     configuration = None
     if write_path is not None:
         # built before anything is written: a failure leaves no file and no report half done
-        with reported(balances[0].engine):
+        engine = balances[0].engine
+        with reported(engine):
             configuration = as_built_toml(
                 read_configuration(files[0]).data,
                 balances[0].configuration_tables(shafts=bool(orders)),
-                f"{balances[0].engine.name}, with the counterweights"
-                f"{' and shafts' if orders else ''}"
-                f" proposed by\nbalance counterweight added as built (from {files[0]}).",
+                f"{engine.name}, with the counterweights{' and shafts' if orders else ''}"
+                f" proposed by\nbalance counterweight added as built (from {files[0]}).\n"
+                f"Their figures are written to {WRITE_DIGITS} significant digits.",
+                # a name of its own: compared with the file it came from, it is another engine
+                name=f"{engine.name}, balanced",
             )
     if configuration is not None:
         write(write_path, configuration)

@@ -102,11 +102,10 @@ UNIT_CHOICE = Units()
 UNITS = click.option(
     "--units",
     type=UNIT_CHOICE,
-    default="N",
-    show_default=True,
-    help="Units of absolute forces and of moments, one system: N and N·m, kN and "
-    "kN·m, MN and MN·m, kgf and kgf·m, lbf and lbf·ft; any but N implies "
-    "--absolute. JSON stays SI.",
+    default=None,
+    help="Units of forces and moments, one system: N and N·m, kN and kN·m, MN and MN·m, "
+    "kgf and kgf·m, lbf and lbf·ft. Given (N too), it shows forces in it instead of "
+    "per cylinder  [default: forces per cylinder, moments in N·m]. JSON stays SI.",
 )
 SPEED = click.option(
     "--speed",

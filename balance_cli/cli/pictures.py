@@ -57,20 +57,22 @@ __all__ = ["plot", "report"]
     "--units",
     type=Units(["per-cylinder"]),
     default=None,
-    help="spectrum: units of the forces, default per-cylinder (N, kN, MN, kgf or lbf also "
-    "put moments in N·m, kN·m, MN·m, kgf·m or lbf·ft); torque: N (N·m, the "
-    "default), kN, MN, kgf or lbf.",
+    help="locus and spectrum: units of the forces, default per-cylinder (N, kN, MN, kgf or "
+    "lbf, N too, draw them absolute and put moments in N·m, kN·m, MN·m, kgf·m or lbf·ft); "
+    "torque: N (N·m, the default), kN, MN, kgf or lbf.",
 )
 @SAMPLES
 @MAX_ORDER
 @SPEED
 def plot(paths, kind, output, order, quantity, units, samples, max_order, speed):
     """Draw a picture of one or more engines (headless)."""
-    if units is not None and kind not in ("spectrum", "torque"):
-        raise click.UsageError(f"--units applies to --kind spectrum and torque only, not {kind}")
+    if units is not None and kind not in ("locus", "spectrum", "torque"):
+        raise click.UsageError(
+            f"--units applies to --kind locus, spectrum and torque only, not {kind}"
+        )
     if units == "per-cylinder" and kind == "torque":
         raise click.UsageError(
-            "--units per-cylinder applies to --kind spectrum only; torques "
+            "--units per-cylinder applies to --kind locus and spectrum only; torques "
             "are drawn in N·m (N) or kgf·m (kgf)"
         )
     if order is not None and kind not in ("locus", "star"):
@@ -101,7 +103,9 @@ def plot(paths, kind, output, order, quantity, units, samples, max_order, speed)
         results = analyse_all(engines, samples, max_order)
     with reported(), headless.drawing():
         if kind == "locus":
-            figure = drawing.locus(results, order, of=quantity or "force")
+            figure = drawing.locus(
+                results, order, of=quantity or "force", units=units or "per-cylinder"
+            )
         elif kind == "spectrum":
             figure = drawing.spectrum(results, units or "per-cylinder")
         elif kind == "star":
@@ -146,10 +150,10 @@ def plot(paths, kind, output, order, quantity, units, samples, max_order, speed)
 @click.option(
     "--units",
     type=UNIT_CHOICE,
-    default="N",
-    show_default=True,
-    help="Units of moments and torques (and of forces other than the per-cylinder "
-    "comparison): N, kN, MN, kgf or lbf with N·m, kN·m, MN·m, kgf·m or lbf·ft.",
+    default=None,
+    help="Units of forces, moments and torques, one system: N, kN, MN, kgf or lbf with N·m, "
+    "kN·m, MN·m, kgf·m or lbf·ft. Given (N too), the comparison's forces are in it "
+    "instead of per cylinder  [default: forces per cylinder, moments and torques in N·m].",
 )
 @SPEED
 @click.option(

@@ -30,7 +30,7 @@ from .files import (
 from .library import library_folder, resolve, templates_folder
 from .provenance import Note, Provenance, number_paths, read_provenance
 from .reader import parse_text, read_text
-from .write import arrangement_toml, as_built_toml
+from .write import WRITE_DIGITS, arrangement_toml, as_built_toml
 
 __all__ = [
     "load",
@@ -43,6 +43,7 @@ __all__ = [
     "read_configuration",
     "arrangement_toml",
     "as_built_toml",
+    "WRITE_DIGITS",
     "as_template",
     "read_text",
     "parse_text",

@@ -33,7 +33,7 @@ from .figure import (
 )
 from .firings import firing
 from .labels import STAR_LABEL_GAP_PT, STAR_LABEL_MIN_PT, STAR_LABEL_PT, place_labels
-from .loci import locus, locus_points
+from .loci import coinciding, locus, locus_points
 from .spectra import SPECTRUM_UNITS, spectrum, spectrum_data
 from .stars import STAR_TITLE_CHARS, star, star_chains
 from .sweep import axis_values, sweep_figure
@@ -53,6 +53,7 @@ __all__ = [
     "format_of",
     "grid_size",
     "locus_points",
+    "coinciding",
     "spectrum_data",
     "star_chains",
     "torque_data",

@@ -14,6 +14,7 @@ import numpy as np
 from ..checks import instance, items
 from ..errors import PlotError
 from ..output import write_bytes
+from ..units import UNIT_SYSTEMS, Scale
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -35,6 +36,8 @@ __all__ = [
     "short",
     "colours",
     "quantity",
+    "PICTURE_UNITS",
+    "picture_scale",
     "format_of",
     "save",
 ]
@@ -115,6 +118,19 @@ def quantity(of):
     if of not in QUANTITIES:
         raise PlotError(f"must be one of {', '.join(QUANTITIES)}, got {of!r}", "of")
     return of
+
+
+#: what the force pictures (locus, spectrum) are drawn in: per cylinder (× m_rec·r·ω²·n, with
+#: moments in N·m), or one system of units for forces and moments alike
+PICTURE_UNITS = ("per-cylinder",) + tuple(UNIT_SYSTEMS)
+
+
+def picture_scale(units) -> Scale:
+    """The :class:`~balance_cli.units.Scale` of a picture's ``units``, one of
+    :data:`PICTURE_UNITS`: "per-cylinder", or a system of units (absolute forces, N too)."""
+    if units not in PICTURE_UNITS:
+        raise PlotError(f"must be one of {', '.join(PICTURE_UNITS)}, got {units!r}", "units")
+    return Scale.of(False, None if units == "per-cylinder" else units)
 
 
 def format_of(path: "str | os.PathLike[str]") -> str:

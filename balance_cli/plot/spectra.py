@@ -7,10 +7,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..errors import PlotError
 from ..tolerances import SPECTRUM_FLOOR
-from ..units import UNIT_SYSTEMS, Scale
-from .figure import colours, engine_results, new_figure, short
+from .figure import PICTURE_UNITS, colours, engine_results, new_figure, picture_scale, short
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -19,7 +17,7 @@ if TYPE_CHECKING:
 
 __all__ = ["SPECTRUM_UNITS", "spectrum", "spectrum_data"]
 
-SPECTRUM_UNITS = ("per-cylinder",) + tuple(UNIT_SYSTEMS)
+SPECTRUM_UNITS = PICTURE_UNITS
 
 
 def spectrum_data(results, units="per-cylinder"):
@@ -29,12 +27,8 @@ def spectrum_data(results, units="per-cylinder"):
     ``units``: "per-cylinder" (forces × m_rec·r·ω²·n, moments N·m), or a system of units
     (:data:`~balance_cli.units.UNIT_SYSTEMS`: "N" for N and N·m, "kN", "MN", "kgf", "lbf").
     """
-    if units not in SPECTRUM_UNITS:
-        raise PlotError(f"must be one of {', '.join(SPECTRUM_UNITS)}, got {units!r}", "units")
+    scale = picture_scale(units)
     chosen = engine_results(results)
-    scale = Scale.of(
-        absolute=units != "per-cylinder", units="N" if units == "per-cylinder" else units
-    )
     engines = []
     for r in chosen:
         unit = r.per_cylinder_unit_n

@@ -10,8 +10,17 @@ __all__ = ["PERCENT_LIMIT", "compare_parts", "compare_tables"]
 
 
 def _shortened(name, length=24):
-    """A name short enough for a column heading."""
-    return name if len(name) <= length else name[: length - 1].rstrip() + "…"
+    """A name short enough for a column heading: whole words, as many as fit in ``length``
+    characters with the "…" that marks the cut; a first word longer than that is given
+    whole (never cut inside a word)."""
+    if len(name) <= length:
+        return name
+    head = name[: length - 1]
+    if not name[length - 1].isspace():
+        head = head[: max(head.rfind(" "), 0)]
+    # "In-line 3, two-stroke, ..." reads better cut before the comma than after it
+    head = head.rstrip(" ,;:(")
+    return head + "…" if head else name
 
 
 #: a share of the reference above this many per cent is shown as a ratio (×62, not 6200 %)

@@ -163,10 +163,12 @@ def order_parts(entries, scale, samples):
 
 
 def intervals(firing):
+    """A firing's intervals as a cell: "every 180" when uniform, else the sequence in firing
+    order from the first cylinder of the order, to 0.1° ("270-180-90-180")."""
     mean = sum(firing["intervals_deg"]) / len(firing["intervals_deg"])
     if firing["uniform"]:
         return f"every {mean:g}"
-    return f"{min(firing['intervals_deg']):.1f} to {max(firing['intervals_deg']):.1f}"
+    return "-".join(f"{round(gap, 1) + 0.0:g}" for gap in firing["intervals_deg"])
 
 
 def pru_text(entry, side):

@@ -127,6 +127,62 @@ def _number(value):
     return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
 
 
+#: what a regression table reads of each engine of a baseline, by the version that wrote it:
+#: its own keys, those of its firing, those of each order's force and moment with {u} the
+#: unit, N or Nm; version 2 added the moments' largest values, the vertical and the vertical
+#: and horizontal components of every order
+_V1_ENGINE = (
+    "name",
+    "config",
+    "cylinders",
+    "cycle",
+    "frame",
+    "speed_rpm",
+    "unit_force_N",
+    "largest_resultant_N",
+    "counterweighted_resultant_N",
+    "sampling_ok",
+    "firing",
+    "orders",
+)
+_FIRING = ("order", "angles_deg", "uniform")
+_V1_PART = (
+    "forward_{u}",
+    "forward_deg",
+    "backward_{u}",
+    "backward_deg",
+    "max_{u}",
+    "min_{u}",
+    "axis_deg",
+)
+_NEEDED: dict[int, tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]]] = {
+    1: (_V1_ENGINE, _FIRING, _V1_PART),
+    2: (
+        _V1_ENGINE + ("largest_moment_Nm", "counterweighted_moment_Nm", "vertical_deg"),
+        _FIRING,
+        _V1_PART + ("vertical_{u}", "vertical_deg", "horizontal_{u}", "horizontal_deg"),
+    ),
+}
+#: the numbers among an engine's keys (resultants, moments, speed, the vertical)
+_ENGINE_NUMBERS = (
+    "speed_rpm",
+    "largest_resultant_N",
+    "counterweighted_resultant_N",
+    "largest_moment_Nm",
+    "counterweighted_moment_Nm",
+    "vertical_deg",
+)
+
+
+def _missing(record, keys):
+    """The keys of ``keys`` that ``record`` lacks, in their order."""
+    return [key for key in keys if key not in record]
+
+
+def _lacks(keys):
+    return f"lacks {', '.join(repr(k) for k in keys)}, which balance regress compares"
+
+
 def _fail(where, problem):
     raise RegressError(
         f"{where}: {problem}; write the baseline again with balance compare "
@@ -160,18 +216,23 @@ def check_baseline(document, path="<baseline>"):
     engines = document["engines"]
     if not isinstance(engines, list) or not engines:
         _fail(path, "lists no engines")
+    # a later version than those listed reads at least the latest's keys
+    engine_keys, firing_keys, part_keys = _NEEDED[max(v for v in _NEEDED if v <= version)]
     names = []
     for i, engine in enumerate(engines, 1):
         where = f"{path}: engines[{i}]"
         if not isinstance(engine, dict):
             _fail(where, "is not an object")
-        missing = sorted(
-            {"name", "config", "cylinders", "unit_force_N", "firing", "orders"} - set(engine)
-        )
+        if isinstance(engine.get("name"), str):
+            where += f" ({engine['name']!r})"
+        missing = _missing(engine, engine_keys)
         if missing:
-            _fail(where, f"lacks {', '.join(missing)}")
+            _fail(where, _lacks(missing))
         if not isinstance(engine["name"], str) or not isinstance(engine["config"], str):
             _fail(where, "has a name or config that is not text")
+        odd = [k for k in _ENGINE_NUMBERS if k in engine_keys and not _number(engine[k])]
+        if odd:
+            _fail(where, f"has {', '.join(repr(k) for k in odd)} that is not a finite number")
         if (
             not _number(engine["unit_force_N"])
             or not _number(engine["cylinders"])
@@ -180,10 +241,13 @@ def check_baseline(document, path="<baseline>"):
         ):
             _fail(where, "has no positive unit_force_N and cylinders")
         firing = engine["firing"]
+        if isinstance(firing, dict) and _missing(firing, firing_keys):
+            _fail(f"{where} firing", _lacks(_missing(firing, firing_keys)))
         if (
             not isinstance(firing, dict)
             or not isinstance(firing.get("order"), list)
-            or not all(_number(a) for a in firing.get("angles_deg", []))
+            or not isinstance(firing.get("angles_deg"), list)
+            or not all(_number(a) for a in firing["angles_deg"])
         ):
             _fail(where, "has no firing order and angles")
         orders = engine["orders"]
@@ -206,6 +270,10 @@ def check_baseline(document, path="<baseline>"):
                     "has an order that is not {order, force: {...}, moment: {...}} of "
                     "finite numbers (an axis may be null)",
                 )
+            for part, unit in (("force", "N"), ("moment", "Nm")):
+                missing = _missing(o[part], [k.format(u=unit) for k in part_keys])
+                if missing:
+                    _fail(f"{where} order {o['order']:g} {part}", _lacks(missing))
         listed = [o["order"] for o in orders]
         if len(set(listed)) != len(listed):
             _fail(where, "lists an order twice")

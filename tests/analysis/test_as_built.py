@@ -540,6 +540,58 @@ def test_balance_factor_counts_the_built_counterweights(tmp_path):
     assert_allclose([w["mass_kg"] for w in weights], [0, 0], atol=1e-12)
 
 
+TWIN_180 = textwrap.dedent("""\
+    name = "180° twin"
+    cycle = 4
+    speed = "8000 rpm"
+    crank_radius = "30 mm"
+    rod_length = "110 mm"
+    firing_order = [1, 2]
+
+    [masses]
+    reciprocating = "0.45 kg"
+
+    [[banks]]
+    angle = 0
+
+    [[throws]]
+    phase = 0
+    z = "0 mm"
+    [[throws]]
+    phase = 180
+    z = "93 mm"
+""")
+
+
+def test_written_file_has_its_own_name_and_the_figures_to_twelve_digits(tmp_path):
+    """A 180° twin with reciprocating masses only (0.45 kg, r = 30 mm, d = 93 mm). By hand:
+    each cylinder's forward first order is m·r·ω²/2 turning with its own pin, so a
+    counterweight on each throw's plane of m/2 = 0.225 kg at crank radius, 180° from its
+    pin, cancels the forward first-order force and couple. The analysis computes
+    0.22499999999999998 kg; the file says 0.225 kg (twelve significant digits), under the
+    name "180° twin, balanced", so compare takes it beside the original. Read back, each
+    mass is within half a unit of the twelfth digit (5e-12) of the analysed one, and the
+    forward first order it leaves within 1e-11 of the m/2·r·ω² each weight cancels (two
+    such roundings) of zero."""
+    entry, result, loaded = written_matches_report(tmp_path, TWIN_180)
+    target = tmp_path / "balanced.toml"
+    text = target.read_text(encoding="utf-8")
+    assert text.count('mass = "0.225 kg"') == 2 and "0.22499999" not in text
+    assert loaded.name == "180° twin, balanced"
+    analysed = [w["mass_kg"] for w in entry["counterweights"]]
+    assert_allclose(analysed, [0.225, 0.225], rtol=1e-12)  # the hand answer
+    assert_allclose(
+        [w.mass_radius_kgm / w.radius_m for w in loaded.counterweights], analysed, rtol=5e-12
+    )
+    cancelled = 0.225 * 0.03 * (8000 * math.pi / 30) ** 2
+    assert abs(result.order(1).force_forward) <= 1e-11 * cancelled
+    assert abs(result.order(1).moment_forward) <= 1e-11 * cancelled * 0.093
+    both = invoke("compare", tmp_path / "engine.toml", target, "--format", "json")
+    assert both.exit_code == 0, both.output
+    names = [e["name"] for e in json.loads(both.output)["engines"]]
+    assert names == ["180° twin", "180° twin, balanced"]
+
+
 @pytest.mark.parametrize(
     "extra, words",
     [

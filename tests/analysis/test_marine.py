@@ -139,7 +139,7 @@ def test_a_power_given_at_another_speed_is_not_used_unless_given_again():
             "compare", MARINE, "--speed", "90 rpm", "--power", "12000 kW", "--format", "json"
         ).output
     )["engines"][0]
-    assert given["pru"]["power_source"] == "given" and given["power_kW"] == 12000.0
+    assert given["pru"]["power_source"] == "option" and given["power_kW"] == 12000.0
     # the moment follows n²: (90/105)² of the file speed's
     fast = balance.analyse(balance.load(MARINE)).to_dict()["pru"]["orders"][1]["vertical_Nm"]
     assert_allclose(given["pru"]["orders"][1]["vertical_Nm"], fast * (90 / 105) ** 2, rtol=1e-12)

@@ -97,7 +97,7 @@ def test_compare_table_markdown_csv():
 def test_reference_by_prefix_changes_the_percentages():
     result = invoke("compare", PART3, "--reference", "60° W12,")
     assert result.exit_code == 0, result.output
-    assert "% of 60° W12, link rods on t…" in result.output
+    assert "% of 60° W12, link rods on…" in result.output  # at a word
 
 
 def test_ambiguous_reference_lists_only_the_matches(tmp_path):
@@ -208,3 +208,107 @@ def test_percentages_beyond_a_thousand_are_ratios(twin):
         if line.startswith("test twin")
     ][0]
     assert "×" in row and " %" not in row
+
+
+CROSS_PLANE_4 = """\
+name = "Cross-plane in-line 4"
+cycle = 4
+speed = "10000 rpm"
+crank_radius = "26 mm"
+rod_length = "100 mm"
+firing_order = [1, 3, 2, 4]
+
+[masses]
+reciprocating = "300 g"
+
+[[banks]]
+angle = 0
+
+[[throws]]
+phase = 0
+z = "0 mm"
+[[throws]]
+phase = 270
+z = "80 mm"
+[[throws]]
+phase = 90
+z = "160 mm"
+[[throws]]
+phase = 180
+z = "240 mm"
+"""
+
+
+def test_uneven_intervals_are_printed_in_firing_order(tmp_path):
+    """A cross-plane in-line 4 (Yamaha's R1 crank) with throws 0, 270, 90, 180° firing
+    1-3-2-4. By hand: a cylinder on a throw of phase β reaches top dead centre at θ = −β
+    (mod 360°): cylinder 1 at 0° and 360°, 3 at 270° and 630°, 2 at 90° and 450°, 4 at 180°
+    and 540°. Each fires at its first TDC after the one before: 1 at 0, 3 at 270, 2 at 450, 4
+    at 540, and 1 again at 720: intervals 270, 180, 90, 180, printed as the sequence (the
+    table said "90.0 to 270.0")."""
+    path = tmp_path / "r1.toml"
+    path.write_text(CROSS_PLANE_4, encoding="utf-8")
+    for fmt in ("table", "markdown"):
+        result = invoke("compare", path, "--format", fmt)
+        assert result.exit_code == 0, result.output
+        row = next(line for line in result.output.splitlines() if "1-3-2-4" in line)
+        assert "270-180-90-180" in row and " to " not in row
+    firing = json.loads(invoke("compare", path, "--format", "json").output)["engines"][0]["firing"]
+    assert_allclose(firing["intervals_deg"], [270, 180, 90, 180], atol=1e-4)  # TDC search
+    # throws 0, 180, 0, 180 firing 1-2-3-4 (TDCs 0, 180, 360, 540): every 180° (a flat crank)
+    flat = CROSS_PLANE_4.replace("270", "180", 1).replace("phase = 90", "phase = 0")
+    path.write_text(flat.replace("[1, 3, 2, 4]", "[1, 2, 3, 4]"), encoding="utf-8")
+    row = next(line for line in invoke("compare", path).output.splitlines() if "1-2-3-4" in line)
+    assert row.rstrip().endswith("every 180")
+
+
+@pytest.mark.parametrize(
+    "power, kilowatts",
+    [
+        ("14 280 kW", 14_280.0),
+        # 19 000 mechanical horsepower of 550 ft·lbf/s: 19 000 × 745.69987158227 W
+        ("19 000 hp", 19_000 * 550 * 0.3048 * 0.45359237 * 9.80665 / 1e3),
+        ("14\u202f280 kW", 14_280.0),
+    ],
+)
+def test_power_option_as_its_help_writes_it(power, kilowatts):
+    """The help's own examples, thousands set apart by a space: read, and the power related
+    unbalance refers to them as given with the analysis ("option", shown "(--power)"), the
+    PRU being each moment over that power."""
+    marine = CONFIGS / "marine-6-2stroke.toml"
+    result = invoke("compare", marine, "--power", power, "--format", "json")
+    assert result.exit_code == 0, result.output
+    record = json.loads(result.output)["engines"][0]
+    assert_allclose(record["power_kW"], kilowatts, rtol=1e-15)
+    pru = record["pru"]
+    assert pru["power_source"] == "option"
+    second = next(e for e in pru["orders"] if e["order"] == 2)
+    assert_allclose(second["vertical_Nm_per_kW"], second["vertical_Nm"] / kilowatts, rtol=1e-14)
+    table = invoke("compare", marine, "--power", power).output
+    assert "(--power)" in table
+
+
+def test_power_of_the_library_comparison():
+    """balance.compare(power_w=...) is what --power passes; the engines keep their own power."""
+    import balance_cli as balance
+
+    result = balance.analyse(balance.load(CONFIGS / "marine-6-2stroke.toml"))
+    own = balance.compare([result]).to_dict()["engines"][0]["pru"]
+    assert own["power_source"] == "given"
+    given = balance.compare([result], power_w=1.2e7).to_dict()["engines"][0]
+    assert given["pru"]["power_source"] == "option" and given["power_kW"] == 12_000.0
+    assert result.engine.power_w is not None and result.engine.power_w != 1.2e7
+    for bad in (0.0, -1.0, float("nan"), "12 MW", 1e300):
+        with pytest.raises(balance.AnalysisError, match="power_w"):
+            balance.compare([result], power_w=bad)
+
+
+def test_power_in_groups_that_are_not_threes_is_refused(tmp_path):
+    """'14 28 kW' is not fourteen hundred and twenty-eight: one line naming --power and the
+    rule, status 1, no traceback, no output file."""
+    before = snapshot(tmp_path)
+    result = invoke(
+        "compare", CONFIGS / "marine-6-2stroke.toml", "--power", "14 28 kW", "-o", tmp_path / "x"
+    )
+    check_refused(result, 1, "--power: cannot read '14 28 kW'", before, tmp_path)
+    assert "in groups of three" in result.stderr

@@ -7,7 +7,19 @@ import re
 import pytest
 from numpy.testing import assert_allclose
 
-from tests.support import CONFIGS, PART3, TWIN, check_refused, invoke, snapshot, twin_file
+from tests.support import (
+    CONFIGS,
+    MRW2,
+    PART3,
+    TEMPLATES,
+    TWIN,
+    check_refused,
+    inline_toml,
+    invoke,
+    snapshot,
+    twin_file,
+    write,
+)
 
 #: (id, command arguments after the command name and the input, words); input TWIN, or ROTARY
 OPTION_CASES = [
@@ -152,6 +164,45 @@ def test_every_command_that_prints_forces_takes_units(twin, tmp_path):
     report = invoke("report", twin, "--output", tmp_path / "r", "--units", "kN")
     assert report.exit_code == 0, report.output
     assert "Mean (kN·m)" in (tmp_path / "r" / "report.md").read_text(encoding="utf-8")
+
+
+def _cells(output, first):
+    """The cells of the first table row of ``output`` that starts with ``first``."""
+    row = next(line for line in output.splitlines() if line.startswith(first))
+    return re.split(r"\s{2,}", row)
+
+
+def test_any_units_means_absolute_forces_on_every_command(tmp_path):
+    """--units N is newtons, not per cylinder: compare, counterweight, search and report show
+    the forces of an in-line 4 (m = 1 kg, r = 50 mm, l = 200 mm, 3000 rpm) in N with --units
+    N as with --absolute. By hand: the order-2 force's max is n·m·r·ω²·A₂, A₂ = λ + λ³/4 +
+    15λ⁵/128 + 35λ⁷/512 + … with λ = 0.25: 0.2540249 (the next term, ~1e-6 of it, is below
+    the table's four figures), so 4 × 4934.80 N × 0.2540249 = 5014.3 N, or 0.2540 per
+    cylinder."""
+    engine = write(tmp_path, inline_toml("In-line 4", [0, 180, 180, 0], 100, cycle=4))
+    lam = 0.25
+    a2 = lam + lam**3 / 4 + 15 * lam**5 / 128 + 35 * lam**7 / 512
+    per_cylinder = invoke("compare", engine)
+    assert per_cylinder.exit_code == 0 and "F max (per cyl)" in per_cylinder.output
+    # four significant figures printed: rtol half a unit of the fourth
+    assert_allclose(float(_cells(per_cylinder.output, "In-line 4  ")[4]), a2, rtol=2e-4)
+    newtons = invoke("compare", engine, "--units", "N")
+    assert newtons.exit_code == 0 and "F max (N)" in newtons.output
+    assert "per cyl" not in newtons.output
+    shown = float(_cells(newtons.output, "In-line 4  ")[4].replace(" ", ""))
+    assert_allclose(shown, 4 * MRW2 * a2, rtol=2e-4)
+    assert newtons.output == invoke("compare", engine, "--absolute").output
+    for args in (["counterweight", engine], ["search", TEMPLATES / "inline-3-2stroke.toml"]):
+        given, default = invoke(*args, "--units", "N"), invoke(*args)
+        assert given.exit_code == 0 == default.exit_code, given.output
+        assert "F max (N)" in given.output and "F max (N)" not in default.output
+        assert "per cyl" in default.output
+    assert invoke("counterweight", engine, "--units", "n").output == (
+        invoke("counterweight", engine, "--absolute").output
+    )
+    report = invoke("report", engine, "--output", tmp_path / "r", "--units", "N")
+    assert report.exit_code == 0, report.output
+    assert "F max (N)" in (tmp_path / "r" / "report.md").read_text(encoding="utf-8")
 
 
 def test_negative_zero_reads_as_zero(tmp_path):

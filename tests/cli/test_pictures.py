@@ -46,17 +46,16 @@ def test_plot_command_refuses_a_format_before_computing(tmp_path, monkeypatch):
     "args, words",
     [
         (
-            ["--kind", "locus", "--units", "kgf"],
-            "--units applies to --kind spectrum and torque only",
+            ["--kind", "star", "--units", "N"],
+            "--units applies to --kind locus, spectrum and torque only",
         ),
-        (["--kind", "star", "--units", "N"], "--units applies to --kind spectrum and torque only"),
         (
             ["--kind", "firing", "--units", "per-cylinder"],
-            "--units applies to --kind spectrum and torque",
+            "--units applies to --kind locus, spectrum and torque",
         ),
         (
             ["--kind", "torque", "--units", "per-cylinder"],
-            "--units per-cylinder applies to --kind spectrum only",
+            "--units per-cylinder applies to --kind locus and spectrum only",
         ),
         (["--kind", "spectrum", "--order", "2"], "--order applies to --kind locus and star only"),
         (["--kind", "torque", "--order", "2"], "--order applies to --kind locus and star only"),
@@ -247,3 +246,13 @@ def test_cli_module_keeps_the_default_backend_until_it_draws():
     )
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
+
+
+def test_plot_locus_takes_units(tmp_path):
+    """--units on the locus: any system, N too, draws absolute forces (the values are
+    tests/plot/test_loci.py's); written as SVG, its axis label names the unit."""
+    target = tmp_path / "locus.svg"
+    result = invoke("plot", V8, "--kind", "locus", "--units", "N", "--output", target)
+    assert result.exit_code == 0, result.output
+    text = target.read_text(encoding="utf-8")
+    assert "across the reference axis (N)" in text and "per cylinder" not in text

@@ -2,6 +2,7 @@
 
 import json
 import math
+import re
 import shutil
 import xml.etree.ElementTree as ET
 
@@ -9,6 +10,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 import balance_cli as balance
+from balance_cli.studies.regress import check_baseline, regression
 from tests.support import CONFIGS, ROOT, TWIN, check_refused, invoke, snapshot
 
 #: the library's engines, counted rather than written down: adding a configuration must not
@@ -147,7 +149,7 @@ def test_the_baseline_settings_are_used(project):
         ("[1, 2]", "not a `balance compare --format json` document"),
         (
             '{"balance_version": 1, "samples": 256, "max_order": 8, "engines": [{"name": "x"}]}',
-            "engines[1]: lacks config, cylinders, firing, orders, unit_force_N",
+            "engines[1] ('x'): lacks 'config', 'cylinders', 'cycle', 'frame', 'speed_rpm'",
         ),
     ],
 )
@@ -220,6 +222,60 @@ def test_a_damaged_baseline_is_one_error_line(tmp_path, damage, words):
     result = invoke("regress", baseline, CONFIGS / "inline-4-car.toml")
     assert result.exit_code == 1 and isinstance(result.exception, SystemExit)
     assert result.stderr.count("\n") == 1 and words in result.stderr
+
+
+@pytest.mark.parametrize(
+    "damage, words",
+    [
+        (lambda e: e.pop("largest_moment_Nm"), "('In-line 4, car'): lacks 'largest_moment_Nm'"),
+        (lambda e: e.pop("vertical_deg"), "('In-line 4, car'): lacks 'vertical_deg'"),
+        (
+            lambda e: e["orders"][1]["moment"].pop("vertical_Nm"),
+            "('In-line 4, car') order 2 moment: lacks 'vertical_Nm'",
+        ),
+        (
+            lambda e: [e["orders"][0]["force"].pop(k) for k in ("horizontal_N", "vertical_deg")],
+            "order 1 force: lacks 'vertical_deg', 'horizontal_N'",
+        ),
+        (lambda e: e["firing"].pop("uniform"), "('In-line 4, car') firing: lacks 'uniform'"),
+        (lambda e: e.pop("sampling_ok"), "lacks 'sampling_ok'"),
+        (
+            lambda e: e.update(counterweighted_moment_Nm=None),
+            "has 'counterweighted_moment_Nm' that is not a finite number",
+        ),
+    ],
+)
+def test_a_version_2_baseline_lacking_what_regress_compares_is_refused(tmp_path, damage, words):
+    """Each key the comparison reads is needed: a record without one used to pass (the key
+    compared only "where both documents have it"), leaving that guard off. Refused naming the
+    file, the engine and the key, with --update and --output too: nothing written, the
+    baseline as it was."""
+    config = tmp_path / "car.toml"
+    text = (CONFIGS / "inline-4-car.toml").read_text(encoding="utf-8")
+    name = next(line for line in text.splitlines() if line.startswith("name = "))
+    config.write_text(text.replace(name, 'name = "In-line 4, car"'), encoding="utf-8")
+    document = balance.compare([balance.analyse(balance.load(config))]).to_dict()
+    assert document["balance_version"] == 2
+    damage(document["engines"][0])
+    baseline = tmp_path / "b.json"
+    baseline.write_text(json.dumps(document), encoding="utf-8")
+    before = snapshot(tmp_path)
+    for extra in ([], ["--update"], ["--output", tmp_path / "moved.json"]):
+        result = invoke("regress", baseline, config, *extra)
+        check_refused(result, 1, f"{baseline}: engines[1] ", before, tmp_path)
+        assert words in result.stderr, result.stderr
+    with pytest.raises(balance.RegressError, match=re.escape(words)):
+        regression(document, document)
+
+
+def test_a_version_1_baseline_needs_only_version_1_keys():
+    """The golden version-1 baseline lacks every version-2 key and is read; without one of
+    version 1's (speed_rpm) it is refused like a version-2 one."""
+    old = json.loads((ROOT / "tests" / "golden" / "compare-v1.json").read_text(encoding="utf-8"))
+    check_baseline(old)
+    old["engines"][2].pop("speed_rpm")
+    with pytest.raises(balance.RegressError, match=r"engines\[3\] .*: lacks 'speed_rpm'"):
+        check_baseline(old, "compare-v1.json")
 
 
 def test_regress_finds_configurations_from_the_baselines_folders(tmp_path, monkeypatch):
