@@ -7,7 +7,7 @@ Imports nothing: the ground floor of the package.
 
 __all__ = ["__version__", "DISTRIBUTION", "install_hint"]
 
-__version__ = "0.2.0"
+__version__ = "0.3.0"
 
 #: the distribution's name on the package index: what ``pip install`` takes
 DISTRIBUTION = "engine-balance"

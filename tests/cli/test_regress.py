@@ -143,8 +143,8 @@ def test_the_baseline_settings_are_used(project):
         ("not json", "not JSON"),
         ('{"engines": []}', "no 'balance_version'"),
         (
-            '{"balance_version": 3, "engines": [], "samples": 256, "max_order": 8}',
-            "written by balance_version 3",
+            '{"balance_version": 4, "engines": [], "samples": 256, "max_order": 8}',
+            "written by balance_version 4",
         ),
         ("[1, 2]", "not a `balance compare --format json` document"),
         (
@@ -255,7 +255,7 @@ def test_a_version_2_baseline_lacking_what_regress_compares_is_refused(tmp_path,
     name = next(line for line in text.splitlines() if line.startswith("name = "))
     config.write_text(text.replace(name, 'name = "In-line 4, car"'), encoding="utf-8")
     document = balance.compare([balance.analyse(balance.load(config))]).to_dict()
-    assert document["balance_version"] == 2
+    assert document["balance_version"] == 3
     damage(document["engines"][0])
     baseline = tmp_path / "b.json"
     baseline.write_text(json.dumps(document), encoding="utf-8")
@@ -297,7 +297,7 @@ def test_json_version_2_and_regress_reads_version_1(monkeypatch):
     """New keys only, and a baseline written by version 1 still regresses clean."""
     monkeypatch.chdir(ROOT)  # the baselines name their configurations from the root
     data = json.loads(invoke("compare", "configs", "--format", "json").output)
-    assert data["balance_version"] == 2
+    assert data["balance_version"] == 3
     engine = data["engines"][0]
     for key in (
         "vertical_deg",
