@@ -1,0 +1,11 @@
+from docutils.parsers.rst import Directive
+
+
+class EngineKeysDirective(Directive):
+    def run(self):
+        return []
+
+
+class UnitsDirective(Directive):
+    def run(self):
+        return []
