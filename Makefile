@@ -64,8 +64,8 @@ test: $(STAMP)
 # ruff (rules B, E, F, I, NPY, UP, W and the format), mypy on the package, and the import
 # contracts: the layers of the package and no cycles (pyproject.toml)
 lint: $(LINT)
-	$(BIN)/ruff check balance_cli tests tools
-	$(BIN)/ruff format --check balance_cli tests tools
+	$(BIN)/ruff check balance_cli tests tools docs
+	$(BIN)/ruff format --check balance_cli tests tools docs
 	$(BIN)/mypy
 	$(BIN)/lint-imports
 

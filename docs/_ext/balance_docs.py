@@ -16,10 +16,10 @@ import pkgutil
 import re
 
 from docutils import nodes
+from engine_keys import EngineKeysDirective, UnitsDirective
 from sphinx.util import logging
 
 import balance_cli
-from engine_keys import EngineKeysDirective, UnitsDirective
 
 logger = logging.getLogger(__name__)
 
