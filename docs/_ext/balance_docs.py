@@ -27,6 +27,8 @@ logger = logging.getLogger(__name__)
 _OWNER = re.compile(r"docstring of ([\w.]+)")
 
 _modules: list = []
+#: the references set as code (reported when the build finishes)
+_unlinked_targets: set = set()
 
 
 def _package_modules():
@@ -87,7 +89,20 @@ def _unlinked(app, env, node, contnode):
     if owner:
         parts = owner.group(1).split(".")
         contexts += [".".join(parts[:i]) for i in range(len(parts), 0, -1)]
-    return contnode if _exists(target, contexts) else None
+    if _exists(target, contexts):
+        _unlinked_targets.add(target)
+        return contnode
+    return None
+
+
+def _report(app, exception):
+    if exception is None and _unlinked_targets:
+        logger.info(
+            "balance_docs: %d names of the package that the site does not document were set "
+            "as code: %s",
+            len(_unlinked_targets),
+            ", ".join(sorted(_unlinked_targets)),
+        )
 
 
 def _check_documented(app, env):
@@ -126,6 +141,7 @@ def _merge(app, env, docnames, other):
 
 def setup(app):
     app.connect("missing-reference", _unlinked)
+    app.connect("build-finished", _report)
     app.connect("doctree-read", _collect_sections)
     app.connect("env-purge-doc", _purge)
     app.connect("env-merge-info", _merge)
