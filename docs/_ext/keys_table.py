@@ -21,6 +21,7 @@ PLAIN_KINDS = {
     "integer": "a whole number",
     "text": "text",
     "list": "a list of whole numbers",
+    "notes": 'a list of "KEYS: text" strings',
     "table": "a table",
     "tables": "one or more tables",
 }

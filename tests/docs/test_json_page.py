@@ -85,7 +85,21 @@ def runs(tmp_path):
                 "1",
             )
         ],
-        "sweep": [run("sweep", CAR, "--vary", "rod_length", "--values", "140 mm,150 mm")],
+        "sweep": [
+            run("sweep", CAR, "--vary", "rod_length", "--values", "140 mm,150 mm"),
+            run(
+                "sweep",
+                CAR,
+                "--vary",
+                "rod_length",
+                "--values",
+                "140 mm,150 mm",
+                "--vary",
+                "crank_radius",
+                "--values",
+                "40 mm,43 mm",
+            ),
+        ],
     }
     try:
         import opentorsion  # noqa: F401
