@@ -10,8 +10,10 @@ TORSION := $(VENV)/.installed-torsion
 STAMP  := $(VENV)/.installed-test
 # the linters (lint)
 LINT   := $(VENV)/.installed-lint
+# the documentation tools (docs)
+DOCS   := $(VENV)/.installed-docs
 
-.PHONY: setup demo test lint bench validate regress-update install-check clean
+.PHONY: setup demo test lint docs bench validate regress-update install-check clean
 
 $(VENV)/bin/python:
 	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 11))' || \
@@ -43,6 +45,11 @@ $(LINT): pyproject.toml setup.py | $(VENV)/bin/python
 	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[lint]'
 	@touch $(RUN) $(LINT)
 
+$(DOCS): pyproject.toml setup.py | $(VENV)/bin/python
+	@$(OLD_NAME)
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[docs]'
+	@touch $(RUN) $(DOCS)
+
 setup: $(STAMP)
 
 demo: $(TORSION)
@@ -57,10 +64,18 @@ test: $(STAMP)
 # ruff (rules B, E, F, I, NPY, UP, W and the format), mypy on the package, and the import
 # contracts: the layers of the package and no cycles (pyproject.toml)
 lint: $(LINT)
-	$(BIN)/ruff check balance_cli tests tools
-	$(BIN)/ruff format --check balance_cli tests tools
+	$(BIN)/ruff check balance_cli tests tools docs
+	$(BIN)/ruff format --check balance_cli tests tools docs
 	$(BIN)/mypy
 	$(BIN)/lint-imports
+
+# the documentation site in docs/_build/html: the tutorials and examples run, the reference is
+# generated from the package (API, commands, configuration keys); any warning is an error and
+# every cross-reference must resolve (-n). Nothing is fetched from the network.
+docs: $(DOCS)
+	rm -rf docs/_build docs/generated
+	MPLBACKEND=Agg $(BIN)/python -m sphinx -b html -W --keep-going -n docs docs/_build/html
+	@echo "docs: docs/_build/html/index.html"
 
 bench: $(STAMP)
 	$(BIN)/python tools/bench.py
@@ -101,4 +116,4 @@ install-check:
 	  echo "install-check: $$passed passed, 0 failed"
 
 clean:
-	rm -rf $(VENV) build *.egg-info .pytest_cache
+	rm -rf $(VENV) build *.egg-info .pytest_cache docs/_build docs/generated

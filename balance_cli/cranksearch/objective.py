@@ -43,8 +43,8 @@ class Term:
     ``kind`` "F" (force), "M" (moment), "H" (H-type guide-force moment), "X" (X-type) or
     "V" (the first torsional mode's phase-vector sum, :mod:`balance_cli.torsion`) or "TV"
     (order 1 only: the first mode's largest V over the minor orders, see :func:`search`);
-    ``part`` "max" (the order's largest value, |X⁺| + |X⁻|), "forward" (|X⁺|) or "backward"
-    (|X⁻|); H, X and V are one real quantity per order, "max" only (their amplitude).
+    ``part`` "max" (the order's largest value, ``|X⁺| + |X⁻|``), "forward" (``|X⁺|``) or
+    "backward" (``|X⁻|``); H, X and V are one real quantity per order, "max" only (their amplitude).
     """
 
     kind: str

@@ -77,7 +77,7 @@ class BalancerMass:
     angle_rad : float
         its direction from the reference axis when the crank angle θ is 0, measured in the
         shaft's own sense of turning (with the crank for a positive ratio, against it for a
-        negative one), rad: the mass is at e·exp(i·s·(|ratio|·θ + angle)) from the shaft's
+        negative one), rad: the mass is at ``e·exp(i·s·(|ratio|·θ + angle))`` from the shaft's
         axis, s the sign of the ratio
     z_m : float or None
         axial position, m; None (the default) takes z̄, the cylinders' mean

@@ -108,7 +108,7 @@ class TorsionResult:
     order_torque_nm : ndarray
         vibratory torque amplitude, N·m, by speed × section × order
     torque_nm : ndarray
-        the synthesised waveform's peak |T| over the cycle, N·m, by speed × section
+        the synthesised waveform's peak ``|T|`` over the cycle, N·m, by speed × section
     free_end_deg : ndarray
         the free end's angular amplitude (peak of the synthesised waveform), degrees, by speed
     stress_pa : ndarray or None
