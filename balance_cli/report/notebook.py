@@ -16,8 +16,6 @@ backslash escapes of punctuation (:func:`~balance_cli.report.display.markdown_te
 import html
 import re
 
-from tabulate import tabulate
-
 from ..analysis.balancing import Balance, Balances
 from ..analysis.results import Comparison, EngineResult, compare
 from ..analysis.steadiness import Steadiness
@@ -96,9 +94,8 @@ def records_html(records) -> str:
     if not records:
         return "<p>(no rows)</p>"
     headers = list(dict.fromkeys(key for record in records for key in record))
-    rows = [[_cell(record.get(key)) for key in headers] for record in records]
-    # tabulate's "html" format escapes every cell
-    return tabulate(rows, headers=headers, tablefmt="html", disable_numparse=True)
+    rows = [[html.escape(_cell(record.get(key))) for key in headers] for record in records]
+    return _html_table([html.escape(h) for h in headers], rows)
 
 
 #: a backslash before ASCII punctuation is CommonMark's escape
@@ -125,7 +122,12 @@ def _cells(line):
 
 
 def _table(lines):
-    head, rows = _cells(lines[0]), [_cells(line) for line in lines[2:]]
+    """A pipe table (its header, the rule of dashes, its rows) as HTML."""
+    return _html_table(_cells(lines[0]), [_cells(line) for line in lines[2:]])
+
+
+def _html_table(head, rows):
+    """An HTML table of cells already HTML."""
     out = ["<table>", "<thead>", "<tr>" + "".join(f"<th>{c}</th>" for c in head) + "</tr>"]
     out += ["</thead>", "<tbody>"]
     out += ["<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in rows]
