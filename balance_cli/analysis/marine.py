@@ -290,7 +290,7 @@ class PowerRelatedUnbalance(Tabular):
         """One row per order judged, none without a power: ``order``, ``vertical_Nm`` and
         ``horizontal_Nm`` (M_kV, M_kH), ``vertical_Nm_per_kW`` and ``horizontal_Nm_per_kW``
         (their PRU), ``vertical_class``, ``horizontal_class``, ``balance`` (the first order's
-        :attr:`balance` by name, "crank" for the other orders: as the crank stands) and
+        ``balance`` by name, "crank" for the other orders: as the crank stands) and
         ``power_kW``."""
         if self.power is None:
             return []

@@ -163,7 +163,9 @@ class Engine:
 
     def edit(self, *, cylinder=None, throw=None, **values) -> "Engine":
         """A copy with some values changed, written as a configuration file writes them, and
-        checked like any new engine::
+        checked like any new engine.
+
+        One cylinder's, one throw's or the engine's own values, one at a time::
 
             heavier = engine.edit(cylinder=3, reciprocating="550 g")
             moved = engine.edit(throw=2, phase=90, name="In-line 4, throw 2 at 90°")
@@ -186,7 +188,7 @@ class Engine:
             (every cylinder's, "550 g"), ``rotating`` and ``crank`` (per throw). ``name``
             (one line of text) goes with any of them: :func:`~balance_cli.compare` tells
             engines apart by name. Masses, lengths and speeds are text with a unit, as in a
-            file; every unit :func:`~balance_cli.units.parse_quantity` reads.
+            file, in any unit a file may use.
 
         Returns
         -------

@@ -122,7 +122,7 @@ class FamilyResult(Tabular):
     first_order_balance: Any = marine.STANDARD_BALANCE
 
     def records(self) -> list:
-        """One row per number of cylinders, :meth:`FamilyRow.to_dict`'s keys made flat:
+        """One row per number of cylinders, the keys of the JSON's ``rows`` made flat:
         ``firing_order`` as text ("1-5-3-4-2-6"), ``phases_deg`` as text ("0 240 120"),
         ``first_order_balance`` by name, the moments ``M1V_Nm`` ... ``M4H_Nm`` (N·m),
         ``power_kW``, the PRU of each order judged as ``PRU_M2V_Nm_per_kW`` and

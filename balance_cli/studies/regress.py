@@ -112,10 +112,10 @@ class Regression(Tabular):
         return [row for row in self.rows if row.engine == engine]
 
     def records(self) -> list:
-        """One row per quantity that moved (:meth:`Moved.to_dict`: ``engine``, ``order``,
+        """One row per quantity that moved (the JSON's ``rows``: ``engine``, ``order``,
         ``quantity``, ``baseline``, ``now``, ``change``, ``relative_change``, ``tolerance``;
         SI, degrees for angles; a firing order as text, "1-3-4-2"); none when nothing moved
-        (:attr:`added` and :attr:`removed` name the engines that came and went)."""
+        (``added`` and ``removed`` name the engines that came and went)."""
         return [
             {
                 key: joined(value) if isinstance(value, (list, tuple)) else value
