@@ -406,3 +406,14 @@ def test_without_pandas_to_pandas_names_the_extra(results, monkeypatch):
     assert "records()" in message and "\n" not in message
     assert isinstance(caught.value, balance.BalanceError) and isinstance(caught.value, ImportError)
     assert results["EngineResult"].records()  # the rows need nothing
+
+
+def test_every_result_shows_html_in_jupyter(results):
+    """Each result's HTML: its command's tables (a heading or a paragraph, and a table where
+    the command prints one), or its records as a table; never the plain repr."""
+    for name, result in results.items():
+        text = result._repr_html_()
+        assert text.startswith('<div class="balance-result">'), name
+        assert "<table>" in text or name == "Steadiness", name  # steadiness is one paragraph
+        assert "<script" not in text, name
+    assert "steadiness ω_m/(ω_max − ω_min)" in results["Steadiness"]._repr_html_()
