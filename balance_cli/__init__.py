@@ -70,6 +70,7 @@ from .errors import (
     NotInResultError,
     OrderError,
     OutputError,
+    PandasUnavailable,
     PlotError,
     RegressError,
     SamplingWarning,
@@ -91,6 +92,7 @@ from .model import (
     TorsionModel,
 )
 from .studies.regress import Moved, Regression, regression
+from .tabular import set_html_renderer
 
 #: public names loaded on first use: name -> (module, attribute; None for the module itself)
 _LAZY = {
@@ -124,6 +126,7 @@ _PACKAGES = (
     "output",
     "report",
     "studies",
+    "tabular",
     "tolerances",
     "torsion",
     "units",
@@ -211,9 +214,23 @@ __all__ = [
     "NotInResultError",
     "SweepError",
     "TorsionUnavailable",
+    "PandasUnavailable",
     "SamplingWarning",
     "__version__",
 ]
+
+
+def _result_html(result):
+    """A result's HTML in Jupyter: the table the command line prints (the report layer, loaded
+    when a notebook first shows a result)."""
+    from .report.notebook import result_html
+
+    return result_html(result)
+
+
+# the results' layers lie below the report and cannot name it: the root, above every layer,
+# hands them the renderer (balance_cli.tabular)
+set_html_renderer(_result_html)
 
 
 def __getattr__(name):

@@ -22,6 +22,7 @@ __all__ = [
     "SweepError",
     "RegressError",
     "TorsionUnavailable",
+    "PandasUnavailable",
     "NotInResultError",
 ]
 
@@ -150,3 +151,8 @@ class RegressError(BalanceError, ValueError):
 
 class TorsionUnavailable(BalanceError, ImportError):
     """openTorsion, which torsional vibration needs, is not installed."""
+
+
+class PandasUnavailable(BalanceError, ImportError):
+    """pandas, which a result's ``to_pandas()`` needs, is not installed (``records()`` gives
+    the same rows without it)."""

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from ..errors import CounterweightError, UnitError
 from ..model import Engine
 from ..output import DOCUMENT_VERSION
+from ..tabular import Tabular, prefixed
 from ..units import check_finite_range, phasor_deg, rad_s_to_rpm
 from .shaking import DEFAULT_SAMPLES, Shaking
 
@@ -213,7 +214,7 @@ class Antivibrateur:
 
 
 @dataclass(frozen=True)
-class Balance:
+class Balance(Tabular):
     """What ``balance counterweight`` reports for one engine.
 
     Attributes
@@ -268,6 +269,27 @@ class Balance:
     @property
     def max_order(self) -> int:
         return self.original.max_order
+
+    def records(self) -> list:
+        """One row per stage and order: ``engine``, ``stage`` ("original": before anything
+        proposed, as the crank and what is built in it leave; "residual": after the
+        counterweights; "after_shafts": after the shafts too, when they were asked for),
+        ``order``, and the order's force and moment as :meth:`EngineResult.records
+        <balance_cli.EngineResult.records>` gives them (``force_max_N``, ...)."""
+        stages = [("original", self.original), ("residual", self.residual)]
+        if self.after_shafts is not None:
+            stages.append(("after_shafts", self.after_shafts))
+        return [
+            {
+                "engine": self.engine.name,
+                "stage": stage,
+                "order": record["order"],
+                **prefixed("force", record["force"]),
+                **prefixed("moment", record["moment"]),
+            }
+            for stage, shaking in stages
+            for record in shaking.records(self.engine)
+        ]
 
     def to_dict(self) -> dict:
         """This engine's entry of ``counterweight --format json`` (SI units; see the README)."""
@@ -394,7 +416,7 @@ def built_weight_record(engine, weight) -> dict:
 
 
 @dataclass(frozen=True)
-class Balances:
+class Balances(Tabular):
     """The counterweights of several engines, balanced with the same settings."""
 
     balances: tuple
@@ -406,6 +428,10 @@ class Balances:
             raise CounterweightError(
                 "must all be analysed with the same samples and max_order", "balances"
             )
+
+    def records(self) -> list:
+        """Every engine's :meth:`Balance.records`, one after the other."""
+        return [row for balance in self.balances for row in balance.records()]
 
     def to_dict(self) -> dict:
         """What ``counterweight --format json`` writes: one :meth:`Balance.to_dict` per engine."""

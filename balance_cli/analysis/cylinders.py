@@ -15,6 +15,7 @@ from ..harmonics import periodic_derivative
 from ..kinematics import kinematic_state
 from ..model import Engine
 from ..output import DOCUMENT_VERSION
+from ..tabular import Tabular
 from ..units import rad_s_to_rpm
 from .gas import gas_load, piston_gas_torque
 from .inertia import reduced_mass_and_momentum
@@ -50,7 +51,7 @@ class CylinderTorque:
 
 
 @dataclass(frozen=True)
-class CylinderTorques:
+class CylinderTorques(Tabular):
     """Every cylinder's own torque (:class:`CylinderTorque`, in the engine's cylinder order).
 
     Attributes
@@ -90,6 +91,25 @@ class CylinderTorques:
     def orders(self) -> np.ndarray:
         """The orders every series gives (multiples of ½ for a four-stroke)."""
         return np.array([k for k, _, _ in self.cylinders[0].inertia.orders])
+
+    def records(self) -> list:
+        """One row per cylinder, torque and order: ``engine``, ``cylinder``, ``throw``,
+        ``torque`` ("inertia", or "gas" with a pressure), then the series' row
+        (:meth:`Series.records <balance_cli.Series.records>`: ``order``, the mean as order 0,
+        ``cos_Nm``, ``sin_Nm``, ``amplitude_Nm``, ``phase_deg``)."""
+        return [
+            {
+                "engine": self.engine.name,
+                "cylinder": c.number,
+                "throw": c.throw,
+                "torque": name,
+                **row,
+            }
+            for c in self.cylinders
+            for name, series in (("inertia", c.inertia), ("gas", c.gas))
+            if series is not None
+            for row in series.records()
+        ]
 
     def to_dict(self) -> dict:
         engine = self.engine

@@ -43,6 +43,7 @@ import numpy as np
 
 from ..harmonics import accelerations as harmonic_accelerations
 from ..harmonics import periodic_derivative
+from ..tabular import Tabular
 from .series import Series, cycle_series
 
 __all__ = ["CylinderGuide", "GuideForces", "guide_forces"]
@@ -94,7 +95,7 @@ class CylinderGuide:
 
 
 @dataclass(frozen=True)
-class GuideForces:
+class GuideForces(Tabular):
     """The guide forces of an engine and its H-type and X-type guide-force moments.
 
     Attributes
@@ -121,6 +122,17 @@ class GuideForces:
     def bimoment(self):
         """The X-type moment times L: Σ couple_j·(z_j − z̄), N·m² over the cycle."""
         return self.x_type.curve * self.lever_m
+
+    def records(self) -> list:
+        """One row per guide-force moment and order: ``moment`` ("H-type" or "X-type"),
+        then the series' row (:meth:`Series.records <balance_cli.Series.records>`:
+        ``order``, the mean as order 0, ``cos_Nm``, ``sin_Nm``, ``amplitude_Nm``,
+        ``phase_deg``)."""
+        return [
+            {"moment": name, **row}
+            for name, series in (("H-type", self.h_type), ("X-type", self.x_type))
+            for row in series.records()
+        ]
 
     def to_dict(self) -> dict:
         """``guide_force`` of ``torque --format json`` (see the README)."""

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 from ..checks import positive
 from ..errors import AnalysisError, BalanceError
 from ..kinematics import FINE_SAMPLES, kinematic_state
+from ..tabular import Tabular
 from .counterweight import counterweights
 from .shaking import Shaking
 
@@ -247,7 +248,7 @@ def engine_power(engine, power_w=None):
 
 
 @dataclass(frozen=True)
-class PowerRelatedUnbalance:
+class PowerRelatedUnbalance(Tabular):
     """The PRU of an analysed engine, or why it has none.
 
     Attributes
@@ -284,6 +285,23 @@ class PowerRelatedUnbalance:
     def available(self) -> bool:
         """Whether the engine has a power, and so a PRU."""
         return self.power is not None
+
+    def records(self) -> list:
+        """One row per order judged, none without a power: ``order``, ``vertical_Nm`` and
+        ``horizontal_Nm`` (M_kV, M_kH), ``vertical_Nm_per_kW`` and ``horizontal_Nm_per_kW``
+        (their PRU), ``vertical_class``, ``horizontal_class``, ``balance`` (the first order's
+        ``balance`` by name, "crank" for the other orders: as the crank stands) and
+        ``power_kW``."""
+        if self.power is None:
+            return []
+        return [
+            {
+                **entry,
+                "balance": self.balance.name if entry["order"] == 1 else "crank",
+                "power_kW": self.power.kilowatts,
+            }
+            for entry in self.orders
+        ]
 
     def to_dict(self) -> dict:
         """``pru`` of ``compare --format json`` (see the README); without a power, only

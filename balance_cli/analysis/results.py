@@ -11,6 +11,7 @@ from ..errors import AnalysisError
 from ..kinematics import check_assembly
 from ..model import Engine
 from ..output import DOCUMENT_VERSION
+from ..tabular import Tabular, prefixed
 from ..units import rad_s_to_rpm, wrap_degrees
 from .firing import Firing, firing_sequence
 from .marine import (
@@ -41,7 +42,7 @@ _NEARLY_ROUND = 0.9
 
 
 @dataclass(frozen=True)
-class EngineResult:
+class EngineResult(Tabular):
     """Everything ``balance compare`` reports for one engine.
 
     Attributes
@@ -174,6 +175,21 @@ class EngineResult:
             cached = self.shaking.records(self.engine)
             object.__setattr__(self, "_order_records", cached)
         return cached
+
+    def records(self) -> list:
+        """One row per order 1..max_order, zero orders too: ``engine`` (its name), ``order``,
+        then the order's force and moment as ``compare --format json`` gives them, with
+        ``force_`` and ``moment_`` before each key: ``force_forward_N``, ``force_forward_deg``,
+        ``force_max_N``, ``force_axis_deg``, ``moment_vertical_Nm``, ... (N, N·m, degrees)."""
+        return [
+            {
+                "engine": self.engine.name,
+                "order": record["order"],
+                **prefixed("force", record["force"]),
+                **prefixed("moment", record["moment"]),
+            }
+            for record in self.order_records()
+        ]
 
     def power_related_unbalance(
         self, power_w: float | None = None, orders=(1, 2), classes=None, balance=STANDARD_BALANCE
@@ -351,7 +367,7 @@ def find_reference(results: "Sequence[EngineResult]", name: str | None) -> int:
 
 
 @dataclass(frozen=True)
-class Comparison:
+class Comparison(Tabular):
     """Several engines analysed alike, and the one the percentages refer to."""
 
     results: tuple
@@ -373,6 +389,11 @@ class Comparison:
     @property
     def max_order(self) -> int:
         return self.results[0].max_order
+
+    def records(self) -> list:
+        """Every engine's :meth:`EngineResult.records`, one after the other (``engine`` tells
+        them apart)."""
+        return [row for result in self.results for row in result.records()]
 
     def to_dict(self) -> dict:
         """What ``compare --format json`` writes."""

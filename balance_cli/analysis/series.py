@@ -8,6 +8,7 @@ import numpy as np
 
 from ..checks import is_real
 from ..errors import OrderError
+from ..tabular import Tabular
 from ..tolerances import NOISE_FLOOR
 from ..units import phasor_deg
 
@@ -15,7 +16,7 @@ __all__ = ["Series", "ReducedMass", "torque_unit_nm", "cycle_series"]
 
 
 @dataclass(frozen=True)
-class Series:
+class Series(Tabular):
     """A quantity over one period: X(θ) = mean + Σ_k (cos_k·cos kθ + sin_k·sin kθ), in ``unit``
     (a torque in N·m, a force component in N).
 
@@ -75,6 +76,20 @@ class Series:
             f"order {k!r} is not among the orders of this series (multiples of "
             f"{360 / self.period_deg:g} up to {highest:g})"
         )
+
+    def records(self) -> list:
+        """One row per order, the mean first as order 0: ``order``, ``cos_<unit>``,
+        ``sin_<unit>``, ``amplitude_<unit>`` and ``phase_deg``, the term being
+        amplitude·cos(kθ − phase) (the mean's phase is 0, or 180 where it is negative)."""
+        u = self.unit
+        mean = {
+            "order": 0.0,
+            f"cos_{u}": self.mean,
+            f"sin_{u}": 0.0,
+            f"amplitude_{u}": abs(self.mean),
+            "phase_deg": 180.0 if self.mean < 0 else 0.0,
+        }
+        return [mean, *self.to_dict()["orders"]]
 
     def to_dict(self) -> dict:
         """``mean_<unit>``, ``max_``, ``min_``, ``range_`` and ``orders[]`` (``order``, ``cos_``,

@@ -31,6 +31,7 @@ import numpy as np
 
 from ..checks import curve, is_real, positive
 from ..errors import AnalysisError
+from ..tabular import Tabular
 from ..units import rad_s_to_rpm
 
 __all__ = ["LOADS", "Steadiness", "steadiness", "flywheel_for"]
@@ -39,7 +40,7 @@ LOADS = ("propeller", "constant")
 
 
 @dataclass(frozen=True)
-class Steadiness:
+class Steadiness(Tabular):
     """The periodic speed of an engine set, and Margoulis's factors.
 
     Attributes
@@ -111,6 +112,11 @@ class Steadiness:
         r_v = 2 * self.mean_torque_nm / self.torque_range_nm
         forms = {"r_c": r_c, "r_v": r_v, "r_h": math.hypot(r_c, r_v)}
         return {k: (v if math.isfinite(v) else None) for k, v in forms.items()}
+
+    def records(self) -> list:
+        """One row: :meth:`to_dict`'s figures (speeds in rpm, torques in N·m, inertias in
+        kg·m²; the steadiness and Margoulis's r_c, r_v, r_h as pure numbers)."""
+        return [self.to_dict()]
 
     def to_dict(self) -> dict:
         """What ``steadiness --format json`` writes (speeds in rpm, torques in N·m); every

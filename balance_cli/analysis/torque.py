@@ -31,6 +31,7 @@ from ..harmonics import periodic_derivative
 from ..kinematics import kinematic_state, pin_angle
 from ..model import Engine
 from ..output import DOCUMENT_VERSION
+from ..tabular import Tabular
 from ..units import rad_s_to_rpm
 from .gas import check_gas_sampling, gas_load, gas_torque, piston_gas_torque
 from .guideforce import guide_forces
@@ -75,7 +76,7 @@ class CrankshaftTorque:
 
 
 @dataclass(frozen=True)
-class TorqueResult:
+class TorqueResult(Tabular):
     """Torques of one engine at constant speed.
 
     Attributes
@@ -132,6 +133,21 @@ class TorqueResult:
     def period_deg(self) -> float:
         return self.total.period_deg
 
+    def records(self) -> list:
+        """One row per torque and order: ``engine``, ``torque`` ("inertia", "tilting",
+        "frame", "gas" when there is a gas torque, "total"), then the series' row
+        (:meth:`Series.records <balance_cli.Series.records>`: ``order``, the mean as order 0,
+        ``cos_Nm``, ``sin_Nm``, ``amplitude_Nm``, ``phase_deg``)."""
+        torques = {"inertia": self.inertia, "tilting": self.tilting, "frame": self.frame}
+        if self.gas is not None:
+            torques["gas"] = self.gas
+        torques["total"] = self.total
+        return [
+            {"engine": self.engine.name, "torque": name, **row}
+            for name, series in torques.items()
+            for row in series.records()
+        ]
+
     def to_dict(self) -> dict:
         """This engine's entry of ``torque --format json`` (SI units; see the README)."""
         engine = self.engine
@@ -167,7 +183,7 @@ class TorqueResult:
 
 
 @dataclass(frozen=True)
-class TorqueSet:
+class TorqueSet(Tabular):
     """The torques of several engines, analysed alike."""
 
     results: tuple
@@ -179,6 +195,10 @@ class TorqueSet:
             "results",
             tuple(items(self.results, TorqueResult, "results", what="engine's torques")),
         )
+
+    def records(self) -> list:
+        """Every engine's :meth:`TorqueResult.records`, one after the other."""
+        return [row for result in self.results for row in result.records()]
 
     def to_dict(self) -> dict:
         """What ``torque --format json`` writes: one :meth:`TorqueResult.to_dict` per engine."""

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 from ..analysis.results import EngineResult
 from ..model import Engine
 from ..output import DOCUMENT_VERSION
+from ..tabular import Tabular, joined
 
 __all__ = ["Arrangement", "SearchResult"]
 
@@ -69,7 +70,7 @@ class Arrangement:
 
 
 @dataclass(frozen=True)
-class SearchResult:
+class SearchResult(Tabular):
     """What ``balance search`` reports.
 
     Attributes
@@ -125,6 +126,25 @@ class SearchResult:
     workers: int
     max_order: int
     samples: int
+
+    def records(self) -> list:
+        """One row per arrangement listed, best first: ``rank``, ``score``, ``phases_deg``
+        ("0 240 120"), ``firing_order`` ("1-2-3") and ``intervals_deg`` as text, ``uniform``,
+        ``mirror_of``, then every coefficient by name (``F1``, ``M2``, ``M1+``: pure numbers,
+        see :func:`~balance_cli.search`)."""
+        return [
+            {
+                "rank": a.rank,
+                "score": a.score,
+                "phases_deg": joined(a.phases_deg, " "),
+                "firing_order": joined(a.firing_order),
+                "intervals_deg": joined(a.result.firing.intervals_deg, " "),
+                "uniform": a.result.firing.uniform,
+                "mirror_of": a.mirror_of,
+                **a.coefficients,
+            }
+            for a in self.arrangements
+        ]
 
     def to_dict(self) -> dict:
         """What ``search --format json`` writes (see the README)."""

@@ -9,7 +9,8 @@ analysis calls first.
 Modules: :mod:`.values` (one value's checks), :mod:`.crankshaft` (crankshafts and throws),
 :mod:`.cylinder`, :mod:`.as_built` (counterweights and balancer shafts), :mod:`.parts` (part
 data and the gas cycle), :mod:`.torsion` (the shaft line's mass-elastic model),
-:mod:`.engine` (the Engine) and :mod:`.invariants` (the rules it is checked against).
+:mod:`.engine` (the Engine), :mod:`.edit` (its values changed as a file writes them) and
+:mod:`.invariants` (the rules it is checked against).
 """
 
 from .as_built import MAX_SHAFT_RATIO, BalancerMass, BalancerShaftSpec, CounterweightMass

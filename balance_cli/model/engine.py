@@ -8,6 +8,7 @@ from ..errors import ModelError
 from ..tolerances import NOISE_FLOOR
 from .crankshaft import REFERENCE_CRANKSHAFT, Crankshaft
 from .cylinder import Cylinder
+from .edit import edited
 from .invariants import check_engine
 from .parts import GasCycle, Parts
 from .torsion import TorsionModel
@@ -159,6 +160,62 @@ class Engine:
                 f"Engine; choose from {', '.join(names)}"
             )
         return dataclasses.replace(self, **changes)
+
+    def edit(self, *, cylinder=None, throw=None, **values) -> "Engine":
+        """A copy with some values changed, written as a configuration file writes them, and
+        checked like any new engine.
+
+        One cylinder's, one throw's or the engine's own values, one at a time::
+
+            heavier = engine.edit(cylinder=3, reciprocating="550 g")
+            moved = engine.edit(throw=2, phase=90, name="In-line 4, throw 2 at 90°")
+            longer = engine.edit(rod_ratio=3.5, speed="3000 rpm")
+
+        Parameters
+        ----------
+        cylinder : int, optional
+            the number of the one cylinder whose values change: ``reciprocating`` (its
+            piston's mass), ``opposed_reciprocating`` (an opposed bore's second piston),
+            ``z`` (its axial position) and ``pin_offset``
+        throw : int, optional
+            the number (from 1) of the one throw whose values change: ``phase`` (degrees from
+            throw 1, positive with rotation, a plain number from -360 to 360) and ``z``
+        **values
+            the keys and values; without ``cylinder`` and ``throw``, the engine's own:
+            ``speed`` ("3000 rpm"), ``crank_radius``, ``rod_length``, ``pin_offset``
+            ("82.5 mm"), ``rod_ratio`` (l/r, a plain number above 1: the rod length becomes
+            rod_ratio × the crank radius, the new one if it changes too), ``reciprocating``
+            (every cylinder's, "550 g"), ``rotating`` and ``crank`` (per throw). ``name``
+            (one line of text) goes with any of them: :func:`~balance_cli.compare` tells
+            engines apart by name. Masses, lengths and speeds are text with a unit, as in a
+            file, in any unit a file may use.
+
+        Returns
+        -------
+        Engine
+            the copy; the rest as it was (a crank radius changed alone keeps the rod length;
+            values derived from ``[parts]`` are not derived again)
+
+        Raises
+        ------
+        ModelError
+            naming the key (``parameter``): a key that is not one of the cylinder's, the
+            throw's or the engine's, a value without its unit or out of range, a cylinder or
+            throw the engine has not, or a copy that cannot exist (a rod no longer than the
+            crank). Whether the copy's linkage can be assembled over a revolution is
+            checked when it is analysed, as for :meth:`replace`.
+        """
+        given = dict(values)
+        changes = edited(self, cylinder, throw, dict(values))
+        try:
+            return self.replace(**changes)
+        except ModelError as exc:
+            key = next(iter(given), "name")
+            raise ModelError(
+                f"= {given.get(key, changes.get('name'))!r} makes an engine that cannot exist: "
+                f"{exc}",
+                key,
+            ) from None
 
     def cylinder(self, number):
         """The cylinder with this number."""

@@ -26,6 +26,7 @@ from ..config import Configuration, build, read_configuration
 from ..cranksearch import DEFAULT_LIMIT, search
 from ..errors import AnalysisError, BalanceError
 from ..output import DOCUMENT_VERSION
+from ..tabular import Tabular, joined
 
 __all__ = ["FamilyRow", "FamilyResult", "family", "default_objective"]
 
@@ -104,7 +105,7 @@ def _largest(series):
 
 
 @dataclass(frozen=True)
-class FamilyResult:
+class FamilyResult(Tabular):
     """The family table: ``rows`` (one :class:`FamilyRow` per number of cylinders), the
     template's ``name`` and ``config``, the ``objective``, ``pitch_m`` and
     ``power_per_cylinder_w`` (None without a power)."""
@@ -119,6 +120,15 @@ class FamilyResult:
     max_order: int
     has_gas: bool = False
     first_order_balance: Any = marine.STANDARD_BALANCE
+
+    def records(self) -> list:
+        """One row per number of cylinders, the keys of the JSON's ``rows`` made flat:
+        ``firing_order`` as text ("1-5-3-4-2-6"), ``phases_deg`` as text ("0 240 120"),
+        ``first_order_balance`` by name, the moments ``M1V_Nm`` ... ``M4H_Nm`` (N·m),
+        ``power_kW``, the PRU of each order judged as ``PRU_M2V_Nm_per_kW`` and
+        ``PRU_M2V_class``, the largest guide-force moments as ``h_type_Nm``, ``h_type_order``,
+        ``x_type_Nm``, ``x_type_order``, and ``second_order_compensator``."""
+        return [_flat_row(row.to_dict()) for row in self.rows]
 
     def to_dict(self) -> dict:
         """What ``balance family --format json`` writes (SI; see the README)."""
@@ -137,6 +147,28 @@ class FamilyResult:
             "max_order": self.max_order,
             "rows": [r.to_dict() for r in self.rows],
         }
+
+
+def _flat_row(record):
+    """A family row's JSON record as one flat row (:meth:`FamilyResult.records`)."""
+    flat: dict = {}
+    for key, value in record.items():
+        if key in ("firing_order", "phases_deg"):
+            flat[key] = joined(value, "-" if key == "firing_order" else " ")
+        elif key == "first_order_balance":
+            flat[key] = value["name"]
+        elif key in ("h_type", "x_type"):
+            flat[f"{key}_Nm"] = None if value is None else value["amplitude_Nm"]
+            flat[f"{key}_order"] = None if value is None else value["order"]
+        elif key == "pru":
+            for entry in value["orders"] if value else ():
+                for side in ("vertical", "horizontal"):
+                    name = f"PRU_M{entry['order']}{side[0].upper()}"
+                    flat[f"{name}_Nm_per_kW"] = entry[f"{side}_Nm_per_kW"]
+                    flat[f"{name}_class"] = entry[f"{side}_class"]
+        else:
+            flat[key] = value
+    return flat
 
 
 def _counts(cylinders):

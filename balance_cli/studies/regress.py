@@ -24,6 +24,7 @@ from ..analysis.results import Comparison, analyse, compare
 from ..analysis.shaking import check_settings
 from ..errors import AnalysisError, RegressError
 from ..output import DOCUMENT_VERSION, READABLE_VERSIONS
+from ..tabular import Tabular, joined
 from ..tolerances import FIRING_CHANGE_DEG, NOISE_FLOOR, PHASE_CHANGE_DEG, PHASE_FLOOR
 from ..units import angle_change
 
@@ -88,7 +89,7 @@ class Moved:
 
 
 @dataclass(frozen=True)
-class Regression:
+class Regression(Tabular):
     """The regression table: what moved, and the engines added and removed.
 
     ``configs`` maps every engine's name to its configuration file (baseline's or now).
@@ -109,6 +110,19 @@ class Regression:
 
     def rows_of(self, engine) -> list:
         return [row for row in self.rows if row.engine == engine]
+
+    def records(self) -> list:
+        """One row per quantity that moved (the JSON's ``rows``: ``engine``, ``order``,
+        ``quantity``, ``baseline``, ``now``, ``change``, ``relative_change``, ``tolerance``;
+        SI, degrees for angles; a firing order as text, "1-3-4-2"); none when nothing moved
+        (``added`` and ``removed`` name the engines that came and went)."""
+        return [
+            {
+                key: joined(value) if isinstance(value, (list, tuple)) else value
+                for key, value in row.to_dict().items()
+            }
+            for row in self.rows
+        ]
 
     def to_dict(self) -> dict:
         return {

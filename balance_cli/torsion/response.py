@@ -26,6 +26,7 @@ from ..analysis.shaking import DEFAULT_SAMPLES
 from ..checks import curve, is_real
 from ..errors import AnalysisError
 from ..model import Engine
+from ..tabular import Tabular
 from ..units import rad_s_to_rpm
 from .adapter import assembly_of, natural_frequencies, require_opentorsion
 from .excitation import excitation
@@ -87,7 +88,7 @@ class Peak:
 
 
 @dataclass(frozen=True)
-class TorsionResult:
+class TorsionResult(Tabular):
     """Modes, criticals and forced response of one engine's crankshaft.
 
     Attributes
@@ -266,6 +267,16 @@ class TorsionResult:
                 )
             )
         return out
+
+    def records(self) -> list:
+        """One row per critical kept, by speed: ``engine``, ``mode``, ``frequency_Hz`` (the
+        mode's), ``order``, ``speed_rpm``, ``phase_vector_sum``, ``major``, ``excited``."""
+        hz = {m.number: m.frequency_hz for m in self.modes}
+        return [
+            {"engine": self.engine.name, "mode": c.mode, "frequency_Hz": hz[c.mode]}
+            | {k: v for k, v in c.to_dict().items() if k != "mode"}
+            for c in self.criticals
+        ]
 
     def to_dict(self) -> dict:
         """This engine's entry of ``torsion --format json`` (SI units; see the README)."""

@@ -10,6 +10,7 @@ import numpy as np
 
 from ...errors import NotInResultError
 from ...output import DOCUMENT_VERSION
+from ...tabular import Tabular
 from ...units import rad_s_to_rpm
 from .keys import Parameter
 
@@ -42,7 +43,7 @@ def _column(quantities, quantity):
 
 
 @dataclass(frozen=True)
-class SweepResult:
+class SweepResult(Tabular):
     """A sweep: one parameter's values and what each gives.
 
     Attributes
@@ -120,7 +121,7 @@ class SweepResult:
 
 
 @dataclass(frozen=True)
-class SweepGrid:
+class SweepGrid(Tabular):
     """A sweep of two parameters over every pair of their values.
 
     Attributes
