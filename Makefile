@@ -71,10 +71,13 @@ lint: $(LINT)
 
 # the documentation site in docs/_build/html: the tutorials and examples run, the reference is
 # generated from the package (API, commands, configuration keys); any warning is an error and
-# every cross-reference must resolve (-n). Nothing is fetched from the network.
+# every cross-reference must resolve (-n). Nothing is fetched from the network. Then the built
+# tutorials open in headless Chromium: their pictures load, their consoles show no error
+# (tools/check_site.py; without Chromium it says so and passes).
 docs: $(DOCS)
 	rm -rf docs/_build docs/generated
 	MPLBACKEND=Agg $(BIN)/python -m sphinx -b html -W --keep-going -n docs docs/_build/html
+	$(BIN)/python tools/check_site.py docs/_build/html
 	@echo "docs: docs/_build/html/index.html"
 
 bench: $(STAMP)

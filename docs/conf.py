@@ -100,5 +100,8 @@ html_theme_options = {
     "footer_end": ["sphinx-version"],
     "icon_links": [],
 }
+# without a default mode the theme reads "" on a reader's first visit (nothing stored yet) and
+# logs a console error before falling back to auto (tools/check_site.py, run by make docs, saw it)
+html_context = {"default_mode": "auto"}
 html_static_path: list[str] = []
 html_show_sourcelink = False
