@@ -12,8 +12,8 @@ The package is a library first; the ``balance`` command is a thin face of it::
 
 Every error is a :class:`BalanceError`. SI units and radians inside; a parameter in another
 unit says it in its name (``speed_rpm``, ``angle_deg``). Cylinders, throws, banks, crankshafts
-and planes are numbered from 1, as in the files and the tables. See the README's "Python API"
-for every name, unit and exception.
+and planes are numbered from 1, as in the files and the tables. See the documentation's "Use
+balance from Python" and its API reference for every name, unit and exception.
 
 The names below load on first use where they need what most commands do not (matplotlib for
 :mod:`balance_cli.plot`, the search, sweeps, families and torsional vibration), so that

@@ -1,5 +1,5 @@
-"""The documented Python API: the README's examples run, results equal the command line's
-JSON, errors derive from one base and name parameters, modules are not shadowed."""
+"""The documented Python API: the examples of its how-to page run, results equal the command
+line's JSON, errors derive from one base and name parameters, modules are not shadowed."""
 
 import importlib
 import inspect
@@ -16,11 +16,13 @@ import balance_cli as balance
 from balance_cli.cli import main
 from tests.support import CONFIGS, PART3, ROOT, V12, make_engine
 
+#: the page that documents the API by example (docs/howto/python-api.md)
+API_PAGE = ROOT / "docs" / "howto" / "python-api.md"
 
-def readme_python_blocks():
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
-    section = text[text.index("## Python API") : text.index("## Conventions")]
-    return re.findall(r"```python\n(.*?)```", section, flags=re.S)
+
+def page_python_blocks():
+    text = API_PAGE.read_text(encoding="utf-8")
+    return re.findall(r"^```python\n(.*?)^```", text, flags=re.S | re.M)
 
 
 def cli_json(*args):
@@ -29,16 +31,16 @@ def cli_json(*args):
     return json.loads(result.stdout)
 
 
-def test_the_readme_examples_run_as_written(tmp_path, monkeypatch):
+def test_the_api_page_examples_run_as_written(tmp_path, monkeypatch):
     """Run in a folder of their own (they write spectrum.svg), with configs/ beside them."""
-    blocks = readme_python_blocks()
+    blocks = page_python_blocks()
     assert len(blocks) == 2
     (tmp_path / "configs").symlink_to(CONFIGS)
     (tmp_path / "templates").symlink_to(ROOT / "templates")
     monkeypatch.chdir(tmp_path)
     namespace = {}
     for block in blocks:
-        exec(compile(block, "README.md", "exec"), namespace)
+        exec(compile(block, str(API_PAGE), "exec"), namespace)
     assert (tmp_path / "spectrum.svg").read_bytes().startswith(b"<?xml")
     assert isinstance(namespace["fig"], __import__("matplotlib.figure").figure.Figure)
 

@@ -292,7 +292,7 @@ class Balance(Tabular):
         ]
 
     def to_dict(self) -> dict:
-        """This engine's entry of ``counterweight --format json`` (SI units; see the README)."""
+        """This engine's entry of ``counterweight --format json`` (SI units; see the JSON page)."""
         engine = self.engine
 
         def stage(shaking):

@@ -32,7 +32,7 @@ __all__ = [
 
 #: the gas torque's mean may move by this fraction (of its mean, or of a hundredth of its
 #: peak for a cycle that averages out) when the samples are doubled before a warning: the
-#: README promises a few 1e-3 at the default sampling
+#: documentation (Gas pressure, sampling with gas) promises a few 1e-3 at the default sampling
 GAS_CONVERGENCE = 1e-3
 
 

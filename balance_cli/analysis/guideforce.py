@@ -135,7 +135,7 @@ class GuideForces(Tabular):
         ]
 
     def to_dict(self) -> dict:
-        """``guide_force`` of ``torque --format json`` (see the README)."""
+        """``guide_force`` of ``torque --format json`` (see the JSON page)."""
         return {
             "lever_m": self.lever_m,
             "mean_z_m": self.mean_z_m,

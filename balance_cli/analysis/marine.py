@@ -304,7 +304,7 @@ class PowerRelatedUnbalance(Tabular):
         ]
 
     def to_dict(self) -> dict:
-        """``pru`` of ``compare --format json`` (see the README); without a power, only
+        """``pru`` of ``compare --format json`` (see the JSON page); without a power, only
         ``note``."""
         if self.power is None:
             return {"note": self.note}

@@ -123,7 +123,7 @@ def read_pressure_csv(path, cycle_deg=None):
     """A pressure curve from a CSV file: a header ``angle_deg,pressure_<unit>`` (or
     ``angle (deg),pressure (<unit>)``), then one row per crank angle from the firing top dead
     centre, increasing, covering one working cycle once; absolute pressures, none negative.
-    ``cycle_deg`` 360 or 720, or None (as the README documents the call) for the cycle the
+    ``cycle_deg`` 360 or 720, or None (as the documentation gives the call) for the cycle the
     angles span.
 
     Raises

@@ -210,7 +210,7 @@ class EngineResult(Tabular):
         pru_balance=STANDARD_BALANCE,
         power_w: float | None = None,
     ) -> dict:
-        """This engine's entry of ``compare --format json`` (SI units; see the README).
+        """This engine's entry of ``compare --format json`` (SI units; see the JSON page).
 
         ``reference`` is the result the percentage refers to (default: this one, as in the
         comparison of a single engine); ``pru_classes`` the bounds of the power related

@@ -149,7 +149,7 @@ class TorqueResult(Tabular):
         ]
 
     def to_dict(self) -> dict:
-        """This engine's entry of ``torque --format json`` (SI units; see the README)."""
+        """This engine's entry of ``torque --format json`` (SI units; see the JSON page)."""
         engine = self.engine
         return {
             "name": engine.name,

@@ -67,8 +67,9 @@ def reported(engine=None, flags=None):
 def main():
     """Compare reciprocating-engine layouts for mechanical balance.
 
-    Engines are described in TOML files (see the README). Forces and moments are computed
-    exactly from the true motion of every mass, order by order.
+    Engines are described in TOML files (see balance's documentation, How-to: Describe an
+    engine). Forces and moments are computed exactly from the true motion of every mass,
+    order by order.
 
     The engine library and search templates shipped with balance are named from any folder:
     library:NAME (balance list lists them; library:tanaka-part3, library:today/v/v12-60.toml)

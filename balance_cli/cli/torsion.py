@@ -125,7 +125,8 @@ def torsion(paths, speeds, max_order, kind, orders, modes, samples, fmt, output,
         lambda e: e.torsion is not None,
         lambda e: "no [torsion] table",
         "none of these engines has a [torsion] table (the shaft line's "
-        "inertias and stiffnesses); see the README, Torsional vibration",
+        "inertias and stiffnesses); see balance's documentation, How-to: Torsional "
+        "vibration",
     )
     files = [Path(e.config_path) for e in engines]
     if plot_dir is not None:

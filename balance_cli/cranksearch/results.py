@@ -147,7 +147,7 @@ class SearchResult(Tabular):
         ]
 
     def to_dict(self) -> dict:
-        """What ``search --format json`` writes (see the README)."""
+        """What ``search --format json`` writes (see the JSON page)."""
         return {
             "balance_version": DOCUMENT_VERSION,
             "template": self.template.config_path or self.template.name,

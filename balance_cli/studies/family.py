@@ -131,7 +131,7 @@ class FamilyResult(Tabular):
         return [_flat_row(row.to_dict()) for row in self.rows]
 
     def to_dict(self) -> dict:
-        """What ``balance family --format json`` writes (SI; see the README)."""
+        """What ``balance family --format json`` writes (SI; see the JSON page)."""
         return {
             "balance_version": DOCUMENT_VERSION,
             "name": self.name,

@@ -391,7 +391,7 @@ def regression(baseline, current, rtol=0.0, baseline_path="<baseline>") -> Regre
 
 
 def _engine_rows(name, a, b, rtol):
-    # the JSON's per-cylinder unit, m_rec·r·ω²·n, as the README documents it
+    # the JSON's per-cylinder unit, m_rec·r·ω²·n, as the JSON documents page gives it
     scale = b["unit_force_N"] * b["cylinders"]
     rows = []
 

@@ -25,7 +25,7 @@ def torsion_model(engine):
     if model is None:
         raise AnalysisError(
             f"{engine.name!r} has no [torsion] table: give its shaft line's "
-            "inertias and stiffnesses (see the README, Torsional vibration)",
+            "inertias and stiffnesses (see balance's documentation, How-to: Torsional vibration)",
             "engine",
         )
     if engine.is_rotary:

@@ -279,7 +279,7 @@ class TorsionResult(Tabular):
         ]
 
     def to_dict(self) -> dict:
-        """This engine's entry of ``torsion --format json`` (SI units; see the README)."""
+        """This engine's entry of ``torsion --format json`` (SI units; see the JSON page)."""
         engine = self.engine
         return {
             "name": engine.name,

@@ -22,10 +22,13 @@ def with_blocks(language):
 
 @pytest.fixture
 def checkout_folder(tmp_path, monkeypatch):
-    """A folder of their own (they may write files), with configs/ and templates/ beside
-    them as in the checkout."""
+    """A folder of their own (they may write files), with configs/, templates/ and the pages'
+    data files (docs/data/) beside them as in the checkout; docs/ itself is a folder of its
+    own, so that a command drawing into docs/ does not replace the checkout's pictures."""
     (tmp_path / "configs").symlink_to(CONFIGS)
     (tmp_path / "templates").symlink_to(ROOT / "templates")
+    (tmp_path / "docs").mkdir()
+    (tmp_path / "docs" / "data").symlink_to(DOCS / "data")
     monkeypatch.chdir(tmp_path)
     return tmp_path
 
@@ -53,9 +56,11 @@ def test_the_engines_load(page):
 
 
 def command_lines(page):
+    """The ``balance`` commands of a page's shell blocks, a line continued by a backslash
+    joined to the next."""
     for language in ("sh", "console", "shell"):
         for block in code_blocks(page, language):
-            for line in block.splitlines():
+            for line in block.replace("\\\n", " ").splitlines():
                 words = shlex.split(line.removeprefix("$ "), comments=True)
                 if words[:1] == ["balance"]:
                     yield words[1:]

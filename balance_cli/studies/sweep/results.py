@@ -1,7 +1,7 @@
 """What a sweep returns: :class:`SweepResult` of one parameter, :class:`SweepGrid` of two.
 
 Their ``to_dict()`` is what ``sweep --format json`` writes, and their ``records()`` what its
-CSV rows hold: both are the contract other programs read (see the README).
+CSV rows hold: both are the contract other programs read (see the JSON page).
 """
 
 from dataclasses import dataclass
@@ -103,7 +103,7 @@ class SweepResult(Tabular):
         return [dict(p) for p in self.points]
 
     def to_dict(self) -> dict:
-        """What ``sweep --format json`` writes (SI; see the README)."""
+        """What ``sweep --format json`` writes (SI; see the JSON page)."""
         return {
             "balance_version": DOCUMENT_VERSION,
             "name": self.name,
@@ -180,7 +180,7 @@ class SweepGrid(Tabular):
         return [dict(p) for p in self.points]
 
     def to_dict(self) -> dict:
-        """What ``sweep --format json`` writes for two ``--vary`` (SI; see the README)."""
+        """What ``sweep --format json`` writes for two ``--vary`` (SI; see the JSON page)."""
         return {
             "balance_version": DOCUMENT_VERSION,
             "name": self.name,
