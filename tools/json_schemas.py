@@ -112,18 +112,32 @@ def closed(description, required, optional=None, null=False):
     return schema
 
 
-def document(name, version, description, defs, required, optional=None, **extra):
-    """A whole schema: the document's own keys, its ``balance_version`` fixed, the parts it
-    uses in ``$defs``."""
+def document(name, version, description, required, optional=None):
+    """A whole schema: the document's own keys, its ``balance_version`` fixed."""
     body = closed(description, {"balance_version": VERSION(version), **required}, optional)
-    schema = {
-        "$schema": DRAFT,
-        "title": f"balance {name} document, version {version}",
-        **body,
-        **extra,
-    }
-    if defs:
-        schema["$defs"] = {key: DEFS[key] for key in sorted(defs)}
+    return {"$schema": DRAFT, "title": f"balance {name} document, version {version}", **body}
+
+
+def _refs(node):
+    """The names of the ``$defs`` that ``node`` refers to."""
+    if isinstance(node, dict):
+        found = {node["$ref"].removeprefix("#/$defs/")} if "$ref" in node else set()
+        return found.union(*(_refs(v) for v in node.values()))
+    if isinstance(node, list):
+        return set().union(*(_refs(v) for v in node))
+    return set()
+
+
+def with_defs(schema):
+    """``schema`` with the shared parts it uses, and those they use, in its ``$defs``: each
+    file stands alone."""
+    wanted, todo = set(), _refs(schema)
+    while todo:
+        name = todo.pop()
+        wanted.add(name)
+        todo |= _refs(DEFS[name]) - wanted
+    if wanted:
+        schema["$defs"] = {name: DEFS[name] for name in sorted(wanted)}
     return schema
 
 
@@ -137,12 +151,12 @@ SETTINGS = {
         minimum=5,
         maximum=65536,
     ),
-    "max_order": integer("highest order analysed", minimum=1),
+    # 65536 samples resolve orders up to 16383
+    "max_order": integer("highest order analysed", minimum=1, maximum=16383),
 }
 ENGINE_NAME = text("the engine's name, as its configuration gives it")
 CONFIG = text("its configuration file, as given (empty for an engine built in code)")
-CYCLE = integer("strokes a working cycle: 2 or 4", minimum=2, maximum=4)
-CYCLE["enum"] = [2, 4]
+CYCLE = {"enum": [2, 4], "description": "strokes a working cycle: 2 or 4"}
 SPEED = positive("crank speed (a rotary's crankcase speed), rev/min")
 UNIT_FORCE = positive(
     "m_rec·r·ω² with the mean reciprocating mass per cylinder, N: divide a force by it and by "
@@ -153,6 +167,8 @@ FRAME = text(
     enum=("fixed", "rotary"),
 )
 HALF = 0.5  # four-stroke torques repeat every 720°: their orders are multiples of ½
+#: an order of a torque or of the torsional excitation
+ORDER = number("k, a multiple of ½ for a four-stroke", above=0, multiple=HALF)
 
 
 def _part(unit, components=True):
@@ -177,11 +193,11 @@ def _part(unit, components=True):
         ),
     }
     if components:
-        word = "pitching" if unit == "Nm" else "vertical"
+        pitching = " (pitching: the moment of the vertical forces)" if unit == "Nm" else ""
         properties.update(
             {
                 f"vertical_{unit}": size(
-                    f"amplitude of the component along the engine's vertical ({word}), {what}"
+                    f"amplitude of the component along the engine's vertical{pitching}, {what}"
                 ),
                 "vertical_deg": degrees(
                     "its phase: the component is amplitude·cos(kθ − phase), degrees"
@@ -266,7 +282,7 @@ DEFS = {
     "pin_force": closed(
         "the order's force on the pin or bearing: forward and backward phasors and their "
         "ellipse (the steady part, order 0, as its forward phasor)",
-        {k: v for k, v in _part("N", components=False)["properties"].items()},
+        _part("N", components=False)["properties"],
     ),
     "order": closed(
         "one order k of the shaking: F_k(θ) = F⁺·e^(ikθ) + F⁻·e^(−ikθ), θ the crank angle",
@@ -302,7 +318,7 @@ DEFS = {
                 size("degrees"),
                 "gaps between consecutive firings, the last wrapping round the cycle",
             ),
-            "uniform": flag("every interval within 0.5° of cycle/cylinders"),
+            "uniform": flag("every interval within 0.01° of cycle/cylinders"),
             "max_deviation_deg": size("largest deviation of an interval from the mean, degrees"),
             "given": flag(
                 "the order came from the configuration (else balance chose the most uniform)"
@@ -357,7 +373,7 @@ DEFS = {
             ),
             "orders": array(
                 {"$ref": "#/$defs/pru_entry"},
-                "each order judged; the first under first_order_balance, the others as the "
+                "each order judged: order 1 under first_order_balance, the others as the "
                 "crank stands",
                 min_items=1,
             ),
@@ -471,11 +487,14 @@ def compare():
                 "that over unit_force_N·cylinders (Tanaka's Part III figure)"
             ),
             "percent_of_reference": size(
-                "that as a percentage of the reference engine's; null when the reference has none",
+                "counterweighted_resultant_per_cylinder as a percentage of the reference "
+                "engine's, %; null when the reference has none",
                 null=True,
             ),
             "percent_of_reference_absolute": size(
-                "the same of the resultants in newtons, %", null=True
+                "counterweighted_resultant_N as a percentage of the reference engine's, %; null "
+                "alike",
+                null=True,
             ),
             "vertical_deg": degrees("the engine's vertical, degrees from the reference axis"),
             "noise_floor_N": size("forces below this are written as exact zeros, N"),
@@ -500,7 +519,6 @@ def compare():
         DOCUMENT_VERSION,
         "balance compare --format json: engines compared order by order (Comparison.to_dict); "
         "balance regress reads it as a baseline. SI units throughout, angles in degrees.",
-        ["order", "orders", "force", "moment", "firing", "pru", "pru_entry", "balance"],
         {
             **SETTINGS,
             "reference": text("name of the engine the percentages refer to"),
@@ -737,16 +755,6 @@ def counterweight():
         DOCUMENT_VERSION,
         "balance counterweight --format json: the counterweights proposed and what they leave "
         "(Balances.to_dict). SI units, angles in degrees.",
-        [
-            "order",
-            "orders",
-            "force",
-            "moment",
-            "stage",
-            "balancer_shaft",
-            "shaft_mass",
-            "rolling_moment",
-        ],
         {**SETTINGS, "engines": array(engine, "one per engine", min_items=1)},
     )
 
@@ -787,7 +795,7 @@ def torque():
             "config": CONFIG,
             "cycle": CYCLE,
             "speed_rpm": SPEED,
-            "period_deg": number("360 or 720: the torques' period", minimum=360, maximum=720),
+            "period_deg": {"enum": [360, 720], "description": "the torques' period, degrees"},
             "reduced_mass": closed(
                 "μ(θ): the kinetic energy of the moving parts is ½·μ·ω²",
                 {
@@ -852,7 +860,6 @@ def torque():
         DOCUMENT_VERSION,
         "balance torque --format json: torques at constant speed, order by order "
         "(TorqueSet.to_dict). SI units; orders are multiples of ½ for a four-stroke.",
-        ["series_Nm", "series_N", "crank_pin", "main_bearings", "pin_orders", "pin_force"],
         {**SETTINGS, "engines": array(engine, "one per engine", min_items=1)},
     )
 
@@ -883,10 +890,9 @@ def steadiness():
         STEADINESS_VERSION,
         "balance steadiness --format json: the speed of a flywheel driven by a measured "
         "torque curve. Speeds in rev/min, torques in N·m.",
-        [],
         {
             "torque_file": text("the torque curve read"),
-            "cycle_deg": number("360 or 720", minimum=360, maximum=720),
+            "cycle_deg": {"enum": [360, 720], "description": "the curve's cycle, degrees"},
             **steadiness_keys(),
             "inertia_for_target_kgm2": positive(
                 "with --target: the inertia that reaches it, kg·m² (else null)", True
@@ -955,7 +961,7 @@ def torsion():
                             closed(
                                 "the mode's phase-vector sum at one order",
                                 {
-                                    "order": positive("k (halves for a four-stroke)"),
+                                    "order": ORDER,
                                     "sum": size("|Σ β·e^(ikφ)|, 0 where it cancels"),
                                     "excited": flag("the sum is not zero"),
                                 },
@@ -971,7 +977,7 @@ def torsion():
                     "a mode's resonance with an order",
                     {
                         "mode": criticals,
-                        "order": positive("k"),
+                        "order": ORDER,
                         "speed_rpm": positive("where k·n is the mode's frequency, rev/min"),
                         "phase_vector_sum": size("the mode's sum at that order"),
                         "major": flag("the order puts every cylinder in phase"),
@@ -984,7 +990,7 @@ def torsion():
                 "the choice of criticals",
                 {
                     "kind": text('"excited", "major" or "all"', enum=("excited", "major", "all")),
-                    "orders": array(positive("k"), "the orders chosen (null: all)", null=True),
+                    "orders": array(ORDER, "the orders chosen (null: all)", null=True),
                     "modes": array(criticals, "the modes chosen (null: all)", null=True),
                 },
             ),
@@ -994,7 +1000,7 @@ def torsion():
                     "section": text("where"),
                     "torque_Nm": size("N·m"),
                     "speed_rpm": positive("rev/min"),
-                    "order": positive("the order of the largest amplitude there"),
+                    "order": {**ORDER, "description": "the order of the largest amplitude there"},
                     "mode": integer(
                         "the mode whose critical of that order is within 10 % (null: none)",
                         1,
@@ -1027,7 +1033,7 @@ def torsion():
                         "criticals": array(
                             closed(
                                 "a critical near this speed",
-                                {"mode": criticals, "order": positive("k")},
+                                {"mode": criticals, "order": ORDER},
                             ),
                             "criticals within 10 % of this speed",
                         ),
@@ -1040,7 +1046,7 @@ def torsion():
                             closed(
                                 "one order at the free end",
                                 {
-                                    "order": positive("k"),
+                                    "order": ORDER,
                                     "amplitude_deg": size("degrees"),
                                     "elastic_deg": size("its elastic part, degrees", null=True),
                                 },
@@ -1057,7 +1063,7 @@ def torsion():
                                     "orders": array(
                                         closed(
                                             "one order",
-                                            {"order": positive("k"), "torque_Nm": size("N·m")},
+                                            {"order": ORDER, "torque_Nm": size("N·m")},
                                         ),
                                         "per order",
                                     ),
@@ -1078,7 +1084,6 @@ def torsion():
         "balance torsion --format json: the shaft line's modes, criticals and forced response "
         "(TorsionResult.to_dict per engine). SI units; orders are multiples of ½ for a "
         "four-stroke.",
-        [],
         {
             "max_order": integer("highest order of the excitation", minimum=1),
             "engines": array(engine, "one per engine with a [torsion] table", min_items=1),
@@ -1112,7 +1117,6 @@ def regress():
         DOCUMENT_VERSION,
         "balance regress --format json: what moved between a baseline and the engines now "
         "(Regression.to_dict).",
-        [],
         {
             "baseline": text("the baseline file"),
             "rtol": number("the relative tolerance", minimum=0, below=1),
@@ -1160,7 +1164,6 @@ def search():
         DOCUMENT_VERSION,
         "balance search --format json: the best crank arrangements and firing orders "
         "(SearchResult.to_dict).",
-        ["order", "orders", "force", "moment"],
         {
             "template": text("the template file (its name for one built in code)"),
             "name": text("the template's name"),
@@ -1204,7 +1207,7 @@ def family():
                 moments[f"M1{d}_crank_Nm"] = size(f"M1{d} as the crank stands, N·m")
     largest = closed(
         "the order with the largest amplitude (null: every order analysed is zero)",
-        {"order": positive("k"), "amplitude_Nm": positive("N·m")},
+        {"order": ORDER, "amplitude_Nm": positive("N·m")},
         null=True,
     )
     row = closed(
@@ -1238,7 +1241,6 @@ def family():
         DOCUMENT_VERSION,
         "balance family --format json: a project-guide table of an engine family "
         "(FamilyResult.to_dict). SI units.",
-        ["pru", "pru_entry", "balance"],
         {
             "name": text("the family's name"),
             "config": CONFIG,
@@ -1255,7 +1257,11 @@ def family():
     )
 
 
-#: the columns a sweep's quantities write (Quantity.column)
+#: the quantities a sweep reports (Quantity.name) and the columns they write (Quantity.column)
+_NAMES = (
+    "^([FM][1-9][0-9]*(V|H|\\+|-)?|PRU[1-9][0-9]*[VH]|largest_force|largest_moment"
+    "|torque_(mean|max|min|range)|steadiness)$"
+)
 _COLUMNS = (
     "^([FM][1-9][0-9]*(V|H|\\+|-)?_(N|Nm)|PRU[1-9][0-9]*[VH]_Nm_per_kW|largest_force_N"
     "|largest_moment_Nm|torque_(mean|max|min|range)_Nm|steadiness)$"
@@ -1303,7 +1309,10 @@ def sweep():
     quantity = closed(
         "a quantity reported at every point",
         {
-            "name": text("as asked for (F2V, largest_moment)"),
+            "name": text(
+                "as asked for, in capitals (F2V, PRU1H) or lower case (largest_moment)",
+                pattern=_NAMES,
+            ),
             "column": text("its key in points", pattern=_COLUMNS),
             "unit": text('"N", "Nm" or ""', enum=("N", "Nm", "")),
             "kind": text("what it is", enum=("force", "moment", "torque", "steadiness", "pru")),
@@ -1338,7 +1347,6 @@ def sweep():
         "balance sweep --format json: one engine at every value of one key (parameter, "
         "points), or over a grid of two (parameters, shape, points: the second varying "
         "fastest) (SweepResult.to_dict, SweepGrid.to_dict). SI units.",
-        [],
         {
             "name": ENGINE_NAME,
             "config": CONFIG,
@@ -1400,7 +1408,7 @@ def schemas():
     ):
         out[schema_name(name, DOCUMENT_VERSION)] = build()
     out[schema_name("steadiness", STEADINESS_VERSION)] = steadiness()
-    return out
+    return {name: with_defs(schema) for name, schema in out.items()}
 
 
 def render(schema):
