@@ -22,8 +22,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from balance_cli.output import DOCUMENT_VERSION  # noqa: E402
-from balance_cli.schemas import STEADINESS_VERSION, schema_name  # noqa: E402
+from balance_cli.output import DOCUMENT_VERSION, STEADINESS_VERSION  # noqa: E402
+from balance_cli.schemas import schema_name  # noqa: E402
 
 TARGET = ROOT / "balance_cli" / "schemas"
 DRAFT = "https://json-schema.org/draft/2020-12/schema"

@@ -20,22 +20,18 @@ from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
-__all__ = ["DOCUMENTS", "STEADINESS_VERSION", "Problem", "schema", "schema_name", "problem"]
+from ..output import DOCUMENT_VERSION, READABLE_VERSIONS, STEADINESS_VERSION
 
-#: the version of the steadiness document, which has its own (the others are
-#: balance_cli.output.DOCUMENT_VERSION)
-STEADINESS_VERSION = 1
+__all__ = ["DOCUMENTS", "Problem", "schema", "schema_name", "problem"]
+
 #: every document and the versions whose schemas ship: the last is the version balance writes
 DOCUMENTS = {
-    "compare": (1, 2, 3),
-    "counterweight": (3,),
-    "torque": (3,),
-    "torsion": (3,),
+    "compare": READABLE_VERSIONS,
+    **{
+        name: (DOCUMENT_VERSION,)
+        for name in ("counterweight", "torque", "torsion", "regress", "search", "family", "sweep")
+    },
     "steadiness": (STEADINESS_VERSION,),
-    "regress": (3,),
-    "search": (3,),
-    "family": (3,),
-    "sweep": (3,),
 }
 
 _FOLDER = Path(__file__).resolve().parent
@@ -99,7 +95,7 @@ class Problem:
         return f"{self.path}: {self.message}"
 
 
-def json_path(parts) -> str:
+def _json_path(parts) -> str:
     """A JSON path from keys and indexes: ``$.engines[0].name``."""
     out = "$"
     for part in parts:
@@ -214,8 +210,10 @@ def problem(instance, document: str, version: int | None = None) -> "Problem | N
             break
         error = best_match(inner)
     if error is not None:
-        return Problem(json_path(error.absolute_path), _words(error), name)
+        return Problem(_json_path(error.absolute_path), _words(error), name)
     where = _non_finite(instance)
     if where is not None:
-        return Problem(json_path(where), "is not a finite number (JSON has no NaN, Infinity)", name)
+        return Problem(
+            _json_path(where), "is not a finite number (JSON has no NaN, Infinity)", name
+        )
     return None
