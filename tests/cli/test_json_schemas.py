@@ -125,7 +125,12 @@ def documents(tmp_path_factory):
             ),
         ],
         "search": [
-            run("search", TEMPLATES / "inline-3-2stroke.toml", "--top", "3", "--workers", "1"),
+            # every shipped template (the in-line twelve's exhaustive search by its heuristic)
+            *(
+                run("search", template, "--top", "3", "--workers", "1")
+                for template in sorted(TEMPLATES.glob("*.toml"))
+                if template.name != "inline-12-2stroke.toml"
+            ),
             run(
                 "search",
                 TEMPLATES / "inline-6-4stroke.toml",
