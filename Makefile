@@ -13,7 +13,7 @@ LINT   := $(VENV)/.installed-lint
 # the documentation tools (docs)
 DOCS   := $(VENV)/.installed-docs
 
-.PHONY: setup demo test lint docs bench validate regress-update install-check clean
+.PHONY: setup demo test lint docs bench validate schemas regress-update install-check clean
 
 $(VENV)/bin/python:
 	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 11))' || \
@@ -87,6 +87,11 @@ bench: $(STAMP)
 validate: $(STAMP)
 	$(BIN)/python tools/validation_report.py
 
+# balance_cli/schemas/*.json, the JSON Schemas of the documents, from tools/json_schemas.py (a
+# test checks that the committed ones are current)
+schemas: $(STAMP)
+	$(BIN)/python tools/json_schemas.py
+
 # rewrite the golden regression tables after an intended change (balance regress --update);
 # never in CI
 regress-update: $(STAMP)
@@ -116,6 +121,8 @@ install-check:
 	  run '^Name: engine-balance$$' pip show engine-balance; \
 	  run '/site-packages/balance_cli/library$$' \
 	    python -c 'import balance_cli.config.library as l; print(l.library_folder())'; \
+	  run '^balance compare document, version 3$$' \
+	    python -c 'from balance_cli.schemas import schema; print(schema("compare")["title"])'; \
 	  echo "install-check: $$passed passed, 0 failed"
 
 clean:

@@ -27,6 +27,7 @@ __all__ = [
     "to_json",
     "DOCUMENT_VERSION",
     "READABLE_VERSIONS",
+    "STEADINESS_VERSION",
 ]
 
 #: version of the JSON documents balance writes. 2 added the vertical and horizontal
@@ -36,6 +37,8 @@ __all__ = [
 #: reads baselines of versions 1 and 2 (what it compares is the same in 2 and 3)
 DOCUMENT_VERSION = 3
 READABLE_VERSIONS = (1, 2, 3)
+#: version of the steadiness document (balance steadiness --format json), counted apart
+STEADINESS_VERSION = 1
 
 
 def _reason(exc):

@@ -7,6 +7,7 @@ from pathlib import Path
 import click
 import numpy as np
 
+from ..output import STEADINESS_VERSION
 from ..report.csvfile import torque_csv
 from ..report.torque import steadiness_text, torque_tables
 from ..units import Scale
@@ -171,7 +172,7 @@ def steadiness(torque_file, inertia, speed, load, target, fmt, output):
             None if target is None else flywheel_for(target, torque_nm, cycle, speed_rad_s, load)
         )
     document = {
-        "balance_version": 1,
+        "balance_version": STEADINESS_VERSION,
         "torque_file": str(torque_file),
         "cycle_deg": cycle,
         **speed.to_dict(),

@@ -16,6 +16,7 @@ a fraction ``rtol`` of itself turns by at most that much), whichever is larger.
 """
 
 import math
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -24,6 +25,7 @@ from ..analysis.results import Comparison, analyse, compare
 from ..analysis.shaking import check_settings
 from ..errors import AnalysisError, RegressError
 from ..output import DOCUMENT_VERSION, READABLE_VERSIONS
+from ..schemas import problem
 from ..tabular import Tabular, joined
 from ..tolerances import FIRING_CHANGE_DEG, NOISE_FLOOR, PHASE_CHANGE_DEG, PHASE_FLOOR
 from ..units import angle_change
@@ -141,60 +143,17 @@ def _number(value):
     return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
 
 
-#: what a regression table reads of each engine of a baseline, by the version that wrote it:
-#: its own keys, those of its firing, those of each order's force and moment with {u} the
-#: unit, N or Nm; version 2 added the moments' largest values, the vertical and the vertical
-#: and horizontal components of every order
-_V1_ENGINE = (
-    "name",
-    "config",
-    "cylinders",
-    "cycle",
-    "frame",
-    "speed_rpm",
-    "unit_force_N",
-    "largest_resultant_N",
-    "counterweighted_resultant_N",
-    "sampling_ok",
-    "firing",
-    "orders",
-)
-_FIRING = ("order", "angles_deg", "uniform")
-_V1_PART = (
-    "forward_{u}",
-    "forward_deg",
-    "backward_{u}",
-    "backward_deg",
-    "max_{u}",
-    "min_{u}",
-    "axis_deg",
-)
-_NEEDED: dict[int, tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]]] = {
-    1: (_V1_ENGINE, _FIRING, _V1_PART),
-    2: (
-        _V1_ENGINE + ("largest_moment_Nm", "counterweighted_moment_Nm", "vertical_deg"),
-        _FIRING,
-        _V1_PART + ("vertical_{u}", "vertical_deg", "horizontal_{u}", "horizontal_deg"),
-    ),
-}
-#: the numbers among an engine's keys (resultants, moments, speed, the vertical)
-_ENGINE_NUMBERS = (
-    "speed_rpm",
-    "largest_resultant_N",
-    "counterweighted_resultant_N",
-    "largest_moment_Nm",
-    "counterweighted_moment_Nm",
-    "vertical_deg",
-)
-
-
-def _missing(record, keys):
-    """The keys of ``keys`` that ``record`` lacks, in their order."""
-    return [key for key in keys if key not in record]
-
-
-def _lacks(keys):
-    return f"lacks {', '.join(repr(k) for k in keys)}, which balance regress compares"
+def _where(document, path):
+    """A JSON path with the name of the engine it leads into: ``$.engines[0] ('V8')...``."""
+    match = re.match(r"^\$\.engines\[(\d+)\]", path)
+    if match is None:
+        return path
+    engines = document.get("engines")
+    index = int(match.group(1))
+    name = engines[index].get("name") if isinstance(engines[index], dict) else None
+    if not isinstance(name, str):
+        return path
+    return f"{match.group(0)} ({name!r}){path[match.end() :]}"
 
 
 def _fail(where, problem):
@@ -205,8 +164,11 @@ def _fail(where, problem):
 
 
 def check_baseline(document, path="<baseline>"):
-    """Raise RegressError unless ``document`` is a comparison balance wrote: every record a
-    regression table reads is there, with numbers where numbers belong."""
+    """Raise RegressError unless ``document`` is a comparison balance wrote: valid under the
+    JSON Schema of its version (:mod:`balance_cli.schemas`: ``compare.v3.json`` is every key of
+    the document, ``compare.v1.json`` and ``v2`` what a regression table reads of one that
+    old), with settings that work together and each engine and order listed once. The error
+    names the file, the JSON path and what is wrong there."""
     for key in ("engines", "balance_version"):
         if not isinstance(document, dict) or key not in document:
             _fail(path, f"not a `balance compare --format json` document (no {key!r})")
@@ -217,81 +179,22 @@ def check_baseline(document, path="<baseline>"):
             f"reads versions {', '.join(map(str, READABLE_VERSIONS))}; write the "
             "baseline again with this version"
         )
-    for key in ("samples", "max_order"):
-        if isinstance(document.get(key), bool) or not isinstance(document.get(key), int):
-            _fail(path, f"has no whole number {key!r}")
-    override = document.get("speed_override_rpm")
-    if override is not None and not (_number(override) and override > 0):
-        _fail(path, f"records a speed_override_rpm that is not a speed ({override!r})")
+    found = problem(document, "compare", version)
+    if found is not None:
+        _fail(f"{path}: {_where(document, found.path)}", f"{found.message} ({found.schema})")
     try:
         check_settings(document["samples"], document["max_order"])
     except AnalysisError as exc:
         _fail(path, f"records {exc}")
-    engines = document["engines"]
-    if not isinstance(engines, list) or not engines:
-        _fail(path, "lists no engines")
-    # a later version than those listed reads at least the latest's keys
-    engine_keys, firing_keys, part_keys = _NEEDED[max(v for v in _NEEDED if v <= version)]
-    names = []
-    for i, engine in enumerate(engines, 1):
-        where = f"{path}: engines[{i}]"
-        if not isinstance(engine, dict):
-            _fail(where, "is not an object")
-        if isinstance(engine.get("name"), str):
-            where += f" ({engine['name']!r})"
-        missing = _missing(engine, engine_keys)
-        if missing:
-            _fail(where, _lacks(missing))
-        if not isinstance(engine["name"], str) or not isinstance(engine["config"], str):
-            _fail(where, "has a name or config that is not text")
-        odd = [k for k in _ENGINE_NUMBERS if k in engine_keys and not _number(engine[k])]
-        if odd:
-            _fail(where, f"has {', '.join(repr(k) for k in odd)} that is not a finite number")
-        if (
-            not _number(engine["unit_force_N"])
-            or not _number(engine["cylinders"])
-            or engine["unit_force_N"] <= 0
-            or engine["cylinders"] <= 0
-        ):
-            _fail(where, "has no positive unit_force_N and cylinders")
-        firing = engine["firing"]
-        if isinstance(firing, dict) and _missing(firing, firing_keys):
-            _fail(f"{where} firing", _lacks(_missing(firing, firing_keys)))
-        if (
-            not isinstance(firing, dict)
-            or not isinstance(firing.get("order"), list)
-            or not isinstance(firing.get("angles_deg"), list)
-            or not all(_number(a) for a in firing["angles_deg"])
-        ):
-            _fail(where, "has no firing order and angles")
-        orders = engine["orders"]
-        if not isinstance(orders, list):
-            _fail(where, "has no list of orders")
-        for o in orders:
-            parts = [o.get(part) for part in ("force", "moment")] if isinstance(o, dict) else []
-            if (
-                not isinstance(o, dict)
-                or not _number(o.get("order"))
-                or not all(
-                    isinstance(p, dict)
-                    and all(_number(v) or k == "axis_deg" and v is None for k, v in p.items())
-                    for p in parts
-                )
-                or len(parts) != 2
-            ):
-                _fail(
-                    where,
-                    "has an order that is not {order, force: {...}, moment: {...}} of "
-                    "finite numbers (an axis may be null)",
-                )
-            for part, unit in (("force", "N"), ("moment", "Nm")):
-                missing = _missing(o[part], [k.format(u=unit) for k in part_keys])
-                if missing:
-                    _fail(f"{where} order {o['order']:g} {part}", _lacks(missing))
-        listed = [o["order"] for o in orders]
-        if len(set(listed)) != len(listed):
-            _fail(where, "lists an order twice")
-        names.append(engine["name"])
+    for i, engine in enumerate(document["engines"]):
+        listed = [o["order"] for o in engine["orders"]]
+        twice = next((k for k in listed if listed.count(k) > 1), None)
+        if twice is not None:
+            _fail(
+                f"{path}: {_where(document, f'$.engines[{i}].orders')}",
+                f"lists order {twice} twice",
+            )
+    names = [engine["name"] for engine in document["engines"]]
     twice = sorted({n for n in names if names.count(n) > 1})
     if twice:
         raise RegressError(

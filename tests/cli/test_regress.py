@@ -149,7 +149,9 @@ def test_the_baseline_settings_are_used(project):
         ("[1, 2]", "not a `balance compare --format json` document"),
         (
             '{"balance_version": 1, "samples": 256, "max_order": 8, "engines": [{"name": "x"}]}',
-            "engines[1] ('x'): lacks 'config', 'cylinders', 'cycle', 'frame', 'speed_rpm'",
+            "$.engines[0] ('x'): lacks 'config', 'cylinders', 'cycle', 'frame', 'speed_rpm', "
+            "'unit_force_N', 'largest_resultant_N', 'counterweighted_resultant_N', "
+            "'sampling_ok', 'firing', 'orders' (compare.v1.json)",
         ),
     ],
 )
@@ -190,7 +192,11 @@ def test_usage_errors_and_outputs_that_are_inputs(project):
         ('{"balance_version": true, "engines": [1]}', "written by balance_version True"),
         (
             '{"balance_version": 1, "samples": -5, "max_order": 8, "engines": [1]}',
-            "records samples must be from 33",
+            "$.samples: is -5, below 5 (compare.v1.json)",
+        ),
+        (
+            '{"balance_version": 3, "samples": 256, "max_order": 8, "engines": [1]}',
+            "$: lacks 'reference' (compare.v3.json)",
         ),
     ],
 )
@@ -204,12 +210,16 @@ def test_baselines_that_are_not_comparisons(tmp_path, content, words):
 @pytest.mark.parametrize(
     "damage, words",
     [
-        (lambda e: e["orders"][0].pop("force"), "has an order that is not"),
-        (lambda e: e.update(orders="x"), "has no list of orders"),
-        (lambda e: e.update(name=["a"]), "has a name or config that is not text"),
-        (lambda e: e["orders"][0]["force"].update(max_N=math.nan), "has an order that is not"),
-        (lambda e: e.update(unit_force_N=-1.0), "has no positive unit_force_N"),
-        (lambda e: e["firing"].update(order=None), "has no firing order"),
+        (lambda e: e["orders"][0].pop("force"), ".orders[0]: lacks 'force' (compare.v3.json)"),
+        (lambda e: e.update(orders="x"), '.orders: is "x", not a list'),
+        (lambda e: e.update(name=["a"]), '$.engines[0].name: is ["a"], not text'),
+        (
+            lambda e: e["orders"][0]["force"].update(max_N=math.nan),
+            ".orders[0].force.max_N: is not a finite number",
+        ),
+        (lambda e: e.update(unit_force_N=-1.0), ".unit_force_N: is -1.0, not above 0"),
+        (lambda e: e["firing"].update(order=None), ".firing.order: is null, not a list"),
+        (lambda e: e["orders"].append(e["orders"][0]), ".orders: lists order 1 twice"),
     ],
 )
 def test_a_damaged_baseline_is_one_error_line(tmp_path, damage, words):
@@ -227,28 +237,43 @@ def test_a_damaged_baseline_is_one_error_line(tmp_path, damage, words):
 @pytest.mark.parametrize(
     "damage, words",
     [
-        (lambda e: e.pop("largest_moment_Nm"), "('In-line 4, car'): lacks 'largest_moment_Nm'"),
+        (
+            lambda e: e.pop("largest_moment_Nm"),
+            "$.engines[0] ('In-line 4, car'): lacks 'largest_moment_Nm' (compare.v3.json)",
+        ),
         (lambda e: e.pop("vertical_deg"), "('In-line 4, car'): lacks 'vertical_deg'"),
         (
             lambda e: e["orders"][1]["moment"].pop("vertical_Nm"),
-            "('In-line 4, car') order 2 moment: lacks 'vertical_Nm'",
+            "('In-line 4, car').orders[1].moment: lacks 'vertical_Nm'",
         ),
         (
             lambda e: [e["orders"][0]["force"].pop(k) for k in ("horizontal_N", "vertical_deg")],
-            "order 1 force: lacks 'vertical_deg', 'horizontal_N'",
+            ".orders[0].force: lacks 'vertical_deg', 'horizontal_N'",
         ),
-        (lambda e: e["firing"].pop("uniform"), "('In-line 4, car') firing: lacks 'uniform'"),
+        (lambda e: e["firing"].pop("uniform"), "('In-line 4, car').firing: lacks 'uniform'"),
         (lambda e: e.pop("sampling_ok"), "lacks 'sampling_ok'"),
         (
             lambda e: e.update(counterweighted_moment_Nm=None),
-            "has 'counterweighted_moment_Nm' that is not a finite number",
+            "('In-line 4, car').counterweighted_moment_Nm: is null, not a number",
+        ),
+        # version 3's schema is closed: a key it does not name is drift, not data
+        (
+            lambda e: e.update(comment="checked by hand"),
+            "('In-line 4, car'): has 'comment', which the schema does not define (compare.v3.json)",
+        ),
+        (lambda e: e.pop("pru_note"), "('In-line 4, car'): lacks 'pru_note' (compare.v3.json)"),
+        (
+            lambda e: e["firing"].update(given="yes"),
+            "('In-line 4, car').firing.given: is \"yes\", not true or false",
         ),
     ],
 )
 def test_a_version_2_baseline_lacking_what_regress_compares_is_refused(tmp_path, damage, words):
-    """Each key the comparison reads is needed: a record without one used to pass (the key
-    compared only "where both documents have it"), leaving that guard off. Refused naming the
-    file, the engine and the key, with --update and --output too: nothing written, the
+    """A baseline is checked against the schema of its version (compare.v3.json): each key the
+    comparison reads is needed (a record without one used to pass, the key compared only
+    "where both documents have it", leaving that guard off), and so is every other key, and
+    no key the schema does not name. Refused in one line naming the file, the JSON path with
+    its engine and what is wrong, with --update and --output too: nothing written, the
     baseline as it was."""
     config = tmp_path / "car.toml"
     text = (CONFIGS / "inline-4-car.toml").read_text(encoding="utf-8")
@@ -262,20 +287,50 @@ def test_a_version_2_baseline_lacking_what_regress_compares_is_refused(tmp_path,
     before = snapshot(tmp_path)
     for extra in ([], ["--update"], ["--output", tmp_path / "moved.json"]):
         result = invoke("regress", baseline, config, *extra)
-        check_refused(result, 1, f"{baseline}: engines[1] ", before, tmp_path)
+        check_refused(result, 1, f"{baseline}: $.engines[0] ", before, tmp_path)
         assert words in result.stderr, result.stderr
     with pytest.raises(balance.RegressError, match=re.escape(words)):
         regression(document, document)
 
 
 def test_a_version_1_baseline_needs_only_version_1_keys():
-    """The golden version-1 baseline lacks every version-2 key and is read; without one of
-    version 1's (speed_rpm) it is refused like a version-2 one."""
+    """The golden version-1 baseline lacks every version-2 key and is read, and so is one
+    with keys that version 1 did not name (its schema, compare.v1.json, is what regress reads:
+    releases of version 1 added keys to it); without one of version 1's keys (speed_rpm) it
+    is refused like a version-3 one."""
     old = json.loads((ROOT / "tests" / "golden" / "compare-v1.json").read_text(encoding="utf-8"))
     check_baseline(old)
+    check_baseline({**old, "comment": "kept by hand"})
     old["engines"][2].pop("speed_rpm")
-    with pytest.raises(balance.RegressError, match=r"engines\[3\] .*: lacks 'speed_rpm'"):
+    with pytest.raises(
+        balance.RegressError, match=r"\$\.engines\[2\] \('.*'\): lacks 'speed_rpm' \(compare\.v1"
+    ):
         check_baseline(old, "compare-v1.json")
+
+
+def test_a_version_2_baseline_needs_version_2_keys():
+    """A version-2 baseline is read against compare.v2.json: the vertical and horizontal
+    components are needed, the keys version 3 added are not."""
+    document = balance.compare([balance.analyse(balance.load(CONFIGS / "inline-4-car.toml"))])
+    v2 = {**document.to_dict(), "balance_version": 2}
+    v2["engines"][0] = {k: v for k, v in v2["engines"][0].items() if k not in ("pru", "pru_note")}
+    check_baseline(v2)
+    v2["engines"][0]["orders"][0]["moment"].pop("horizontal_deg")
+    with pytest.raises(
+        balance.RegressError,
+        match=re.escape(
+            "$.engines[0] ('In-line 4, car proportions').orders[0].moment: lacks "
+            "'horizontal_deg' (compare.v2.json)"
+        ),
+    ):
+        check_baseline(v2, "v2.json")
+
+
+def test_settings_that_do_not_work_together_are_refused():
+    """The schema takes each setting alone; 20 samples cannot resolve 8 orders (33 needed)."""
+    old = json.loads((ROOT / "tests" / "golden" / "compare-v1.json").read_text(encoding="utf-8"))
+    with pytest.raises(balance.RegressError, match="records samples must be from 49 to 65536"):
+        check_baseline({**old, "samples": 20}, "compare-v1.json")
 
 
 def test_regress_finds_configurations_from_the_baselines_folders(tmp_path, monkeypatch):
