@@ -6,6 +6,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..model import Engine, MountSystem
+from ..tabular import Tabular
 from ..units import phasor_deg, rad_s_to_rpm
 from .axes import Axis
 from .response import Response
@@ -72,7 +73,7 @@ def _system_dict(system: MountSystem) -> dict:
 
 
 @dataclass(frozen=True)
-class MountResult:
+class MountResult(Tabular):
     """The engine on its mounts: modes, axes, static deflections and forced response.
 
     Attributes
@@ -254,10 +255,3 @@ class MountResult:
                         )
                     )
         return out
-
-    def to_pandas(self):
-        """:meth:`records` as a pandas DataFrame (pandas is not one of balance's
-        dependencies: install it to use this)."""
-        import pandas  # type: ignore[import-untyped]
-
-        return pandas.DataFrame.from_records(self.records())
