@@ -16,7 +16,7 @@ and planes are numbered from 1, as in the files and the tables. See the document
 balance from Python" and its API reference for every name, unit and exception.
 
 The names below load on first use where they need what most commands do not (matplotlib for
-:mod:`balance_cli.plot`, the search, sweeps, families and torsional vibration), so that
+:mod:`balance_cli.plot`, the search, sweeps, families, torsional vibration and mounts), so that
 ``balance compare`` starts fast; ``dir(balance_cli)`` lists them all.
 """
 
@@ -86,6 +86,8 @@ from .model import (
     Cylinder,
     Engine,
     GasCycle,
+    Mount,
+    MountSystem,
     Parts,
     ShaftDisk,
     Throw,
@@ -109,6 +111,8 @@ _LAZY = {
     "FamilyResult": (".studies.family", "FamilyResult"),
     "torsional_vibration": (".torsion", "torsional_vibration"),
     "TorsionResult": (".torsion", "TorsionResult"),
+    "mounts": (".mounting", "mounts"),
+    "MountResult": (".mounting", "MountResult"),
 }
 
 #: the subpackages, reachable as attributes whether or not something has imported them yet
@@ -123,6 +127,7 @@ _PACKAGES = (
     "harmonics",
     "kinematics",
     "model",
+    "mounting",
     "output",
     "report",
     "studies",
@@ -152,6 +157,8 @@ __all__ = [
     "BalancerShaftSpec",
     "TorsionModel",
     "ShaftDisk",
+    "MountSystem",
+    "Mount",
     # shaking forces and moments, firing, comparison
     "analyse",
     "compare",
@@ -194,7 +201,7 @@ __all__ = [
     "read_cycle_csv",
     "PressureCurve",
     "CycleCurve",
-    # studies, search, torsion, pictures (loaded on first use)
+    # studies, search, torsion, mounts, pictures (loaded on first use)
     "regression",
     "Regression",
     "Moved",

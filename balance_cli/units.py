@@ -42,6 +42,7 @@ STANDARD_GRAVITY = 9.80665
 _RPM = 2.0 * math.pi / 60.0
 
 _BAR = 1e5
+_LBF_PER_IN = 0.45359237 * STANDARD_GRAVITY / 0.0254
 _KGF_CM2 = STANDARD_GRAVITY * 1e4
 
 #: unit symbol -> factor to SI, per dimension
@@ -99,6 +100,16 @@ DIMENSIONS = {
     # a crankshaft section's twist stiffness and a damper's or a throw's viscous damping
     "torsional stiffness": {"N*m/rad": 1.0, "kN*m/rad": 1e3, "MN*m/rad": 1e6},
     "torsional damping": {"N*m*s/rad": 1.0, "kN*m*s/rad": 1e3},
+    # an engine mount's rate along one of its principal axes, and its viscous damping
+    "stiffness": {
+        "N/m": 1.0,
+        "N/mm": 1e3,
+        "kN/m": 1e3,
+        "kN/mm": 1e6,
+        "MN/m": 1e6,
+        "lbf/in": _LBF_PER_IN,
+    },
+    "viscous damping": {"N*s/m": 1.0, "N*s/mm": 1e3, "kN*s/m": 1e3},
 }
 
 #: one choice of display units: force unit -> (N per force unit, moment unit, N·m per moment
@@ -127,6 +138,8 @@ LIMITS = {
     "unbalance": (1e-12, 1e9, "kg*m", 1.0),
     "torsional stiffness": (1e-3, 1e13, "N*m/rad", 1.0),
     "torsional damping": (1e-9, 1e12, "N*m*s/rad", 1.0),
+    "stiffness": (1e-3, 1e12, "N/m", 1.0),
+    "viscous damping": (1e-6, 1e9, "N*s/m", 1.0),
 }
 
 #: what may set the thousands of a number apart (SI, ISO 80000-1: a space, never a comma or a
@@ -153,6 +166,8 @@ _EXAMPLES = {
     "unbalance": "0.072 kg*m",
     "torsional stiffness": "1.25e6 N*m/rad",
     "torsional damping": "2 N*m*s/rad",
+    "stiffness": "250 N/mm",
+    "viscous damping": "500 N*s/m",
 }
 
 
@@ -374,6 +389,8 @@ def _plural(dimension):
         "power": "powers",
         "torsional stiffness": "torsional stiffnesses",
         "torsional damping": "torsional damping coefficients",
+        "stiffness": "stiffnesses",
+        "viscous damping": "viscous damping coefficients",
     }.get(dimension, dimension + "s")
 
 

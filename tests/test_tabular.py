@@ -16,7 +16,7 @@ import balance_cli as balance
 from balance_cli.analysis.cylinders import cylinder_torques
 from balance_cli.analysis.series import Series
 from balance_cli.tabular import Tabular
-from tests.support import MRW2, PITCH, inline_template_text, inline_toml
+from tests.support import CONFIGS, MRW2, PITCH, inline_template_text, inline_toml
 
 #: one cylinder of a two-stroke: m = 0.5 kg, r = 40 mm, l = 140 mm, 3000 rpm
 SINGLE = """\
@@ -155,6 +155,11 @@ def results(tmp_path_factory):
         "SearchResult": balance.search(three, "M1", top=1, workers=1, max_order=2),
         "TorsionResult": balance.torsional_vibration(chain, [1000.0, 6000.0], 2),
         "Regression": balance.regression(baseline, balance.compare([faster]).to_dict()),
+        "MountResult": balance.mounts(
+            balance.load(CONFIGS / "mounts" / "four-mount-symmetric.toml"),
+            speeds_rpm=[1000.0],
+            orders=[2],
+        ),
     }
 
 
@@ -395,6 +400,32 @@ def test_regression_records_by_hand(results):
     assert_allclose(first["baseline"], MRW, rtol=1e-12)
     assert_allclose([first["now"], first["relative_change"]], [4 * MRW, 3.0], rtol=1e-12)
     assert first["engine"] == "single"
+
+
+def test_mount_records_by_hand(results):
+    """The symmetric example at 1000 rpm, order 2 alone: the in-line four's secondary force
+    F = A₂·(Ω/ω₀)² (vertical, at the centre of gravity) bounces the engine on 4·k_z = 800 N/mm:
+    |Z| = F/(4·k_z − m·ω²), ω = 2Ω; each mount sinks by Z plus the roll's ±b·θ_x. Rows: the
+    orders summed ("all") then order 2, each for the centre of gravity and the four mounts;
+    with one order the sum's peaks are the order's amplitudes."""
+    result = results["MountResult"]
+    engine = result.engine
+    part = balance.analyse(engine).order(2)
+    force = abs(part.force_forward + np.conj(part.force_backward))
+    omega = 2 * 1000 * math.pi / 30
+    force *= (1000 * math.pi / 30 / engine.speed_rad_s) ** 2
+    bounce = force / abs(800e3 - 150 * omega**2)
+    rows = result.records()
+    assert [(r["order"], r["where"]) for r in rows[:2]] == [
+        ("all", "centre of gravity"),
+        ("all", "front left"),
+    ]
+    assert len(rows) == 2 * 5
+    # the sum over a cycle is sampled 32 times a period of the order: within 1 − cos(π/32)
+    assert_allclose(rows[0]["z_m"], bounce, rtol=5e-3)
+    assert_allclose(rows[5]["z_m"], bounce, rtol=1e-9)  # the order's amplitude: a 6×6 solve
+    assert rows[5]["Fx_N"] is None and rows[6]["rx_rad"] is None
+    assert rows[6]["where"] == "front left" and rows[6]["Fz_N"] > 0
 
 
 def test_without_pandas_to_pandas_names_the_extra(results, monkeypatch):

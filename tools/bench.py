@@ -23,6 +23,9 @@ ratio of the medians is what counts, so the machine's speed cancels out.
   (tests/validation/reference/opentorsion_ice/mendes2008.toml with a [gas] cycle): modes and
   the forced response at 100 speeds, orders ½ to 12, in one process (target: well under a
   second; at most 0.5 s)
+- ``balance.mounts`` of configs/mounts/four-mount-coupled.toml: modes, axes, static
+  deflections and the forced response at 100 speeds, orders ½ to 12 (24 orders), in one
+  process (target: well under a second; at most 0.3 s)
 - how often ``torque`` and ``torsional_vibration`` close the linkage (tools/closures.py)
 
 ``make bench BASE=/path/to/another/checkout`` (one with its own ``.venv``, as ``make setup``
@@ -249,6 +252,28 @@ def torsion_bench():
     return verdict != "ok"
 
 
+def mounts_bench():
+    """The coupled example's whole mount analysis at 100 speeds, orders ½ to 12, timed in this
+    process (median of 5)."""
+    import numpy as np
+
+    import balance_cli as balance
+
+    engine = balance.load(ROOT / "configs" / "mounts" / "four-mount-coupled.toml")
+    speeds = np.linspace(300.0, 6000.0, 100)
+    balance.mounts(engine, speeds, max_order=12)
+    times = []
+    for _ in range(5):
+        start = time.perf_counter()
+        balance.mounts(engine, speeds, max_order=12)
+        times.append(time.perf_counter() - start)
+    wall = statistics.median(times)
+    verdict = "ok" if wall <= 0.3 else "TOO SLOW"
+    print(f"{wall * 1000:8.1f} ms  median of 5  balance.mounts, 100 speeds, orders 1/2 to 12")
+    print(f"mount analysis in {wall:.3f} s (target at most 0.3 s): {verdict}\n")
+    return verdict != "ok"
+
+
 def main():
     # byte-compile balance first, as installing numpy compiled numpy: with
     # PYTHONDONTWRITEBYTECODE set (as on this project's machines) every run would otherwise
@@ -280,6 +305,7 @@ def main():
     failed |= search_bench()
     failed |= family_bench()
     failed |= torsion_bench()
+    failed |= mounts_bench()
     subprocess.run([sys.executable, str(ROOT / "tools" / "closures.py")], cwd=ROOT, check=True)
     return 1 if failed else 0
 

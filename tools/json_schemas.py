@@ -1091,6 +1091,257 @@ def torsion():
     )
 
 
+def mounts():
+    coordinates = ("x", "y", "z", "rx", "ry", "rz")
+    motions = ("fore-aft", "lateral", "bounce", "roll", "pitch", "yaw")
+    mount_name = text("the mount's name")
+
+    def vector(description, count=3, item=None):
+        return array(
+            item or number("engine axes: x, y, z"), description, min_items=count, max_items=count
+        )
+
+    axis = closed(
+        "a line of engine axes",
+        {
+            "direction": vector(
+                "its unit direction (x first positive)",
+                item=number("a component, −1 to 1", minimum=-1, maximum=1),
+            ),
+            "through_m": vector("its point nearest the centre of gravity, from it, m"),
+            "distance_m": size("how far it passes from the centre of gravity, m"),
+        },
+    )
+
+    def load(kind):
+        torque_nm = (
+            {"type": "null", "description": "no torque: the weight"}
+            if kind == "weight"
+            else number("the mean torque whose reaction this is, N·m (positive driving)")
+        )
+        return closed(
+            f"the mounts under the {kind}",
+            {
+                "load": text("which load", enum=(kind,)),
+                "source": text("where the load comes from, in words"),
+                "torque_Nm": torque_nm,
+                "wrench": closed(
+                    "the load at the centre of gravity",
+                    {
+                        **{k: number("N") for k in ("Fx_N", "Fy_N", "Fz_N")},
+                        **{k: number("N·m") for k in ("Mx_Nm", "My_Nm", "Mz_Nm")},
+                    },
+                ),
+                "centre_of_gravity": closed(
+                    "its translation (m) and rotation (rad)",
+                    {
+                        **{k: number("m") for k in ("x_m", "y_m", "z_m")},
+                        **{k: number("rad") for k in ("rx_rad", "ry_rad", "rz_rad")},
+                    },
+                ),
+                "mounts": array(
+                    closed(
+                        "one mount under the load",
+                        {
+                            "mount": mount_name,
+                            "deflection_m": vector("its deflection, engine axes, m"),
+                            "local_deflection_m": vector(
+                                "along its own directions (compression, shears), m"
+                            ),
+                            "force_N": vector("the force it passes on to the frame, N"),
+                        },
+                    ),
+                    "per mount",
+                    min_items=1,
+                ),
+            },
+            null=kind == "torque",
+        )
+
+    peak = {
+        key: size("m" if key.endswith("_m") else "rad")
+        for key in ("x_m", "y_m", "z_m", "rx_rad", "ry_rad", "rz_rad")
+    }
+    engine = closed(
+        "one engine on its mounts (MountResult.to_dict)",
+        {
+            "name": ENGINE_NAME,
+            "config": CONFIG,
+            "cycle": CYCLE,
+            "speed_rpm": SPEED,
+            "system": closed(
+                "the mount system read",
+                {
+                    "mass_kg": positive("kg"),
+                    "centre_of_gravity_m": vector(
+                        "from the crank axis at the cylinders' mean axial position, m"
+                    ),
+                    "inertia_kgm2": array(
+                        vector("a row, kg·m²"),
+                        "the matrix J about the centre of gravity, H = J·ω",
+                        min_items=3,
+                        max_items=3,
+                    ),
+                    "rotation": text(
+                        "how the crank turns seen from the front",
+                        enum=("clockwise", "anticlockwise"),
+                    ),
+                    "mounts": array(
+                        closed(
+                            "one mount",
+                            {
+                                "mount": mount_name,
+                                "position_m": vector("from the centre of gravity, m"),
+                                "rates_N_per_m": vector(
+                                    "the principal rates along its directions, N/m",
+                                    item=positive("N/m"),
+                                ),
+                                "directions": array(
+                                    vector(
+                                        "a unit vector",
+                                        item=number("a component, −1 to 1", minimum=-1, maximum=1),
+                                    ),
+                                    "the rates' directions (compression first, for an "
+                                    "inclined mount)",
+                                    min_items=3,
+                                    max_items=3,
+                                ),
+                                "loss_factor": number("η", minimum=0, maximum=2),
+                                "damping_Ns_per_m": vector(
+                                    "viscous, along its directions, N·s/m", item=size("N·s/m")
+                                ),
+                            },
+                        ),
+                        "its mounts",
+                        min_items=1,
+                    ),
+                },
+            ),
+            "modes": array(
+                closed(
+                    "one rigid-body mode",
+                    {
+                        "mode": integer("its number, from 1", 1, 6),
+                        "frequency_Hz": size("Hz"),
+                        "motion": text("its dominant motion", enum=motions),
+                        "purity_pct": number("the dominant motion's share of its energy, %"),
+                        "energy_pct": closed(
+                            "the kinetic-energy distribution, % per coordinate",
+                            {key: number("%") for key in coordinates},
+                        ),
+                        "shape": array(
+                            number("mass-normalised: m/√kg, rad/(√kg·m)"),
+                            "x, y, z, rx, ry, rz",
+                            min_items=6,
+                            max_items=6,
+                        ),
+                    },
+                ),
+                "the six modes, lowest first",
+                min_items=6,
+                max_items=6,
+            ),
+            "torque_roll_axis": axis,
+            "elastic_axis": axis,
+            "axes_angle_deg": number("the angle between them, degrees", minimum=0, maximum=90),
+            "static": closed(
+                "static deflections",
+                {"weight": load("weight"), "torque": load("torque")},
+            ),
+            "with_gas": flag("the roll excitation has a gas torque"),
+            "orders": array(ORDER, "the orders applied", min_items=1),
+            "resonances": array(
+                closed(
+                    "a resonance crossed within the speeds",
+                    {
+                        "mode": integer("the mode", 1, 6),
+                        "motion": text("its dominant motion", enum=motions),
+                        "order": ORDER,
+                        "speed_rpm": positive("where the order's frequency is the mode's, rev/min"),
+                        "excited": flag("the order drives the mode there"),
+                    },
+                ),
+                "by speed",
+            ),
+            "speeds": array(
+                closed(
+                    "the forced response at one speed",
+                    {
+                        "speed_rpm": positive("rev/min"),
+                        "motion_peak": closed(
+                            "the centre of gravity's largest motion, all orders over a cycle",
+                            peak,
+                        ),
+                        "mounts": array(
+                            closed(
+                                "a mount's largest, all orders over a cycle",
+                                {
+                                    "mount": mount_name,
+                                    "force_peak_N": vector(
+                                        "each component's peak, N", item=size("N")
+                                    ),
+                                    "force_magnitude_peak_N": size("the vector's largest size, N"),
+                                    "deflection_peak_m": vector(
+                                        "each component's peak, m", item=size("m")
+                                    ),
+                                },
+                            ),
+                            "per mount",
+                        ),
+                        "orders": array(
+                            closed(
+                                "one order",
+                                {
+                                    "order": ORDER,
+                                    "motion": array(
+                                        size("m or rad"),
+                                        "amplitudes x, y, z, rx, ry, rz",
+                                        min_items=6,
+                                        max_items=6,
+                                    ),
+                                    "motion_deg": array(
+                                        degrees("amplitude·cos(kθ − phase)"),
+                                        "their phases",
+                                        min_items=6,
+                                        max_items=6,
+                                    ),
+                                    "mounts": array(
+                                        closed(
+                                            "a mount's force on the frame",
+                                            {
+                                                "mount": mount_name,
+                                                "force_N": vector(
+                                                    "amplitudes Fx, Fy, Fz, N", item=size("N")
+                                                ),
+                                                "force_deg": vector(
+                                                    "their phases",
+                                                    item=degrees("amplitude·cos(kθ − phase)"),
+                                                ),
+                                            },
+                                        ),
+                                        "per mount",
+                                    ),
+                                },
+                            ),
+                            "per order",
+                        ),
+                    },
+                ),
+                "per speed",
+                min_items=1,
+            ),
+        },
+    )
+    return document(
+        "mounts",
+        DOCUMENT_VERSION,
+        "balance mounts --format json: the engine on its mounts (MountResult.to_dict per "
+        "engine): modes, axes, static deflections, resonances crossed and the forced response. "
+        "SI units, engine axes (x along the crank towards the front, z up).",
+        {"engines": array(engine, "one per engine with a [mounts] table", min_items=1)},
+    )
+
+
 def regress():
     value = {
         "type": ["number", "string", "boolean", "array", "null"],
@@ -1401,6 +1652,7 @@ def schemas():
         ("counterweight", counterweight),
         ("torque", torque),
         ("torsion", torsion),
+        ("mounts", mounts),
         ("regress", regress),
         ("search", search),
         ("family", family),

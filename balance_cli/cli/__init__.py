@@ -11,7 +11,18 @@ few commands on the group when imported here.
 
 import sys
 
-from . import compare, counterweight, inspect, pictures, regress, search, sweep, torque, torsion  # noqa: F401
+from . import (  # noqa: F401
+    compare,
+    counterweight,
+    inspect,
+    mounts,
+    pictures,
+    regress,
+    search,
+    sweep,
+    torque,
+    torsion,
+)
 from .group import main
 
 __all__ = ["main"]

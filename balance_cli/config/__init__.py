@@ -10,10 +10,10 @@ cylinder is found by its number.
 
 Modules: :mod:`.reader` (the text, its TOML, and typed values with units), :mod:`.builder`
 (the Engine from parsed data), :mod:`.sections` (crankshafts, counterweights and shafts,
-parts, gas, torsion), :mod:`.files` (files and folders to engines and configurations),
-:mod:`.library` (the shipped engines and templates, named ``library:`` and ``template:``),
-:mod:`.provenance` (a file's ``sources`` and ``estimates``) and :mod:`.write` (configurations
-written back as TOML).
+parts, gas, torsion), :mod:`.mounts` (the engine on its mounts), :mod:`.files` (files and
+folders to engines and configurations), :mod:`.library` (the shipped engines and templates,
+named ``library:`` and ``template:``), :mod:`.provenance` (a file's ``sources`` and
+``estimates``) and :mod:`.write` (configurations written back as TOML).
 """
 
 from .builder import build

@@ -9,6 +9,7 @@ import re
 from ..errors import ConfigError, ModelError
 from ..kinematics.linkage import check_assembly
 from ..model import FRAMES, Cylinder, Engine, Throw
+from .mounts import read_mounts
 from .provenance import read_provenance
 from .reader import (
     BANK_KEYS,
@@ -225,6 +226,7 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
                 if top.has("torsion")
                 else None
             ),
+            mounts=read_mounts(path, data["mounts"]) if top.has("mounts") else None,
         )
         check_assembly(engine)
     except ModelError as exc:

@@ -49,6 +49,8 @@ _NOT_NUMBERS = {
     "opposed_throw",
     "crankshaft",
     "master_bank",
+    "rotation",
+    "products_convention",
 }
 #: one segment of a selector: a key, optionally with a 1-based index of an array of tables
 _SEGMENT = r"[A-Za-z_][A-Za-z0-9_]*(?:\[[1-9][0-9]*\])?"

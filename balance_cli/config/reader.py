@@ -20,6 +20,8 @@ __all__ = [
     "GAS_KEYS",
     "TORSION_KEYS",
     "DISK_KEYS",
+    "MOUNTS_KEYS",
+    "MOUNT_KEYS",
     "BANK_KEYS",
     "THROW_KEYS",
     "CRANKSHAFT_KEYS",
@@ -56,6 +58,7 @@ TOP_KEYS = {
     "counterweights",
     "shafts",
     "torsion",
+    "mounts",
 }
 MASS_KEYS = {"reciprocating", "rotating", "knuckle", "crank"}
 PART_KEYS = {
@@ -95,6 +98,27 @@ TORSION_KEYS = {
     "load",
 }
 DISK_KEYS = {"name", "inertia", "stiffness", "damping"}
+MOUNTS_KEYS = {
+    "mass",
+    "centre_of_gravity",
+    "inertia",
+    "products",
+    "products_convention",
+    "rotation",
+    "loss_factor",
+    "mount",
+}
+MOUNT_KEYS = {
+    "name",
+    "position",
+    "stiffness",
+    "compression",
+    "shear",
+    "axis",
+    "shear_axis",
+    "loss_factor",
+    "damping",
+}
 BANK_KEYS = {"angle", "pin_offset"}
 THROW_KEYS = {"phase", "z", "crankshaft"}
 CRANKSHAFT_KEYS = {"x", "y", "direction", "phase"}

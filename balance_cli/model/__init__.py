@@ -8,8 +8,9 @@ analysis calls first.
 
 Modules: :mod:`.values` (one value's checks), :mod:`.crankshaft` (crankshafts and throws),
 :mod:`.cylinder`, :mod:`.as_built` (counterweights and balancer shafts), :mod:`.parts` (part
-data and the gas cycle), :mod:`.torsion` (the shaft line's mass-elastic model),
-:mod:`.engine` (the Engine), :mod:`.edit` (its values changed as a file writes them) and
+data and the gas cycle), :mod:`.torsion` (the shaft line's mass-elastic model), :mod:`.mounts`
+(the powertrain as a rigid body on its mounts), :mod:`.engine` (the Engine), :mod:`.edit` (its
+values changed as a file writes them) and
 :mod:`.invariants` (the rules it is checked against).
 """
 
@@ -18,6 +19,17 @@ from .crankshaft import REFERENCE_CRANKSHAFT, Crankshaft, Throw
 from .cylinder import Cylinder
 from .engine import Engine
 from .invariants import FRAMES, MAX_NAME_LENGTH
+from .mounts import (
+    DOF_LABELS,
+    MOTIONS,
+    PRODUCT_CONVENTIONS,
+    ROTATIONS,
+    STANDARD_GRAVITY,
+    Mount,
+    MountSystem,
+    inertia_matrix,
+    motion_name,
+)
 from .parts import GasCycle, Parts
 from .torsion import ShaftDisk, TorsionModel
 from .values import offset_position
@@ -39,4 +51,13 @@ __all__ = [
     "TorsionModel",
     "MAX_NAME_LENGTH",
     "REFERENCE_CRANKSHAFT",
+    "Mount",
+    "MountSystem",
+    "inertia_matrix",
+    "motion_name",
+    "MOTIONS",
+    "DOF_LABELS",
+    "ROTATIONS",
+    "PRODUCT_CONVENTIONS",
+    "STANDARD_GRAVITY",
 ]

@@ -10,6 +10,7 @@ from .crankshaft import REFERENCE_CRANKSHAFT, Crankshaft
 from .cylinder import Cylinder
 from .edit import edited
 from .invariants import check_engine
+from .mounts import MountSystem
 from .parts import GasCycle, Parts
 from .torsion import TorsionModel
 from .values import offset_position
@@ -74,6 +75,8 @@ class Engine:
         balancer shafts as built (empty: none; refused on a rotary)
     torsion : TorsionModel or None
         the crankshaft's mass-elastic model for ``balance torsion``, if given
+    mounts : MountSystem or None
+        the powertrain as a rigid body on its mounts, for ``balance mounts``, if given
 
     Raises
     ------
@@ -106,6 +109,7 @@ class Engine:
     counterweights: tuple = ()
     balancer_shafts: tuple = ()
     torsion: "TorsionModel | None" = None
+    mounts: "MountSystem | None" = None
     _by_number: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
@@ -131,6 +135,10 @@ class Engine:
         if not self.crankshafts:
             # one way to say "one crankshaft": the reference, whether named or not
             object.__setattr__(self, "crankshafts", (REFERENCE_CRANKSHAFT,))
+        if self.mounts is not None and not isinstance(self.mounts, MountSystem):
+            raise ModelError(
+                f"must be a MountSystem or None, got {type(self.mounts).__name__}", "mounts"
+            )
         if self.power_w is not None and self.power_speed_rad_s is None:
             object.__setattr__(self, "power_speed_rad_s", self.speed_rad_s)
         check_engine(self)

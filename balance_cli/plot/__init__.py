@@ -12,10 +12,11 @@ those of the free moment instead of the force.
 :func:`save` writes a figure in the format its file name's extension names.
 
 Also :func:`campbell`, :func:`mode_shapes` and :func:`torque_speed` of a torsional vibration
-analysis, and :func:`sweep_figure` of a sweep (curves) or a grid of two parameters (heat maps).
+analysis; :func:`mount_modes`, :func:`energy_bars` and :func:`mount_forces` of the engine on
+its mounts; and :func:`sweep_figure` of a sweep (curves) or a grid of two parameters (heat maps).
 
 One module per picture: ``loci``, ``spectra``, ``stars`` (its labels placed by ``labels``),
-``firings``, ``torques``, ``torsion`` and ``sweep``; ``figure`` holds what they share.
+``firings``, ``torques``, ``torsion``, ``mounts`` and ``sweep``; ``figure`` holds what they share.
 """
 
 from .figure import (
@@ -34,6 +35,7 @@ from .figure import (
 from .firings import firing
 from .labels import STAR_LABEL_GAP_PT, STAR_LABEL_MIN_PT, STAR_LABEL_PT, place_labels
 from .loci import coinciding, locus, locus_points
+from .mounts import energy_bars, equivalent_box, mount_forces, mount_modes
 from .spectra import SPECTRUM_UNITS, spectrum, spectrum_data
 from .stars import STAR_TITLE_CHARS, star, star_chains
 from .sweep import axis_values, sweep_figure
@@ -63,6 +65,10 @@ __all__ = [
     "campbell",
     "mode_shapes",
     "torque_speed",
+    "mount_modes",
+    "energy_bars",
+    "mount_forces",
+    "equivalent_box",
     "sweep_figure",
     "axis_values",
     "CELL_IN",

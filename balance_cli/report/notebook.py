@@ -21,6 +21,7 @@ from ..analysis.results import Comparison, EngineResult, compare
 from ..analysis.steadiness import Steadiness
 from ..analysis.torque import TorqueResult, TorqueSet
 from ..cranksearch.results import SearchResult
+from ..mounting.result import MountResult
 from ..studies.family import FamilyResult
 from ..studies.regress import Regression
 from ..studies.sweep.results import SweepGrid, SweepResult
@@ -30,6 +31,7 @@ from .compare import compare_tables
 from .counterweight import balance_tables
 from .display import figure
 from .family import family_tables
+from .mounts import mount_tables
 from .regress import regression_tables
 from .search import search_tables
 from .sweeps import sweep_tables
@@ -57,6 +59,7 @@ _COMMANDS = (
     (TorqueResult, lambda r: torque_tables([r], Scale.of(True), _FMT)),
     (Steadiness, steadiness_text),
     (TorsionResult, lambda r: torsion_tables([r], _FMT, Scale.of(False))),
+    (MountResult, lambda r: mount_tables([r], _FMT)),
     (SweepResult, lambda r: sweep_tables(r, _FMT)),
     (SweepGrid, lambda r: sweep_tables(r, _FMT)),
     (FamilyResult, lambda r: family_tables(r, Scale.of(True), _FMT)),

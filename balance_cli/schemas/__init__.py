@@ -1,7 +1,7 @@
 """The JSON Schemas of the documents balance writes, and checking a document against its own.
 
 Every document balance writes (``--format json`` of compare, counterweight, torque, torsion,
-steadiness, regress, search, family and sweep) carries its format's version in
+mounts, steadiness, regress, search, family and sweep) carries its format's version in
 ``balance_version``; its schema is the file ``DOCUMENT.vVERSION.json`` beside this module
 (Draft 2020-12), installed with the package. A schema of a version balance writes is closed:
 a key it does not name fails it. The compare document's versions 1 and 2 have the schemas of
@@ -29,7 +29,16 @@ DOCUMENTS = {
     "compare": READABLE_VERSIONS,
     **{
         name: (DOCUMENT_VERSION,)
-        for name in ("counterweight", "torque", "torsion", "regress", "search", "family", "sweep")
+        for name in (
+            "counterweight",
+            "torque",
+            "torsion",
+            "mounts",
+            "regress",
+            "search",
+            "family",
+            "sweep",
+        )
     },
     "steadiness": (STEADINESS_VERSION,),
 }

@@ -37,6 +37,8 @@ class Key:
     example: str = ""
     meaning: str = ""
     per_throw: bool = False
+    #: a key that takes a list of values of its kind: how many, and what each stands for
+    values: str | None = None
 
     @property
     def default_value(self):
@@ -112,6 +114,8 @@ def unit_text(key):
         text = key.kind
     else:
         text = PLAIN_KINDS[key.kind]
+    if key.values:
+        return f"{text}: {key.values}"
     return f"{text}, one or one per throw" if key.per_throw else text
 
 

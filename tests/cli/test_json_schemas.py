@@ -236,6 +236,9 @@ def documents(tmp_path_factory):
                 "sweep", CAR, "--vary", "banks[1].angle", "--values", "0,10", "--speed", "5000 rpm"
             ),
         ],
+        # every file of the library's mounts folder: with and without a mean torque (the
+        # genset's gas cycle, the car's power), inclined mounts, resonances crossed
+        "mounts": [run("mounts", CONFIGS / "mounts", "--speeds", "300:1500:300")],
         "regress": [
             run("regress", baseline, CAR, built),
             # a mass and a firing order moved, an engine added and one removed
@@ -409,6 +412,7 @@ ENTRIES = {
     "counterweight": "engines",
     "torque": "engines",
     "torsion": "engines",
+    "mounts": "engines",
     "regress": "rows",
     "search": "results",
     "family": "rows",

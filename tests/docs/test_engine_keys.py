@@ -68,14 +68,18 @@ def test_every_key_is_shown_in_an_example_of_the_page():
 def test_every_example_value_is_written_as_its_kind_says():
     for (path, name), key in documented().items():
         value = tomllib.loads(f"v = {key.example}")["v"] if key.example[:1] != "[" else None
-        if key.kind in DIMENSIONS:
-            assert math.isfinite(parse_quantity(value, key.kind)), (path, name)
-        elif key.kind in ("degrees", "number"):
-            assert isinstance(value, (int, float)) and not isinstance(value, bool), (path, name)
-        elif key.kind == "integer":
-            assert isinstance(value, int), (path, name)
-        elif key.kind == "text":
-            assert isinstance(value, str), (path, name)
+        # a key of several values (a position's x, y, z) shows a list: each is of its kind
+        values = tomllib.loads(f"v = {key.example}")["v"] if key.values else [value]
+        assert isinstance(values, list) and values, (path, name)
+        for value in values:
+            if key.kind in DIMENSIONS:
+                assert math.isfinite(parse_quantity(value, key.kind)), (path, name)
+            elif key.kind in ("degrees", "number"):
+                assert isinstance(value, (int, float)) and not isinstance(value, bool), (path, name)
+            elif key.kind == "integer":
+                assert isinstance(value, int), (path, name)
+            elif key.kind == "text":
+                assert isinstance(value, str), (path, name)
 
 
 #: the sweep's table of numeric keys names its kinds in other words

@@ -66,6 +66,9 @@ def runs(tmp_path):
             run("counterweight", CONFIGS / "inline-4-car-lanchester.toml"),
         ],
         "torque": [run("torque", CAR)],
+        "mounts": [
+            run("mounts", CONFIGS / "mounts" / "four-mount-coupled.toml", "--speeds", "500,1000")
+        ],
         "steadiness": [
             run(
                 "steadiness", "--torque", torque_csv, "--inertia", "2 kg*m^2", "--speed", "1500 rpm"

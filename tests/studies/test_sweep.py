@@ -252,7 +252,8 @@ def test_schema_covers_every_key_of_the_configuration_format():
         "counterweights",
         "shafts",
         "torsion",
-    }  # the shaft line's table: read by balance torsion, not swept
+        "mounts",
+    }  # the shaft line's and the mounts' tables: read by balance torsion and mounts, not swept
     # a shaft's [[shafts.masses]] are tables within its table: not swept
     nested = {"": text_or_tables, "shafts[]": {"masses"}}
     for table, keys in tables.items():
