@@ -1162,6 +1162,62 @@ def mounts():
         key: size("m" if key.endswith("_m") else "rad")
         for key in ("x_m", "y_m", "z_m", "rx_rad", "ry_rad", "rz_rad")
     }
+    state = closed(
+        "how near the mounts are to torque roll axis decoupling (TraState.to_dict)",
+        {
+            "mode": integer("the mode nearest the turn about the torque roll axis", 1, 6),
+            "frequency_Hz": size("its frequency, Hz"),
+            "motion": text("its dominant motion", enum=motions),
+            "purity_pct": number("its kinetic energy's share in that turn, %", minimum=0),
+            "tra_energy_pct": number("its energy share in the TRA coordinate, %"),
+            "axis_angle_deg": number(
+                "its axis of rotation to the TRA, degrees", minimum=0, maximum=90
+            ),
+            "axis_offset_m": size("its screw axis from the centre of gravity, m"),
+            "coupling": size("the sine the rates are found by: 0 decoupled"),
+            "axes_angle_deg": number("the TRA to the elastic axis, degrees", minimum=0, maximum=90),
+        },
+    )
+    decoupling = closed(
+        "mounts --decouple: the rates found and the decoupling before and after "
+        "(Decoupling.to_dict); the rest of the engine's object is of the mounts with them",
+        {
+            "torque_roll_axis": axis,
+            "method": text("how the rates were found", enum=("closed form", "SLSQP", "purest")),
+            "exact": flag("decoupled to rounding"),
+            "rates": array(
+                closed(
+                    "one rate found (VariedRate.to_dict)",
+                    {
+                        "mounts": array(mount_name, "the mounts that share it", min_items=1),
+                        "rate": text("which rate", enum=("x", "y", "z", "compression", "shear")),
+                        "slots": array(
+                            closed(
+                                "one principal rate set",
+                                {
+                                    "mount": mount_name,
+                                    "principal": integer("which of its three rates", 1, 3),
+                                },
+                            ),
+                            "the principal rates it sets",
+                            min_items=1,
+                        ),
+                        "before_N_per_m": array(
+                            positive("N/m"), "each slot's rate before", min_items=1
+                        ),
+                        "after_N_per_m": positive("the rate found, N/m"),
+                        "low_N_per_m": positive("its lower bound, N/m"),
+                        "high_N_per_m": positive("its upper bound, N/m"),
+                        "at_bound": flag("the rate found sits on a bound"),
+                    },
+                ),
+                "the rates varied",
+                min_items=1,
+            ),
+            "before": state,
+            "after": state,
+        },
+    )
     engine = closed(
         "one engine on its mounts (MountResult.to_dict)",
         {
@@ -1331,6 +1387,7 @@ def mounts():
                 min_items=1,
             ),
         },
+        {"decoupling": decoupling},
     )
     return document(
         "mounts",

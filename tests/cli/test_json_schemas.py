@@ -238,7 +238,10 @@ def documents(tmp_path_factory):
         ],
         # every file of the library's mounts folder: with and without a mean torque (the
         # genset's gas cycle, the car's power), inclined mounts, resonances crossed
-        "mounts": [run("mounts", CONFIGS / "mounts", "--speeds", "300:1500:300")],
+        "mounts": [
+            run("mounts", CONFIGS / "mounts", "--speeds", "300:1500:300"),
+            run("mounts", CONFIGS / "mounts" / "four-mount-coupled.toml", "--decouple", "all"),
+        ],
         "regress": [
             run("regress", baseline, CAR, built),
             # a mass and a firing order moved, an engine added and one removed
