@@ -1566,13 +1566,19 @@ def family():
 
 
 #: the quantities a sweep reports (Quantity.name) and the columns they write (Quantity.column)
+_MOUNT_NAMES = (
+    "|mode_[1-6]|(fore_aft|lateral|bounce|roll|pitch|yaw)_mode|tra_purity|axes_angle"
+    "|mount_.+_(force|F[xyz])"
+)
 _NAMES = (
     "^([FM][1-9][0-9]*(V|H|\\+|-)?|PRU[1-9][0-9]*[VH]|largest_force|largest_moment"
-    "|torque_(mean|max|min|range)|steadiness)$"
+    "|torque_(mean|max|min|range)|steadiness" + _MOUNT_NAMES + ")$"
 )
 _COLUMNS = (
     "^([FM][1-9][0-9]*(V|H|\\+|-)?_(N|Nm)|PRU[1-9][0-9]*[VH]_Nm_per_kW|largest_force_N"
-    "|largest_moment_Nm|torque_(mean|max|min|range)_Nm|steadiness)$"
+    "|largest_moment_Nm|torque_(mean|max|min|range)_Nm|steadiness"
+    "|mode_[1-6]_Hz|(fore_aft|lateral|bounce|roll|pitch|yaw)_mode_Hz|tra_purity_pct"
+    "|axes_angle_deg|mount_.+_(force|F[xyz])_N)$"
 )
 _KINDS = (
     "length",
@@ -1583,6 +1589,8 @@ _KINDS = (
     "torque",
     "power",
     "unbalance",
+    "stiffness",
+    "viscous damping",
     "angle",
     "number",
     "whole number",
@@ -1602,7 +1610,20 @@ def sweep():
             "kind": text("the kind of its value", enum=_KINDS),
             "unit_SI": text(
                 "the SI unit of values_SI (empty for a plain number)",
-                enum=("m", "kg", "rad/s", "kg*m^2", "Pa", "N*m", "W", "kg*m", "rad", ""),
+                enum=(
+                    "m",
+                    "kg",
+                    "rad/s",
+                    "kg*m^2",
+                    "Pa",
+                    "N*m",
+                    "W",
+                    "kg*m",
+                    "N/m",
+                    "N*s/m",
+                    "rad",
+                    "",
+                ),
             ),
             "file_value": {
                 "type": ["string", "number", "null"],
@@ -1622,8 +1643,23 @@ def sweep():
                 pattern=_NAMES,
             ),
             "column": text("its key in points", pattern=_COLUMNS),
-            "unit": text('"N", "Nm" or ""', enum=("N", "Nm", "")),
-            "kind": text("what it is", enum=("force", "moment", "torque", "steadiness", "pru")),
+            "unit": text(
+                '"N", "Nm", "Hz", "%", "deg" or ""', enum=("N", "Nm", "Hz", "%", "deg", "")
+            ),
+            "kind": text(
+                "what it is",
+                enum=(
+                    "force",
+                    "moment",
+                    "torque",
+                    "steadiness",
+                    "pru",
+                    "frequency",
+                    "decoupling",
+                    "axes angle",
+                    "mount force",
+                ),
+            ),
             "meaning": text("in words, with its unit"),
         },
     )
@@ -1670,6 +1706,12 @@ def sweep():
             "load": text(
                 '"propeller" or "constant" (null without an inertia)',
                 enum=("propeller", "constant"),
+                null=True,
+            ),
+            "mount_speeds_rpm": array(
+                positive("rev/min"),
+                "the speeds over which a mount's force is its largest (null: each point's own)",
+                min_items=1,
                 null=True,
             ),
             "points": array({}, "one per value, or per pair of values", min_items=1),
