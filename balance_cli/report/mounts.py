@@ -39,7 +39,8 @@ def _cleaned(value, largest):
 
 
 def _vector(values, digits=4):
-    return "(" + ", ".join(f"{v:.{digits}f}" for v in values) + ")"
+    # a component that rounds to zero from below is shown as 0.0, not -0.0
+    return "(" + ", ".join(f"{round(float(v), digits) + 0.0:.{digits}f}" for v in values) + ")"
 
 
 def _modes(r, fmt):
