@@ -113,6 +113,8 @@ _LAZY = {
     "TorsionResult": (".torsion", "TorsionResult"),
     "mounts": (".mounting", "mounts"),
     "MountResult": (".mounting", "MountResult"),
+    "decouple": (".mounting", "decouple"),
+    "Decoupling": (".mounting", "Decoupling"),
 }
 
 #: the subpackages, reachable as attributes whether or not something has imported them yet

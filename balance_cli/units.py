@@ -344,7 +344,9 @@ class Scale:
 def shown_unit(quantity, units):
     """The unit a sweep's quantity is shown in, "" for a pure number."""
     scale = Scale.of(True, units)
-    return {"N": scale.force_label, "Nm": scale.moment_label}.get(quantity.unit, "")
+    # frequencies, percentages and angles of the mount analysis are shown as they are
+    fixed = {"Hz": "Hz", "%": "%", "deg": "°"}.get(quantity.unit, "")
+    return {"N": scale.force_label, "Nm": scale.moment_label}.get(quantity.unit, fixed)
 
 
 def shown_value(quantity, value_si, units):

@@ -160,6 +160,10 @@ def results(tmp_path_factory):
             speeds_rpm=[1000.0],
             orders=[2],
         ),
+        "Decoupling": balance.decouple(
+            balance.load(CONFIGS / "mounts" / "four-mount-symmetric.toml"),
+            [(("front left", "front right", "rear left", "rear right"), "z")],
+        ),
     }
 
 
@@ -426,6 +430,24 @@ def test_mount_records_by_hand(results):
     assert_allclose(rows[5]["z_m"], bounce, rtol=1e-9)  # the order's amplitude: a 6×6 solve
     assert rows[5]["Fx_N"] is None and rows[6]["rx_rad"] is None
     assert rows[6]["where"] == "front left" and rows[6]["Fz_N"] > 0
+
+
+def test_decoupling_records_by_hand(results):
+    """The symmetric example is decoupled as it stands (its mounts in the plane of the centre
+    of gravity answer a roll with a couple about x alone): one row per mount's z rate, each
+    200 N/mm before and after, the roll mode at √(4·k_z·b²/J_xx)/2π before and after."""
+    rows = results["Decoupling"].records()
+    assert [(r["mount"], r["rate"], r["principal"]) for r in rows] == [
+        (name, "z", 3) for name in ("front left", "front right", "rear left", "rear right")
+    ]
+    roll_hz = math.sqrt(4 * 200e3 * 0.25**2 / 6.0) / (2 * math.pi)
+    for row in rows:
+        assert row["before_N_per_m"] == 200e3
+        assert_allclose(row["after_N_per_m"], 200e3, rtol=1e-12)  # no change: rounding
+        assert_allclose(
+            [row["frequency_before_Hz"], row["frequency_after_Hz"]], roll_hz, rtol=1e-12
+        )
+        assert row["exact"] is True
 
 
 def test_without_pandas_to_pandas_names_the_extra(results, monkeypatch):

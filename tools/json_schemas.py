@@ -1162,6 +1162,62 @@ def mounts():
         key: size("m" if key.endswith("_m") else "rad")
         for key in ("x_m", "y_m", "z_m", "rx_rad", "ry_rad", "rz_rad")
     }
+    state = closed(
+        "how near the mounts are to torque roll axis decoupling (TraState.to_dict)",
+        {
+            "mode": integer("the mode nearest the turn about the torque roll axis", 1, 6),
+            "frequency_Hz": size("its frequency, Hz"),
+            "motion": text("its dominant motion", enum=motions),
+            "purity_pct": number("its kinetic energy's share in that turn, %", minimum=0),
+            "tra_energy_pct": number("its energy share in the TRA coordinate, %"),
+            "axis_angle_deg": number(
+                "its axis of rotation to the TRA, degrees", minimum=0, maximum=90
+            ),
+            "axis_offset_m": size("its screw axis from the centre of gravity, m"),
+            "coupling": size("the sine the rates are found by: 0 decoupled"),
+            "axes_angle_deg": number("the TRA to the elastic axis, degrees", minimum=0, maximum=90),
+        },
+    )
+    decoupling = closed(
+        "mounts --decouple: the rates found and the decoupling before and after "
+        "(Decoupling.to_dict); the rest of the engine's object is of the mounts with them",
+        {
+            "torque_roll_axis": axis,
+            "method": text("how the rates were found", enum=("closed form", "SLSQP", "purest")),
+            "exact": flag("decoupled to rounding"),
+            "rates": array(
+                closed(
+                    "one rate found (VariedRate.to_dict)",
+                    {
+                        "mounts": array(mount_name, "the mounts that share it", min_items=1),
+                        "rate": text("which rate", enum=("x", "y", "z", "compression", "shear")),
+                        "slots": array(
+                            closed(
+                                "one principal rate set",
+                                {
+                                    "mount": mount_name,
+                                    "principal": integer("which of its three rates", 1, 3),
+                                },
+                            ),
+                            "the principal rates it sets",
+                            min_items=1,
+                        ),
+                        "before_N_per_m": array(
+                            positive("N/m"), "each slot's rate before", min_items=1
+                        ),
+                        "after_N_per_m": positive("the rate found, N/m"),
+                        "low_N_per_m": positive("its lower bound, N/m"),
+                        "high_N_per_m": positive("its upper bound, N/m"),
+                        "at_bound": flag("the rate found sits on a bound"),
+                    },
+                ),
+                "the rates varied",
+                min_items=1,
+            ),
+            "before": state,
+            "after": state,
+        },
+    )
     engine = closed(
         "one engine on its mounts (MountResult.to_dict)",
         {
@@ -1331,6 +1387,7 @@ def mounts():
                 min_items=1,
             ),
         },
+        {"decoupling": decoupling},
     )
     return document(
         "mounts",
@@ -1509,13 +1566,19 @@ def family():
 
 
 #: the quantities a sweep reports (Quantity.name) and the columns they write (Quantity.column)
+_MOUNT_NAMES = (
+    "|mode_[1-6]|(fore_aft|lateral|bounce|roll|pitch|yaw)_mode|tra_purity|axes_angle"
+    "|mount_.+_(force|F[xyz])"
+)
 _NAMES = (
     "^([FM][1-9][0-9]*(V|H|\\+|-)?|PRU[1-9][0-9]*[VH]|largest_force|largest_moment"
-    "|torque_(mean|max|min|range)|steadiness)$"
+    "|torque_(mean|max|min|range)|steadiness" + _MOUNT_NAMES + ")$"
 )
 _COLUMNS = (
     "^([FM][1-9][0-9]*(V|H|\\+|-)?_(N|Nm)|PRU[1-9][0-9]*[VH]_Nm_per_kW|largest_force_N"
-    "|largest_moment_Nm|torque_(mean|max|min|range)_Nm|steadiness)$"
+    "|largest_moment_Nm|torque_(mean|max|min|range)_Nm|steadiness"
+    "|mode_[1-6]_Hz|(fore_aft|lateral|bounce|roll|pitch|yaw)_mode_Hz|tra_purity_pct"
+    "|axes_angle_deg|mount_.+_(force|F[xyz])_N)$"
 )
 _KINDS = (
     "length",
@@ -1526,6 +1589,8 @@ _KINDS = (
     "torque",
     "power",
     "unbalance",
+    "stiffness",
+    "viscous damping",
     "angle",
     "number",
     "whole number",
@@ -1545,7 +1610,20 @@ def sweep():
             "kind": text("the kind of its value", enum=_KINDS),
             "unit_SI": text(
                 "the SI unit of values_SI (empty for a plain number)",
-                enum=("m", "kg", "rad/s", "kg*m^2", "Pa", "N*m", "W", "kg*m", "rad", ""),
+                enum=(
+                    "m",
+                    "kg",
+                    "rad/s",
+                    "kg*m^2",
+                    "Pa",
+                    "N*m",
+                    "W",
+                    "kg*m",
+                    "N/m",
+                    "N*s/m",
+                    "rad",
+                    "",
+                ),
             ),
             "file_value": {
                 "type": ["string", "number", "null"],
@@ -1565,8 +1643,23 @@ def sweep():
                 pattern=_NAMES,
             ),
             "column": text("its key in points", pattern=_COLUMNS),
-            "unit": text('"N", "Nm" or ""', enum=("N", "Nm", "")),
-            "kind": text("what it is", enum=("force", "moment", "torque", "steadiness", "pru")),
+            "unit": text(
+                '"N", "Nm", "Hz", "%", "deg" or ""', enum=("N", "Nm", "Hz", "%", "deg", "")
+            ),
+            "kind": text(
+                "what it is",
+                enum=(
+                    "force",
+                    "moment",
+                    "torque",
+                    "steadiness",
+                    "pru",
+                    "frequency",
+                    "decoupling",
+                    "axes angle",
+                    "mount force",
+                ),
+            ),
             "meaning": text("in words, with its unit"),
         },
     )
@@ -1613,6 +1706,12 @@ def sweep():
             "load": text(
                 '"propeller" or "constant" (null without an inertia)',
                 enum=("propeller", "constant"),
+                null=True,
+            ),
+            "mount_speeds_rpm": array(
+                positive("rev/min"),
+                "the speeds over which a mount's force is its largest (null: each point's own)",
+                min_items=1,
                 null=True,
             ),
             "points": array({}, "one per value, or per pair of values", min_items=1),

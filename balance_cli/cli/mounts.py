@@ -17,7 +17,12 @@ __all__ = ["mounts"]
 #: the pictures --plot draws per engine: file name's ending -> what it shows
 PICTURES = ("mount-modes", "mount-energy", "mount-forces")
 #: the library's parameters as this command's flags
-_FLAGS = {"orders": "--orders", "power_w": "--power"}
+_FLAGS = {
+    "orders": "--orders",
+    "power_w": "--power",
+    "vary": "--decouple",
+    "bounds_n_m": "--rate-bounds",
+}
 
 
 @main.command(
@@ -27,6 +32,9 @@ _FLAGS = {"orders": "--orders", "power_w": "--power"}
     static deflections under the weight and the mean torque's reaction (the [gas] cycle's, or
     --power), the resonances crossed within --speeds, and the forced response: each mount's
     force on the frame, every order against speed and all orders summed over a cycle.
+
+    With --decouple, first the rates that put the roll mode on the torque roll axis (Jeong
+    and Singh's decoupling), then all of the above for the mounts with those rates.
 
     The excitation is the engine's own: every order of the shaking force and free moment
     (vertical and horizontal) at the crank axis, moved to the centre of gravity, and the
@@ -63,6 +71,25 @@ _FLAGS = {"orders": "--orders", "power_w": "--power"}
     help="The power whose mean torque (power / the file's speed) the static deflection is "
     "under, e.g. '110 kW' (default: the [gas] cycle's mean torque, else the file's power).",
 )
+@click.option(
+    "--decouple",
+    "decouple",
+    multiple=True,
+    metavar="MOUNT:RATE",
+    help="Find this rate so that the roll mode turns about the torque roll axis (repeat for "
+    "each rate; five or more in general): RATE is x, y or z (the rate along that engine "
+    "axis), compression or shear (both shear rates of an inclined mount); A+B:y is one "
+    "rate two mounts share; 'all' varies every rate of every mount. The least change of "
+    "the rates that decouples is taken, or the purest mode where none does; the analysis "
+    "is then of the mounts with the rates found.",
+)
+@click.option(
+    "--rate-bounds",
+    default=None,
+    metavar="LOW,HIGH",
+    help="The range of the rates --decouple may choose, e.g. '20 N/mm,1000 N/mm' (default: "
+    "each rate as given, divided and multiplied by 10).",
+)
 @SAMPLES
 @FORMAT
 @OUTPUT
@@ -76,9 +103,26 @@ _FLAGS = {"orders": "--orders", "power_w": "--power"}
     "NAME-mount-forces.png (each mount's force on the frame against speed, the resonances "
     "marked) into DIR; NAME is the file's stem.",
 )
-def mounts(paths, speeds, max_order, orders, power, samples, fmt, output, plot_dir):
+def mounts(
+    paths,
+    speeds,
+    max_order,
+    orders,
+    power,
+    decouple,
+    rate_bounds,
+    samples,
+    fmt,
+    output,
+    plot_dir,
+):
+    from ..mounting import decouple as decouple_of
     from ..mounting import mounts as mounts_of
 
+    vary = _vary_option(decouple)
+    bounds_n_m = _bounds_option(rate_bounds)
+    if bounds_n_m is not None and not decouple:
+        raise click.UsageError("--rate-bounds bounds the rates --decouple finds; give --decouple")
     speeds_rpm = speeds_option(speeds)
     chosen = None if orders is None else numbers_option(orders, "--orders")
     power_w = quantity_option(power, "--power", "power")
@@ -96,30 +140,85 @@ def mounts(paths, speeds, max_order, orders, power, samples, fmt, output, plot_d
     files = [Path(e.config_path) for e in engines]
     if plot_dir is not None:
         _check_pictures(files, output, plot_dir)
-    results = run_each(
-        engines,
-        "Mounts",
-        lambda e: _analysed(mounts_of, e, speeds_rpm, chosen, max_order, power_w, samples),
-    )
-    from ..report.mounts import mount_csv, mount_tables
+    decouplings: list = []
+
+    def work(engine):
+        system = None
+        if decouple:
+            with reported(engine, flags=_FLAGS):
+                decouplings.append(decouple_of(engine, vary, bounds_n_m))
+            system = decouplings[-1].system
+        return _analysed(mounts_of, engine, speeds_rpm, chosen, max_order, power_w, samples, system)
+
+    results = run_each(engines, "Mounts", work)
+    from ..report.mounts import decoupling_tables, mount_csv, mount_tables
+
+    def document(i, r):
+        return {**r.to_dict(), "decoupling": decouplings[i].to_dict()} if decouple else r.to_dict()
+
+    def tables():
+        if not decouple:
+            return mount_tables(results, fmt)
+        return "\n".join(
+            decoupling_tables([d], fmt) + "\n" + mount_tables([r], fmt)
+            for d, r in zip(decouplings, results, strict=True)
+        )
 
     text = render(
         fmt,
         json=lambda: {
             "balance_version": DOCUMENT_VERSION,
-            "engines": [r.to_dict() for r in results],
+            "engines": [document(i, r) for i, r in enumerate(results)],
         },
         csv=lambda: mount_csv(results),
-        table=lambda: mount_tables(results, fmt),
+        table=tables,
     )
     if plot_dir is not None:
         _draw(files, results, plot_dir)
     write(output, text)
 
 
-def _analysed(mounts_of, engine, speeds_rpm, orders, max_order, power_w, samples):
+def _analysed(mounts_of, engine, speeds_rpm, orders, max_order, power_w, samples, system):
     with reported(engine, flags=_FLAGS):
-        return mounts_of(engine, speeds_rpm, orders, max_order, power_w, samples)
+        return mounts_of(engine, speeds_rpm, orders, max_order, power_w, samples, system)
+
+
+def _vary_option(texts):
+    """--decouple MOUNT:RATE (repeatable; MOUNT+MOUNT shares one rate; 'all') as the
+    library's ``vary``: a list of (mounts, rate), or None for every rate."""
+    if not texts:
+        return None
+    if any(t.strip() == "all" for t in texts):
+        if len(texts) > 1:
+            raise click.BadParameter(
+                "'all' varies every rate already; give it alone", param_hint="--decouple"
+            )
+        return None
+    out = []
+    for text in texts:
+        names, colon, rate = text.rpartition(":")
+        mounts = tuple(n.strip() for n in names.split("+"))
+        if not colon or not all(mounts) or not rate.strip():
+            raise click.BadParameter(
+                f"{text!r}: give MOUNT:RATE, such as A:z, C:compression or A+B:y (one rate "
+                "two mounts share)",
+                param_hint="--decouple",
+            )
+        out.append((mounts, rate.strip()))
+    return out
+
+
+def _bounds_option(text):
+    """--rate-bounds LOW,HIGH as (low, high) in N/m."""
+    if text is None:
+        return None
+    parts = text.split(",")
+    if len(parts) != 2:
+        raise click.BadParameter(
+            f"{text!r}: give two rates, LOW,HIGH, such as '20 N/mm,1000 N/mm'",
+            param_hint="--rate-bounds",
+        )
+    return tuple(quantity_option(p.strip(), "--rate-bounds", "stiffness") for p in parts)
 
 
 def _check_pictures(files, output, plot_dir):

@@ -231,7 +231,7 @@ def quantity_option(text, flag, dimension):
     return value
 
 
-def speeds_option(text):
+def speeds_option(text, flag="--speeds"):
     """--speeds FROM:TO:STEP (rpm, both ends included) or a comma-separated list; None for
     the default (20 % to 120 % of each engine's speed)."""
     if text is None:
@@ -267,7 +267,7 @@ def speeds_option(text):
             f"expected FROM:TO:STEP in rpm (0.001 <= FROM <= TO <= 1e6, "
             f"STEP > 0, at most {MAX_SPEEDS} speeds) such as 600:2400:25, or "
             f"a list such as 1000,1500, got {text!r}",
-            param_hint="--speeds",
+            param_hint=flag,
         ) from None
 
 

@@ -13,7 +13,16 @@ from . import headless
 from .batch import settings
 from .dispatch import guard, render, same_path, write
 from .group import main, reported
-from .options import FORMAT, LOAD, MAX_ORDER, OUTPUT, SAMPLES, UNIT_CHOICE, quantity_option
+from .options import (
+    FORMAT,
+    LOAD,
+    MAX_ORDER,
+    OUTPUT,
+    SAMPLES,
+    UNIT_CHOICE,
+    quantity_option,
+    speeds_option,
+)
 
 __all__ = ["sweep"]
 
@@ -114,8 +123,11 @@ def _values_of(group, span):
     "link rods), stroke (2 × crank_radius: sets crank_radius, holds rod_length), "
     "bore_pitch (the even spacing of the throws' z: sets every throw's z from the first, "
     "moving listed cylinders' and counterweights' z with their throws); or balance_factor "
-    "(classic per-throw counterweights of that factor, 0 to 1). Give --vary twice for a "
-    "grid of every pair of values, each --vary followed by its own values.",
+    "(classic per-throw counterweights of that factor, 0 to 1); or a key of [mounts]: "
+    "mounts.mass, mounts.mount[2].stiffness[3] (a mount by number or name; its rate along "
+    "z), mounts.mount[*].stiffness[3] (every mount, one value), mounts.mount[C].compression, "
+    "mounts.centre_of_gravity[3], ... Give --vary twice for a grid of every pair of values, "
+    "each --vary followed by its own values.",
 )
 @click.option(
     "--from",
@@ -153,7 +165,18 @@ def _values_of(group, span):
     "largest_moment (after an ideal counterweight); torque_mean, torque_max, "
     "torque_min, torque_range (ΔC of the total torque); steadiness (needs "
     "--inertia and a [gas] table); PRU<k>V, PRU<k>H (power related unbalance, N·m/kW: "
-    "needs the power at each point's speed). Default: largest_force,largest_moment.",
+    "needs the power at each point's speed); of the engine on its mounts: mode_1 ... mode_6 "
+    "(Hz), roll_mode (likewise fore_aft_mode, lateral_mode, bounce_mode, pitch_mode, "
+    "yaw_mode), tra_purity (%), axes_angle (°), mount_A_force and mount_A_Fx, _Fy, _Fz (N, "
+    "the largest over a cycle, orders to --max-order summed; a mount by name or number). "
+    "Default: largest_force,largest_moment.",
+)
+@click.option(
+    "--mount-speeds",
+    default=None,
+    metavar="FROM:TO:STEP",
+    help="The mount forces (mount_A_force, ...) as their largest over these speeds, rpm: a "
+    "range with its step or a comma-separated list (default: each point's own speed).",
 )
 @click.option("--inertia", metavar="I", help="Flywheel inertia for steadiness, e.g. '2.5 kg*m^2'.")
 @LOAD
@@ -196,6 +219,7 @@ def sweep(
     step_counts,
     listed,
     quantities,
+    mount_speeds,
     inertia,
     load,
     speed,
@@ -248,6 +272,7 @@ def sweep(
         "steps": "--steps",
         "inertia_kgm2": "--inertia",
         "overrides": "--speed" if speed is not None else "--power",
+        "mount_speeds_rpm": "--mount-speeds",
     }
     outputs = [output] + ([picture] if picture else [])
     with reported():
@@ -255,6 +280,7 @@ def sweep(
     if picture is not None and output not in (None, "-") and same_path(output, picture):
         raise click.ClickException(f"--plot and --output both name {picture!r}; give two files")
     settings(samples, max_order)
+    mount_speeds_rpm = speeds_option(mount_speeds, "--mount-speeds")
     inertia_kgm2 = quantity_option(inertia, "--inertia", "moment of inertia")
     quantity_option(speed, "--speed", "angular speed")  # its unit, in the option's words
     quantity_option(power, "--power", "power")
@@ -285,6 +311,7 @@ def sweep(
                     load=load,
                     progress=progress,
                     overrides=overrides or None,
+                    mount_speeds_rpm=mount_speeds_rpm,
                 )
                 result: SweepResult | SweepGrid
                 if len(groups) == 1:

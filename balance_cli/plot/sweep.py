@@ -16,6 +16,10 @@ _GROUPS = (
     ("torque", "Torque"),
     ("steadiness", "Steadiness"),
     ("pru", "PRU (N·m/kW)"),
+    ("frequency", "Natural frequency"),
+    ("mount force", "Force on the frame"),
+    ("decoupling", "TRA purity"),
+    ("axes angle", "TRA to elastic axis"),
 )
 _WRITTEN = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S.*?)\s*$", re.ASCII)
 

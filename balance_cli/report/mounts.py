@@ -10,7 +10,7 @@ from ..model import DOF_LABELS, MOTIONS
 from .display import figure, markdown_text, plain_text
 from .table import render
 
-__all__ = ["mount_tables", "mount_csv", "CSV_COLUMNS"]
+__all__ = ["mount_tables", "mount_csv", "decoupling_tables", "CSV_COLUMNS"]
 
 #: the CSV's columns: :meth:`MountResult.records`' keys, in this order
 CSV_COLUMNS = (
@@ -39,7 +39,8 @@ def _cleaned(value, largest):
 
 
 def _vector(values, digits=4):
-    return "(" + ", ".join(f"{v:.{digits}f}" for v in values) + ")"
+    # a component that rounds to zero from below is shown as 0.0, not -0.0
+    return "(" + ", ".join(f"{round(float(v), digits) + 0.0:.{digits}f}" for v in values) + ")"
 
 
 def _modes(r, fmt):
@@ -183,6 +184,68 @@ def mount_tables(results, fmt) -> str:
             out += ["No static deflection under torque: no [gas] table and no power given.", ""]
         out += _crossings(r, fmt)
         out += _largest(r, fmt)
+    return "\n".join(out)
+
+
+def _kn(value_n_m):
+    return figure(value_n_m / 1e3)
+
+
+def decoupling_tables(decouplings, fmt) -> str:
+    """Each :class:`~balance_cli.mounting.Decoupling`: the rates found and the torque roll axis
+    mode before and after; ``fmt`` "table" or "markdown"."""
+    heading = "#### " if fmt == "markdown" else ""
+    safe = markdown_text if fmt == "markdown" else plain_text
+    methods = {
+        "closed form": "in closed form, the least change of the rates varied",
+        "SLSQP": "by scipy's SLSQP, the least change of the rates varied within their bounds",
+        "purest": "by scipy's L-BFGS-B, the purest mode these rates give within their bounds",
+    }
+    out = []
+    for d in decouplings:
+        before, after = d.before, d.after
+        verdict = (
+            "decoupled to rounding"
+            if d.exact
+            else "NOT decoupled: vary more rates, other rates, or widen the bounds"
+        )
+        rows = [
+            [
+                r.label,
+                ", ".join(_kn(k) for k in dict.fromkeys(r.before_n_m)),
+                _kn(r.after_n_m),
+                f"{_kn(r.low_n_m)} to {_kn(r.high_n_m)}" + (" (at a bound)" if r.at_bound else ""),
+            ]
+            for r in d.rates
+        ]
+
+        def row(label, value, s=before, t=after):
+            return [label, value(s), value(t)]
+
+        states = [
+            row("TRA mode", lambda s: f"{s.mode} ({s.motion})"),
+            row("Frequency (Hz)", lambda s: figure(s.frequency_hz)),
+            row("Purity (%)", lambda s: f"{s.purity_pct:.2f}"),
+            row("Energy on the TRA (%)", lambda s: f"{s.tra_energy_pct:.2f}"),
+            row("Mode's axis to the TRA (°)", lambda s: f"{s.axis_angle_deg:.3g}"),
+            row("Mode's axis from the CG (mm)", lambda s: f"{s.axis_offset_m * 1e3:.3g}"),
+            row("TRA to elastic axis (°)", lambda s: f"{s.axes_angle_deg:.3g}"),
+        ]
+        out += [
+            f"{heading}{safe(d.name)}: torque roll axis decoupling",
+            "",
+            "The rates that make the turn about the torque roll axis (direction "
+            f"{_vector(d.torque_roll_axis.direction)}, through the centre of gravity) a "
+            f"natural mode (Jeong and Singh 2000), found {methods[d.method]}: {verdict}.",
+            "",
+            render(["Rate", "Before (N/mm)", "After (N/mm)", "Bounds (N/mm)"], rows, fmt),
+            "",
+            "The mode nearest the turn about the torque roll axis (purity: the share of its "
+            "kinetic energy in that turn):",
+            "",
+            render(["", "Before", "After"], states, fmt),
+            "",
+        ]
     return "\n".join(out)
 
 

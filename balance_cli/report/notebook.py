@@ -21,6 +21,7 @@ from ..analysis.results import Comparison, EngineResult, compare
 from ..analysis.steadiness import Steadiness
 from ..analysis.torque import TorqueResult, TorqueSet
 from ..cranksearch.results import SearchResult
+from ..mounting.decoupling import Decoupling
 from ..mounting.result import MountResult
 from ..studies.family import FamilyResult
 from ..studies.regress import Regression
@@ -31,7 +32,7 @@ from .compare import compare_tables
 from .counterweight import balance_tables
 from .display import figure
 from .family import family_tables
-from .mounts import mount_tables
+from .mounts import decoupling_tables, mount_tables
 from .regress import regression_tables
 from .search import search_tables
 from .sweeps import sweep_tables
@@ -60,6 +61,7 @@ _COMMANDS = (
     (Steadiness, steadiness_text),
     (TorsionResult, lambda r: torsion_tables([r], _FMT, Scale.of(False))),
     (MountResult, lambda r: mount_tables([r], _FMT)),
+    (Decoupling, lambda r: decoupling_tables([r], _FMT)),
     (SweepResult, lambda r: sweep_tables(r, _FMT)),
     (SweepGrid, lambda r: sweep_tables(r, _FMT)),
     (FamilyResult, lambda r: family_tables(r, Scale.of(True), _FMT)),

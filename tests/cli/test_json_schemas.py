@@ -235,10 +235,26 @@ def documents(tmp_path_factory):
             run(
                 "sweep", CAR, "--vary", "banks[1].angle", "--values", "0,10", "--speed", "5000 rpm"
             ),
+            # the mount analysis's quantities over a [mounts] key, a mount's force over speeds
+            run(
+                "sweep",
+                CONFIGS / "mounts" / "four-mount-symmetric.toml",
+                "--vary",
+                "mounts.mount[*].stiffness[3]",
+                "--values",
+                "150 N/mm,250 N/mm",
+                "--quantity",
+                "mode_1,bounce_mode,tra_purity,axes_angle,mount_front_left_force,mount_2_Fz",
+                "--mount-speeds",
+                "600:1200:300",
+            ),
         ],
         # every file of the library's mounts folder: with and without a mean torque (the
         # genset's gas cycle, the car's power), inclined mounts, resonances crossed
-        "mounts": [run("mounts", CONFIGS / "mounts", "--speeds", "300:1500:300")],
+        "mounts": [
+            run("mounts", CONFIGS / "mounts", "--speeds", "300:1500:300"),
+            run("mounts", CONFIGS / "mounts" / "four-mount-coupled.toml", "--decouple", "all"),
+        ],
         "regress": [
             run("regress", baseline, CAR, built),
             # a mass and a firing order moved, an engine added and one removed

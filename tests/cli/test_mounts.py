@@ -134,3 +134,48 @@ def test_bad_options_are_one_line_and_write_nothing(args, flag, tmp_path):
     assert result.exit_code != 0
     assert flag in result.output and "Traceback" not in result.output
     assert not out.exists()
+
+
+def test_decouple_prints_the_rates_and_analyses_the_mounts_with_them():
+    """The five rates of the coupled example that decouple (tests/mounting/test_decouple.py
+    checks them): the decoupling's table first, then the analysis of the mounts with them,
+    whose roll mode is pure; the JSON carries the decoupling beside the mounts analysed."""
+    args = ["--decouple", "A+B:y", "--decouple", "A:z", "--decouple", "B:x"]
+    args += ["--decouple", "C:compression", "--decouple", "C:shear", "--speeds", "1000"]
+    result = invoke("mounts", COUPLED, *args)
+    assert result.exit_code == 0, result.output
+    out = result.output
+    assert out.index("torque roll axis decoupling") < out.index("Natural modes")
+    assert "decoupled to rounding" in out and "A+B:y" in out
+    document = json.loads(invoke("mounts", COUPLED, *args, "--format", "json").output)
+    (engine,) = document["engines"]
+    found = balance.decouple(
+        balance.load(COUPLED),
+        [(("A", "B"), "y"), ("A", "z"), ("B", "x"), ("C", "compression"), ("C", "shear")],
+    )
+    assert engine["decoupling"] == json.loads(json.dumps(found.to_dict()))
+    rates = {m["mount"]: m["rates_N_per_m"] for m in engine["system"]["mounts"]}
+    assert rates["A"][1] == rates["B"][1] == found.rates[0].after_n_m
+    roll = [m for m in engine["modes"] if m["mode"] == found.after.mode][0]
+    assert_allclose(roll["purity_pct"], 100.0, rtol=1e-9)  # all its energy about x (M·q* ∥ x̂)
+
+
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["--decouple", "A"], "give MOUNT:RATE"),
+        (["--decouple", "+B:z"], "give MOUNT:RATE"),
+        (["--decouple", "all", "--decouple", "A:z"], "give it alone"),
+        (["--decouple", "E:z"], "--decouple"),
+        (["--rate-bounds", "1 N/mm,2 N/mm"], "give --decouple"),
+        (["--decouple", "A:z", "--rate-bounds", "1 N/mm"], "LOW,HIGH"),
+        (["--decouple", "A:z", "--rate-bounds", "1 N/mm,2 kg"], "--rate-bounds"),
+        (["--decouple", "A:z", "--rate-bounds", "5 N/mm,2 N/mm"], "--rate-bounds"),
+    ],
+)
+def test_bad_decouple_options_are_one_line(args, words, tmp_path):
+    out = tmp_path / "out.json"
+    result = invoke("mounts", COUPLED, *args, "--format", "json", "-o", out)
+    assert result.exit_code != 0
+    assert words in result.output and "Traceback" not in result.output
+    assert not out.exists()

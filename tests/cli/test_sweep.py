@@ -364,3 +364,21 @@ def test_the_bar_shows_before_the_first_point(tmp_path, monkeypatch):
     assert result.exit_code == 0, result.output
     # the first build is the file's own; the bar is up before the second, the first point's
     assert "Sweeping" not in seen[0] and "Sweeping" in seen[1] and "0%" in seen[1]
+
+
+def test_a_mount_rate_with_the_mount_quantities(tmp_path):
+    """Every mount's vertical rate of the symmetric example: bounce √(4·k_z/m)/2π in the table
+    (Hz) and the CSV, the mount's force in the units asked for, a picture of them."""
+    config = CONFIGS / "mounts" / "four-mount-symmetric.toml"
+    common = ["sweep", config, "--vary", "mounts.mount[*].stiffness[3]"]
+    common += ["--values", "150 N/mm,250 N/mm", "--quantity", "bounce_mode,mount_1_force"]
+    common += ["--mount-speeds", "500:1500:100"]
+    table = invoke(*common, "--units", "kN", "--plot", tmp_path / "mounts.png")
+    assert table.exit_code == 0, table.output
+    assert "bounce_mode (Hz)" in table.output and "mount_1_force (kN)" in table.output
+    assert (tmp_path / "mounts.png").read_bytes()[:4] == b"\x89PNG"
+    rows = list(csv.DictReader(io.StringIO(invoke(*common, "--format", "csv").output)))
+    bounce = [np.sqrt(4 * k / 150) / (2 * np.pi) for k in (150e3, 250e3)]
+    assert_allclose([float(r["bounce_mode_Hz"]) for r in rows], bounce, rtol=1e-12)
+    bad = invoke(*common, "--mount-speeds", "5:1")
+    assert bad.exit_code != 0 and "--mount-speeds" in bad.output

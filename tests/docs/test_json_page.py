@@ -67,7 +67,15 @@ def runs(tmp_path):
         ],
         "torque": [run("torque", CAR)],
         "mounts": [
-            run("mounts", CONFIGS / "mounts" / "four-mount-coupled.toml", "--speeds", "500,1000")
+            run("mounts", CONFIGS / "mounts" / "four-mount-coupled.toml", "--speeds", "500,1000"),
+            run(
+                "mounts",
+                CONFIGS / "mounts" / "four-mount-coupled.toml",
+                "--speeds",
+                "500",
+                "--decouple",
+                "all",
+            ),
         ],
         "steadiness": [
             run(
@@ -90,6 +98,18 @@ def runs(tmp_path):
         ],
         "sweep": [
             run("sweep", CAR, "--vary", "rod_length", "--values", "140 mm,150 mm"),
+            run(
+                "sweep",
+                CONFIGS / "mounts" / "four-mount-coupled.toml",
+                "--vary",
+                "mounts.mount[A].stiffness[3]",
+                "--values",
+                "200 N/mm,300 N/mm",
+                "--quantity",
+                "mode_1,roll_mode,tra_purity,axes_angle,mount_A_force,mount_D_Fz",
+                "--mount-speeds",
+                "500,1000",
+            ),
             run(
                 "sweep",
                 CAR,

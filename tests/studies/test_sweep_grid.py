@@ -85,6 +85,7 @@ def test_grid_records_and_json(tmp_path):
         "quantities",
         "inertia_kgm2",
         "load",
+        "mount_speeds_rpm",
         "points",
     }
     assert document["shape"] == [2, 3]

@@ -63,6 +63,7 @@ def sweep(
     load: str = "propeller",
     overrides: "dict | None" = None,
     progress: "Callable[[int, int], None] | None" = None,
+    mount_speeds_rpm=None,
 ) -> SweepResult:
     """Analyse ``configuration`` once per value of ``parameter``.
 
@@ -75,7 +76,11 @@ def sweep(
         a configuration key as written in the file: ``speed``, ``rod_length``,
         ``masses.rotating``, ``banks[2].angle``, ``throws[3].phase``, ``gas.imep``,
         ``cylinders[4].reciprocating``, ... (any number of the configuration; see
-        :data:`SCHEMA`); a parameter derived from the keys (:data:`DERIVED`): ``rod_ratio``
+        :data:`SCHEMA`); a key of the [mounts] table, ``mounts.mass``,
+        ``mounts.mount[2].stiffness[3]`` (the second mount's rate along z; a mount by number
+        or name), ``mounts.mount[*].stiffness[3]`` (one value for every mount),
+        ``mounts.mount[C].compression``, ``mounts.centre_of_gravity[3]``, ... (see
+        :mod:`.mountkeys`); a parameter derived from the keys (:data:`DERIVED`): ``rod_ratio``
         (rod_length / crank_radius; sets rod_length, holds crank_radius), ``stroke``
         (2 × crank_radius; sets crank_radius, holds rod_length) or ``bore_pitch`` (the
         spacing of the throws' z; sets the throws' z, the first throw's held); or
@@ -87,7 +92,12 @@ def sweep(
         read as that number); :func:`span` makes evenly spaced ones
     quantities : str or sequence of str, optional
         what to report at each point (see :func:`quantities_of`); default the largest free
-        force and moment after an ideal counterweight
+        force and moment after an ideal counterweight. Of the engine on its mounts
+        (:mod:`.mountquantities`): ``mode_1`` to ``mode_6`` (Hz), ``roll_mode`` (the mode
+        roll dominates; ``fore_aft``, ``lateral``, ``bounce``, ``pitch``, ``yaw`` alike),
+        ``tra_purity`` (%), ``axes_angle`` (degrees), ``mount_A_force`` and
+        ``mount_A_Fx``/``Fy``/``Fz`` (N: the largest over a cycle, orders up to
+        ``max_order`` summed; a mount by name, spaces as _, or number)
     samples, max_order : int
         as for :func:`~balance_cli.analyse`
     inertia_kgm2 : float, optional
@@ -103,6 +113,9 @@ def sweep(
         ``progress(done, total)``, called with ``(0, total)`` before any work and after each
         step: ``total`` counts each point's engine built and checked (all of them first, so
         that a bad value is reported before any analysis), then each point analysed
+    mount_speeds_rpm : sequence of float, optional
+        the speeds, rpm, over which a mount's force quantity takes its largest; default each
+        point's own speed
 
     Raises
     ------
@@ -110,7 +123,9 @@ def sweep(
         the configuration itself cannot be read or built
     SweepError
         an unknown parameter or one the engine does not define (``parameter``), unusable
-        values (``values``) or quantities (``quantities``), a steadiness without
+        values (``values``) or quantities (``quantities``; a mount quantity without a
+        [mounts] table, a [mounts] key without a mount quantity), bad
+        ``mount_speeds_rpm``, a steadiness without
         ``inertia_kgm2``, bad ``load``, ``overrides`` or ``progress``, a PRU without the
         power at the point's speed, or a point whose configuration is invalid (the message
         names the file, the key and the value; ``key`` and ``value`` say which)
@@ -129,6 +144,7 @@ def sweep(
         overrides,
         progress,
         grid=False,
+        mount_speeds_rpm=mount_speeds_rpm,
     )
     return SweepResult(
         run["name"],
@@ -155,6 +171,7 @@ def sweep_grid(
     load: str = "propeller",
     overrides: "dict | None" = None,
     progress: "Callable[[int, int], None] | None" = None,
+    mount_speeds_rpm=None,
 ) -> SweepGrid:
     """Analyse ``configuration`` at every pair of values of two parameters.
 
@@ -170,7 +187,7 @@ def sweep_grid(
     values : sequence of two sequences
         each parameter's values, two or more each, as :func:`sweep` takes them; at most
         :data:`MAX_POINTS` pairs
-    quantities, samples, max_order, inertia_kgm2, load, overrides, progress
+    quantities, samples, max_order, inertia_kgm2, load, overrides, progress, mount_speeds_rpm
         as for :func:`sweep`
 
     Raises
@@ -204,6 +221,7 @@ def sweep_grid(
         overrides,
         progress,
         grid=True,
+        mount_speeds_rpm=mount_speeds_rpm,
     )
     return SweepGrid(
         run["name"],

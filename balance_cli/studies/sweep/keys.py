@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from ...errors import SweepError
 from ...units import DIMENSIONS
 from .derived import DERIVED, Derived
+from .mountkeys import mount_keys_hint, mount_parameter
 
 __all__ = [
     "SCHEMA",
@@ -117,6 +118,8 @@ _SI_UNITS = {
     "torque": "N*m",
     "power": "W",
     "unbalance": "kg*m",
+    "stiffness": "N/m",
+    "viscous damping": "N*s/m",
     ANGLE: "rad",
     NUMBER: "",
     WHOLE: "",
@@ -275,7 +278,7 @@ def _refused(text, problem, data, path, listing=True):
     has = ", ".join(_compressed(present))
     more = f"; it may add {', '.join(addable)}" if addable else ""
     return SweepError(
-        f"{text!r}: {problem}; {path} has {has}{more}, and there are "
+        f"{text!r}: {problem}; {path} has {has}{more}{mount_keys_hint(data)}, and there are "
         f"{', '.join(DERIVED)} (derived from those keys) and balance_factor (of the "
         "counterweights)",
         "parameter",
@@ -287,7 +290,9 @@ def parameter_of(data: dict, key: str, path: str = "<config>") -> Parameter:
 
     A key the format allows but the file leaves out (``pin_offset``, ``masses.rotating``) is
     added at each point; a key of a table the file does not have is refused. ``rod_ratio``,
-    ``stroke`` and ``bore_pitch`` are derived from the file's keys (see :mod:`.derived`).
+    ``stroke`` and ``bore_pitch`` are derived from the file's keys (see :mod:`.derived`); the
+    [mounts] table's keys are written as :mod:`.mountkeys` says (``mounts.mass``,
+    ``mounts.mount[2].stiffness[3]``, ``mounts.mount[*].stiffness[3]``).
 
     Raises
     ------
@@ -304,6 +309,8 @@ def parameter_of(data: dict, key: str, path: str = "<config>") -> Parameter:
     text = key.strip()
     if text == BALANCE_FACTOR:
         return Parameter(text, FRACTION, ())
+    if text == "mounts" or text.startswith("mounts."):
+        return Parameter(text, *mount_parameter(data, text, path))
     if text in DERIVED:
         derived = DERIVED[text]
         # the file's own value, or the reason the engine has none (link rods, uneven throws)

@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 from ...analysis.shaking import DEFAULT_MAX_ORDER
 from ...errors import SweepError
+from .mountquantities import MOUNT_QUANTITY_NAMES, mount_quantity
 
 __all__ = ["Quantity", "quantities_of", "QUANTITY_NAMES", "DEFAULT_QUANTITIES"]
 
@@ -14,9 +15,11 @@ __all__ = ["Quantity", "quantities_of", "QUANTITY_NAMES", "DEFAULT_QUANTITIES"]
 class Quantity:
     """One quantity a sweep reports at every point.
 
-    ``name`` as asked for (``F2V``, ``largest_moment``), ``column`` its key in the records
-    (the name and the SI unit: ``F2V_N``), ``unit`` "N", "Nm" or "" and ``kind`` "force",
-    "moment", "torque" or "steadiness".
+    ``name`` as asked for (``F2V``, ``largest_moment``, ``mode_1``), ``column`` its key in the
+    records (the name and the SI unit: ``F2V_N``, ``mode_1_Hz``), ``unit`` "N", "Nm", "Hz",
+    "%", "deg" or "" and ``kind`` "force", "moment", "torque", "steadiness", "pru", or of the
+    engine on its mounts "frequency", "decoupling", "axes angle" or "mount force"
+    (:mod:`.mountquantities`); ``mount`` the mount a "mount force" is of, as named.
     """
 
     name: str
@@ -26,6 +29,7 @@ class Quantity:
     meaning: str
     order: int | None = None
     part: str | None = None
+    mount: str | None = None
 
     def to_dict(self) -> dict:
         return {
@@ -67,19 +71,23 @@ _NAMED = {
 }
 #: what ``quantities`` may name, for messages and help texts
 QUANTITY_NAMES = (
-    "F<k>",
-    "F<k>V",
-    "F<k>H",
-    "F<k>+",
-    "F<k>-",
-    "M<k>",
-    "M<k>V",
-    "M<k>H",
-    "M<k>+",
-    "M<k>-",
-    "PRU<k>V",
-    "PRU<k>H",
-) + tuple(_NAMED)
+    (
+        "F<k>",
+        "F<k>V",
+        "F<k>H",
+        "F<k>+",
+        "F<k>-",
+        "M<k>",
+        "M<k>V",
+        "M<k>H",
+        "M<k>+",
+        "M<k>-",
+        "PRU<k>V",
+        "PRU<k>H",
+    )
+    + tuple(_NAMED)
+    + MOUNT_QUANTITY_NAMES
+)
 DEFAULT_QUANTITIES = ("largest_force", "largest_moment")
 _ORDER_QUANTITY = re.compile(r"^([FM])(\d+)(V|H|\+|-)?$", re.IGNORECASE)
 _PRU_QUANTITY = re.compile(r"^PRU(\d+)(V|H)$", re.IGNORECASE)
@@ -175,11 +183,17 @@ def quantities_of(names, max_order: int = DEFAULT_MAX_ORDER) -> tuple:
                 Quantity(lowered, f"{lowered}_{unit}" if unit else lowered, unit, kind, meaning)
             )
             continue
+        of_mounts = mount_quantity(name, Quantity)
+        if of_mounts is not None:
+            out.append(of_mounts)
+            continue
         raise SweepError(
             f"names {name!r}, which is not a quantity; give F<k> or M<k> (order k: "
             "the largest force or moment of that order) with V, H, + or - for the "
-            "vertical, horizontal, forward or backward part (F2V, M1H, F1+), or "
-            f"one of {', '.join(_NAMED)}",
+            "vertical, horizontal, forward or backward part (F2V, M1H, F1+), "
+            f"one of {', '.join(_NAMED)}, or of the engine on its mounts mode_1 to mode_6, "
+            "roll_mode (fore_aft, lateral, bounce, roll, pitch, yaw), tra_purity, axes_angle, "
+            "mount_<m>_force or mount_<m>_Fz (a mount's name or number)",
             "quantities",
         )
     columns = [q.column for q in out]

@@ -31,6 +31,10 @@ def parameter_dict(parameter: Parameter, values, values_si) -> dict:
     }
 
 
+def _listed(values):
+    return None if values is None else list(values)
+
+
 def _column(quantities, quantity):
     for q in quantities:
         if quantity in (q.name, q.column):
@@ -69,6 +73,8 @@ class SweepResult(Tabular):
     load : str
     overrides : tuple of (key, value)
         the keys set at every point besides the parameter
+    mount_speeds_rpm : tuple of float or None
+        the speeds over which a mount's force is the largest (None: each point's own speed)
     """
 
     name: str
@@ -84,6 +90,7 @@ class SweepResult(Tabular):
     inertia_kgm2: float | None = None
     load: str = "propeller"
     overrides: tuple = ()
+    mount_speeds_rpm: tuple | None = None
 
     @property
     def speed_rpm(self) -> float | None:
@@ -116,6 +123,7 @@ class SweepResult(Tabular):
             "quantities": [q.to_dict() for q in self.quantities],
             "inertia_kgm2": self.inertia_kgm2,
             "load": self.load if self.inertia_kgm2 is not None else None,
+            "mount_speeds_rpm": _listed(self.mount_speeds_rpm),
             "points": self.records(),
         }
 
@@ -138,7 +146,7 @@ class SweepGrid(Tabular):
         and one key per quantity's ``column`` (SI: N, N·m)
     engines : tuple of Engine
         each point's engine, in the order of ``points``
-    samples, max_order, inertia_kgm2, load, overrides
+    samples, max_order, inertia_kgm2, load, overrides, mount_speeds_rpm
         as for :class:`SweepResult`
     """
 
@@ -155,6 +163,7 @@ class SweepGrid(Tabular):
     inertia_kgm2: float | None = None
     load: str = "propeller"
     overrides: tuple = ()
+    mount_speeds_rpm: tuple | None = None
 
     @property
     def shape(self) -> tuple:
@@ -197,5 +206,6 @@ class SweepGrid(Tabular):
             "quantities": [q.to_dict() for q in self.quantities],
             "inertia_kgm2": self.inertia_kgm2,
             "load": self.load if self.inertia_kgm2 is not None else None,
+            "mount_speeds_rpm": _listed(self.mount_speeds_rpm),
             "points": self.records(),
         }

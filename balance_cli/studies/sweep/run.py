@@ -21,6 +21,7 @@ from ...config import Configuration, build, parse_text, read_text, resolve
 from ...errors import BalanceError, ConfigError, FiringError, SweepError
 from ...units import parse_quantity, rad_s_to_rpm
 from .keys import ANGLE, FRACTION, MAX_POINTS, parameter_of
+from .mountquantities import MOUNT_KINDS, check_mount_quantities, measure_mounts
 from .quantities import quantities_of
 from .readout import measure
 from .values import normalised
@@ -208,6 +209,7 @@ def run_sweep(
     overrides,
     progress,
     grid,
+    mount_speeds_rpm=None,
 ):
     """The work of :func:`~balance_cli.studies.sweep.sweep` (one name) and
     :func:`~balance_cli.studies.sweep.sweep_grid` (two): a dict of what their results hold."""
@@ -241,6 +243,16 @@ def run_sweep(
         raise SweepError(f"sets {shown}: {where}{problem}", "overrides") from None
 
     wanted = _quantities(quantities, max_order, params)
+    check_mount_quantities(base, wanted, path)
+    mount_speeds = _mount_speeds(mount_speeds_rpm, wanted)
+    mount_key = next((p.key for p in params if p.key.startswith("mounts.")), None)
+    if mount_key is not None and not any(q.kind in MOUNT_KINDS for q in wanted):
+        raise SweepError(
+            f"{mount_key!r} changes only the engine on its mounts: ask for its quantities, "
+            "mode_1 to mode_6, roll_mode (or fore_aft, lateral, bounce, pitch, yaw), "
+            "tra_purity, axes_angle, mount_<m>_force, mount_<m>_Fz",
+            name_of,
+        )
     values = []
     for param, listed in zip(params, value_lists, strict=True):
         checked = normalised(param, listed)
@@ -374,16 +386,23 @@ def run_sweep(
         )
 
     factor_axis = next((i for i, p in enumerate(params) if p.kind == FRACTION), None)
+    # the quantities of the shaking analysis; the others are the mount analysis's
+    shaking = [q for q in wanted if q.kind not in MOUNT_KINDS]
     points, engines = [], []
     for index in np.ndindex(*shape):
         assignments = [(params[i], values[i][k]) for i, k in enumerate(index)]
         engine = engines_by_key[tuple(index[i] for i in keyed)]
         factor = None if factor_axis is None else values[factor_axis][index[factor_axis]]
         try:
-            result = analyse(engine, samples, max_order)
-            record = measure(
-                result, wanted, factor, samples, max_order, torque_of, inertia_kgm2, load
-            )
+            record = {}
+            if shaking:
+                result = analyse(engine, samples, max_order)
+                record = measure(
+                    result, shaking, factor, samples, max_order, torque_of, inertia_kgm2, load
+                )
+            if len(shaking) < len(wanted):
+                record.update(measure_mounts(engine, wanted, samples, max_order, mount_speeds))
+            record = {q.column: record[q.column] for q in wanted}
         except BalanceError as exc:
             raise _point_error(exc, assignments, path) from None
         if grid:
@@ -413,5 +432,31 @@ def run_sweep(
             inertia_kgm2=inertia_kgm2,
             load=load,
             overrides=tuple((overrides or {}).items()),
+            mount_speeds_rpm=None if mount_speeds is None else tuple(mount_speeds),
         ),
     )
+
+
+def _mount_speeds(speeds_rpm, wanted):
+    """The speeds over which a mount's force takes its largest (a list of floats, rpm), or
+    None: each point's own speed."""
+    if speeds_rpm is None:
+        return None
+    if not any(q.kind == "mount force" for q in wanted):
+        raise SweepError(
+            "applies to the mounts' forces only (mount_<m>_force, mount_<m>_Fz); ask for one "
+            "or leave the speeds out",
+            "mount_speeds_rpm",
+        )
+    from ...mounting import MAX_SPEEDS
+
+    try:
+        values = np.asarray(speeds_rpm, dtype=float).reshape(-1)
+    except (TypeError, ValueError):
+        values = np.array([math.nan])
+    if not 1 <= values.size <= MAX_SPEEDS or not np.all(np.isfinite(values)) or values.min() <= 0:
+        raise SweepError(
+            f"must be 1 to {MAX_SPEEDS} speeds greater than zero, rpm, got {speeds_rpm!r}",
+            "mount_speeds_rpm",
+        )
+    return [float(v) for v in values]

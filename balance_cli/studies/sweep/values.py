@@ -82,6 +82,8 @@ def _example(parameter):
         "angular speed": "3000 rpm",
         "moment of inertia": "0.12 kg*m^2",
         "pressure": "12 bar",
+        "stiffness": "250 N/mm",
+        "viscous damping": "0.5 N*s/mm",
     }
     return examples.get(parameter.kind, "1")
 
