@@ -123,6 +123,8 @@ install-check:
 	    python -c 'import balance_cli.config.library as l; print(l.library_folder())'; \
 	  run '^balance compare document, version 3$$' \
 	    python -c 'from balance_cli.schemas import schema; print(schema("compare")["title"])'; \
+	  run 'balance animate: an engine turning' \
+	    python -c 'from balance_cli.plot.page import script; print(script()[:80])'; \
 	  echo "install-check: $$passed passed, 0 failed"
 
 clean:

@@ -26,6 +26,10 @@ ratio of the medians is what counts, so the machine's speed cancels out.
 - ``balance.mounts`` of configs/mounts/four-mount-coupled.toml: modes, axes, static
   deflections and the forced response at 100 speeds, orders ½ to 12 (24 orders), in one
   process (target: well under a second; at most 0.3 s)
+- ``balance animate`` of a radial with link rods, a rotary, the cross-plane V8, the BRM H16 (two
+  crankshafts) and the Jumo 205 (opposed pistons): each one's GIF at default settings and its
+  HTML page, the time to write each and its size; the whole command for the V8's GIF (median
+  of 3, start-up included) under 5 s, and every GIF under 2 MB
 - how often ``torque`` and ``torsional_vibration`` close the linkage (tools/closures.py)
 
 ``make bench BASE=/path/to/another/checkout`` (one with its own ``.venv``, as ``make setup``
@@ -274,6 +278,61 @@ def mounts_bench():
     return verdict != "ok"
 
 
+#: the engines balance animate is shown on
+ANIMATED = (
+    "configs/tanaka-part3/5a-radial-9.toml",
+    "configs/clerget-rotary.toml",
+    "configs/today/v/v8-90-cross-plane.toml",
+    "configs/today/h/brm-h16.toml",
+    "configs/today/opposed-piston/junkers-jumo-205.toml",
+)
+_WROTE = re.compile(r"^wrote (\S+) \(([0-9.e-]+) s\)$")
+
+
+def animate_bench():
+    """Each engine's GIF and page: write time (what the command reports) and size; the V8's
+    GIF command whole (median of 3) against 5 s; every GIF against 2 MB."""
+    failed = False
+    with tempfile.TemporaryDirectory() as folder:
+        for config in ANIMATED:
+            stem = Path(config).stem
+            gif, page = Path(folder) / f"{stem}.gif", Path(folder) / f"{stem}.html"
+            done = subprocess.run(
+                [BALANCE, "animate", config, "-o", str(gif), "-o", str(page)],
+                cwd=ROOT,
+                check=True,
+                capture_output=True,
+                text=True,
+            )
+            took = dict(m.groups() for m in map(_WROTE.match, done.stderr.splitlines()) if m)
+            for path in (gif, page):
+                size = path.stat().st_size
+                print(
+                    f"{float(took[str(path)]) * 1000:8.1f} ms  balance animate {config} -o "
+                    f"{path.name}: {size / 1e6:.2f} MB"
+                )
+                if path.suffix == ".gif" and size >= 2_000_000:
+                    print(
+                        f"          {path.name} is {size / 1e6:.2f} MB (target under 2 MB): TOO BIG"
+                    )
+                    failed = True
+        v8 = [BALANCE, "animate", ANIMATED[2], "-o", str(Path(folder) / "v8.gif")]
+        times = []
+        for _ in range(4):
+            start = time.perf_counter()
+            subprocess.run(v8, cwd=ROOT, check=True, capture_output=True)
+            times.append(time.perf_counter() - start)
+        # the first run warms the caches up
+        wall = statistics.median(times[1:])
+    verdict = "ok" if wall < 5.0 else "TOO SLOW"
+    print(
+        f"{wall * 1000:8.1f} ms  median of 3  balance animate {ANIMATED[2]} -o v8.gif "
+        f"(the whole command)"
+    )
+    print(f"the V8's GIF in {wall:.2f} s (target under 5 s): {verdict}\n")
+    return failed or wall >= 5.0
+
+
 def main():
     # byte-compile balance first, as installing numpy compiled numpy: with
     # PYTHONDONTWRITEBYTECODE set (as on this project's machines) every run would otherwise
@@ -306,6 +365,7 @@ def main():
     failed |= family_bench()
     failed |= torsion_bench()
     failed |= mounts_bench()
+    failed |= animate_bench()
     subprocess.run([sys.executable, str(ROOT / "tools" / "closures.py")], cwd=ROOT, check=True)
     return 1 if failed else 0
 

@@ -12,6 +12,7 @@ few commands on the group when imported here.
 import sys
 
 from . import (  # noqa: F401
+    animate,
     compare,
     counterweight,
     inspect,

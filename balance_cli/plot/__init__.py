@@ -11,14 +11,22 @@ Kinds: :func:`locus` (Tanaka's Fig. 9), :func:`spectrum`, :func:`star`, :func:`f
 those of the free moment instead of the force.
 :func:`save` writes a figure in the format its file name's extension names.
 
+:func:`animate` makes an :class:`EngineAnimation` of one analysed engine: its mechanism turning
+through its cycle beside the phasors of chosen orders, written as a GIF, an MP4 or a
+self-contained HTML page (its :class:`Scene` holds what is drawn).
+
 Also :func:`campbell`, :func:`mode_shapes` and :func:`torque_speed` of a torsional vibration
 analysis; :func:`mount_modes`, :func:`energy_bars` and :func:`mount_forces` of the engine on
 its mounts; and :func:`sweep_figure` of a sweep (curves) or a grid of two parameters (heat maps).
 
 One module per picture: ``loci``, ``spectra``, ``stars`` (its labels placed by ``labels``),
 ``firings``, ``torques``, ``torsion``, ``mounts`` and ``sweep``; ``figure`` holds what they share.
+The animation: ``scene`` (what is drawn), ``movie`` (one instant drawn by matplotlib),
+``animation`` (the animation and its files) and ``page`` (the HTML page, drawn by the script
+``animate.js``).
 """
 
+from .animation import ANIMATION_FORMATS, DEFAULT_ORDERS, EngineAnimation, animate
 from .figure import (
     CELL_IN,
     DPI,
@@ -36,6 +44,7 @@ from .firings import firing
 from .labels import STAR_LABEL_GAP_PT, STAR_LABEL_MIN_PT, STAR_LABEL_PT, place_labels
 from .loci import coinciding, locus, locus_points
 from .mounts import energy_bars, equivalent_box, mount_forces, mount_modes
+from .scene import Part, Scene
 from .spectra import SPECTRUM_UNITS, spectrum, spectrum_data
 from .stars import STAR_TITLE_CHARS, star, star_chains
 from .sweep import axis_values, sweep_figure
@@ -51,6 +60,12 @@ __all__ = [
     "star",
     "firing",
     "torque",
+    "animate",
+    "EngineAnimation",
+    "Scene",
+    "Part",
+    "ANIMATION_FORMATS",
+    "DEFAULT_ORDERS",
     "save",
     "format_of",
     "grid_size",

@@ -6,7 +6,11 @@ from .document import PICTURES, blocks
 from .html import page
 from .markdown import markdown
 
-__all__ = ["write_report", "REPORT_FILES"]
+__all__ = ["write_report", "REPORT_FILES", "REPORT_FRAMES"]
+
+#: each engine's animation in report.html: frames a revolution (4° apart: a report of the
+#: whole library stays a few megabytes)
+REPORT_FRAMES = 90
 
 REPORT_FILES = [file for file, *_ in PICTURES] + ["report.md", "report.html"]
 
@@ -47,8 +51,18 @@ def write_report(
         write_text(folder / "report.md", markdown(content))
         names.append("report.md")
         if with_html:
-            write_text(folder / "report.html", page(content, folder))
+            write_text(folder / "report.html", page(content, folder, _animations(results)))
             names.append("report.html")
         return names
 
     return write_folder(target, fill)
+
+
+def _animations(results):
+    """Each engine's name and animation (orders 1 and 2, or 1 alone when only it is
+    analysed), for report.html."""
+    out = []
+    for r in results:
+        orders = [k for k in plot.DEFAULT_ORDERS if k <= r.max_order]
+        out.append((r.engine.name, plot.animate(r, orders).html(REPORT_FRAMES, whole=False)))
+    return out

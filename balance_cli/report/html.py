@@ -36,8 +36,11 @@ def _table(headers, rows):
     )
 
 
-def page(blocks, folder):
-    """The page; the pictures are read from ``folder``."""
+def page(blocks, folder, animations=()):
+    """The page; the pictures are read from ``folder``; ``animations`` (each engine's name and
+    its animation's HTML without style and script, :meth:`EngineAnimation.html
+    <balance_cli.plot.EngineAnimation.html>`) in a section of their own at the end, drawn by
+    one script."""
     body = []
     for block in blocks:
         if block[0] == "h":
@@ -54,6 +57,18 @@ def page(blocks, folder):
                 f"{_inline_svg(Path(folder) / file)}<figcaption>{html.escape(caption)}"
                 "</figcaption></figure>"
             )
+    if animations:
+        from ..plot.page import script, style
+
+        body.append("<h2>Animations</h2>")
+        body.append(
+            "<p>Each engine turning through its cycle, beside the forward and backward phasors "
+            "of its force and free moment, orders 1 and 2 at first: play and pause, speed, a "
+            "step to each firing top dead centre, orders and cylinders on and off.</p>"
+        )
+        for name, content in animations:
+            body.append(f"<h3>{html.escape(name)}</h3>\n{content}")
+        body.append(style() + script())
     return (
         '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
         "<title>Balance report</title>"

@@ -80,9 +80,13 @@ def test_html_report_opens_in_headless_chromium_without_console_errors(tmp_path)
     assert result.exit_code == 0, result.output
     page = out / "report.html"
     html = page.read_text(encoding="utf-8")
-    assert ' src="http' not in html and ' href="http' not in html and "<script" not in html
+    assert ' src="http' not in html and ' href="http' not in html
+    # one script, which draws every engine's animation from its data (JSON, not a script)
+    assert html.count("<script>") == 1
+    assert html.count('<script type="application/json" class="balance-animation-data">') == 9
     dom, console = dump(page, tmp_path / "profile")
     assert console == []
+    assert dom.count('class="ba-views"') == 9
     # engines; forces, firing and the summary (Part III has no free moment, so no moment
     # table); counterweights, torques and reduced mass: every table report.md has
     tables = (out / "report.md").read_text(encoding="utf-8").count("\n|:-")
