@@ -1,8 +1,9 @@
 """The JSON Schemas of the documents balance writes, and checking a document against its own.
 
 Every document balance writes (``--format json`` of compare, counterweight, torque, torsion,
-mounts, steadiness, regress, search, family and sweep) carries its format's version in
-``balance_version``; its schema is the file ``DOCUMENT.vVERSION.json`` beside this module
+mounts, steadiness, regress, search, family, sweep, match, tolerance and bobweight) carries its
+format's version in ``balance_version``; its schema is the file ``DOCUMENT.vVERSION.json`` beside
+this module
 (Draft 2020-12), installed with the package. A schema of a version balance writes is closed:
 a key it does not name fails it. The compare document's versions 1 and 2 have the schemas of
 what ``balance regress`` reads of a baseline that old, open to other keys. ``tools/
@@ -38,6 +39,9 @@ DOCUMENTS = {
             "search",
             "family",
             "sweep",
+            "match",
+            "tolerance",
+            "bobweight",
         )
     },
     "steadiness": (STEADINESS_VERSION,),
