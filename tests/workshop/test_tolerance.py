@@ -168,8 +168,8 @@ def test_the_same_seed_draws_the_same_runs_whatever_the_batches(monkeypatch):
     engine = balance.loads(FLAT_4, "flat-4.toml")
     band = ToleranceBand(reciprocating_kg=SIGMA, crank_radius_m=2e-5)
     one = balance.tolerance(engine, band, runs=300, seed=7, max_order=2)
-    # the module (the package's name tolerance is the function)
-    module = sys.modules["balance_cli.workshop.tolerance"]
+    # the module that batches the runs
+    module = sys.modules["balance_cli.workshop.production"]
     monkeypatch.setattr(module, "_BLOCK", 4096)  # batches of a few runs
     two = balance.tolerance(engine, band, runs=300, seed=7, max_order=2)
     assert_allclose(one.values["force_vertical"], two.values["force_vertical"], rtol=1e-12)
