@@ -36,7 +36,7 @@ _MOST_RUNS = 10_000_000
 #: complex numbers of positions closed at a time (memory: 16 bytes each)
 _BLOCK = 1 << 22
 #: the grid of the largest resultant over a revolution: the samples, this many times finer
-_UPSAMPLE = 4
+_UPSAMPLE = 2
 #: a dimension's central difference step, in its standard deviations
 _STEP = 1e-2
 _COMPONENTS = ("vertical", "horizontal", "max")

@@ -113,9 +113,9 @@ def _slider(point, centre, axis, length, offset, number):
 
 
 def _positions(engine, geometry, angles):
-    """Every point mass's position in every run: pistons (runs, cylinders, angles), knuckle
-    pins of link rods ({number: (runs, angles)}), crank pins (runs, throws, angles); fixed
-    frame, m."""
+    """Every point mass's position in every run: pistons ({number: (runs, angles)}), knuckle
+    pins of link rods ({number: (runs, angles)}), crank pins (a list by throw of (runs,
+    angles)); fixed frame, m."""
     crank = -angles if engine.is_rotary else angles
     pins = []
     for index, throw in enumerate(engine.throws):
@@ -144,13 +144,12 @@ def _positions(engine, geometry, angles):
         pistons[c.number] = _slider(
             start, shaft.centre, axis, geometry.rod[:, i, None], offset, c.number
         )
-    stack = np.stack([pistons[c.number] for c in engine.cylinders], axis=1)
-    pin_stack = np.stack(pins, axis=1)
     if engine.is_rotary:
         turn = np.exp(1j * angles)
-        stack, pin_stack = stack * turn, pin_stack * turn
+        pistons = {n: p * turn for n, p in pistons.items()}
         knuckles = {n: k * turn for n, k in knuckles.items()}
-    return stack, knuckles, pin_stack
+        pins = [p * turn for p in pins]
+    return pistons, knuckles, pins
 
 
 def run_coefficients(engine, draws, samples, basis=None):
@@ -180,10 +179,15 @@ def run_coefficients(engine, draws, samples, basis=None):
     lever_c = np.array([c.z_m for c in engine.cylinders]) - mean_z
     lever_t = np.array([t.z_m for t in engine.throws]) - mean_z
     pin_mass = draws.rotating + engine.crank_kg
-    weighted = np.einsum("rc,rca->ra", draws.reciprocating, pistons)
-    weighted += np.einsum("rt,rta->ra", pin_mass, pins)
-    levered = np.einsum("rc,rca->ra", draws.reciprocating * lever_c, pistons)
-    levered += np.einsum("rt,rta->ra", pin_mass * lever_t, pins)
+    # Σ m·x and Σ m·(z − z̄)·x over the point masses, run by run
+    weighted = np.zeros((draws.runs, samples), complex)
+    levered = np.zeros((draws.runs, samples), complex)
+    for i, c in enumerate(engine.cylinders):
+        weighted += draws.reciprocating[:, i, None] * pistons[c.number]
+        levered += (draws.reciprocating[:, i] * lever_c[i])[:, None] * pistons[c.number]
+    for t, position in enumerate(pins):
+        weighted += pin_mass[:, t, None] * position
+        levered += (pin_mass[:, t] * lever_t[t])[:, None] * position
     for number, position in knuckles.items():
         c = engine.cylinder(number)
         weighted += c.knuckle_kg * position
