@@ -35,8 +35,6 @@ from balance_cli.units import STANDARD_GRAVITY
 from balance_cli.workshop import assembled_toml
 
 folder = Path(tempfile.mkdtemp())
-#: the site's data files, beside the tutorials
-DATA = Path(__file__).resolve().parent.parent / "data"
 
 # %%
 # A parts file
@@ -89,7 +87,7 @@ dragonfly = dragonfly.replace(
 # Table III as Tanaka fitted it, then matched
 # -------------------------------------------
 #
-# The objective ``F1`` is the primary force (|F⁺| + |F⁻|, N) of what the engine as assembled
+# The objective ``F1`` is the primary force (``|F⁺| + |F⁻|``, N) of what the engine as assembled
 # has more than the same engine with every cylinder at the mean mass: Tanaka's measure. The
 # parts "as given" are fitted in the file's order, the first in cylinder 1 (the main).
 result = balance.match(dragonfly, parts, "F1")
@@ -114,7 +112,7 @@ assert abs(kgf - 19.6) < 0.05 and abs(angle + 17) < 0.5
 # ----------------------------------
 #
 # Tanaka's (14)₁ gives the primary of deviations mₙ (Σ mₙ = 0) of cylinders at n·40°: a
-# circle of radius ½·ω²·r·|Σ mₙ·e^{2i·n·40°}|. Every one of the 9! = 362 880 assignments,
+# circle of radius ``½·ω²·r·|Σ mₙ·e^{2i·n·40°}|``. Every one of the 9! = 362 880 assignments,
 # at once:
 omega, r = dragonfly.speed_rad_s, dragonfly.crank_radius_m
 pistons = np.array([p.mass_kg for p in parts.pistons])
@@ -158,8 +156,45 @@ ax.legend()
 # force over a revolution (all orders) plus the largest free moment over the pitch, of what
 # the deviations add. 4!·4! = 576 assignments; the crank read from the other end (1↔4, 2↔3)
 # scores alike, so 288 are evaluated.
-engine = balance.load(DATA / "workshop-inline-4.toml")
-four = balance.match(engine, DATA / "workshop-inline-4-parts.csv")
+INLINE_4 = """\
+name = "In-line 4, car proportions"
+cycle = 4
+speed = "6000 rpm"
+crank_radius = "43 mm"
+rod_length = "143 mm"
+firing_order = [1, 3, 4, 2]
+
+[masses]
+reciprocating = "550 g"   # piston, pin, rings and clips with the rod's small end
+rotating = "560 g"        # the rod's big end
+
+[[banks]]
+angle = 0
+""" + "".join(
+    f'\n[[throws]]\nphase = {phase}\nz = "{88 * j} mm"\n'
+    for j, phase in enumerate((0, 180, 180, 0))
+)
+(folder / "inline-4.toml").write_text(INLINE_4, encoding="utf-8")
+(folder / "parts.csv").write_text(
+    """\
+kind,id,mass
+piston,P1,402.3 g
+piston,P2,398.1 g
+piston,P3,405.0 g
+piston,P4,400.2 g
+rod_small,R1,151.0 g
+rod_big,R1,412.0 g
+rod_small,R2,148.2 g
+rod_big,R2,405.5 g
+rod_small,R3,150.1 g
+rod_big,R3,409.9 g
+rod_small,R4,149.0 g
+rod_big,R4,415.3 g
+""",
+    encoding="utf-8",
+)
+engine = balance.load(folder / "inline-4.toml")
+four = balance.match(engine, folder / "parts.csv")
 print(
     f"{four.assignments_total} assignments, {four.symmetries} symmetries, {four.evaluated} "
     f"evaluated: {four.method}"
@@ -192,7 +227,7 @@ assert_allclose([abs(o.force_forward), abs(o.force_backward)], [forward, backwar
 # :func:`balance_cli.workshop.assembled_toml` (``balance match --write``) writes the
 # configuration with each cylinder's and each throw's own masses, under a name of its own, so
 # that it compares beside the original.
-data = read_configuration(DATA / "workshop-inline-4.toml").data
+data = read_configuration(folder / "inline-4.toml").data
 text = assembled_toml(
     data, engine, four.best.engine, "written by the tutorial", four.best.engine.name
 )

@@ -71,7 +71,7 @@ print(f"{result.runs:,} runs, {result.method}, {result.elapsed_s:.2f} s")
 # -----------------------------
 #
 # The flat crank cancels the primary of equal pistons. With deviations δmᵢ it leaves
-# Σ δmᵢ·r·ω²·cos(θ + βᵢ) along the axis, βᵢ = 0 or 180°: an amplitude |Σ sᵢ·δmᵢ|·r·ω² with
+# Σ δmᵢ·r·ω²·cos(θ + βᵢ) along the axis, βᵢ = 0 or 180°: an amplitude ``|Σ sᵢ·δmᵢ|·r·ω²`` with
 # sᵢ = ±1, a normal of variance 4σ² in absolute value. Its mean is 2σ·√(2/π)·r·ω² and its
 # 95th percentile 1.96·2σ·r·ω².
 sigma = 0.002
@@ -120,7 +120,7 @@ fig = balance.plot.tolerance_histograms(result, order=1)
 # ---------------
 #
 # Throw 1 is the reference the phases are measured from; throws 2-4 scatter by σ each. The
-# first-order phasor Σ sⱼ·e^{iδⱼ} gains i·Σ sⱼ·δⱼ: an amplitude m·r·ω²·|Σ sⱼ·δⱼ|, a normal of
+# first-order phasor Σ sⱼ·e^{iδⱼ} gains i·Σ sⱼ·δⱼ: an amplitude ``m·r·ω²·|Σ sⱼ·δⱼ|``, a normal of
 # variance 3σ². Each run's linkage is closed with its own phases.
 phase = balance.ToleranceBand(phase_rad=math.radians(0.05))
 turned = balance.tolerance(engine, phase, runs=4000, seed=2, max_order=2)
