@@ -16,7 +16,8 @@ and planes are numbered from 1, as in the files and the tables. See the document
 balance from Python" and its API reference for every name, unit and exception.
 
 The names below load on first use where they need what most commands do not (matplotlib for
-:mod:`balance_cli.plot`, the search, sweeps, families, torsional vibration and mounts), so that
+:mod:`balance_cli.plot`, the search, sweeps, families, torsional vibration, mounts and the
+workshop's matching, tolerances and bobweights), so that
 ``balance compare`` starts fast; ``dir(balance_cli)`` lists them all.
 """
 
@@ -91,6 +92,7 @@ from .model import (
     Parts,
     ShaftDisk,
     Throw,
+    ToleranceBand,
     TorsionModel,
 )
 from .studies.regress import Moved, Regression, regression
@@ -115,6 +117,15 @@ _LAZY = {
     "MountResult": (".mounting", "MountResult"),
     "decouple": (".mounting", "decouple"),
     "Decoupling": (".mounting", "Decoupling"),
+    "match": (".workshop", "match"),
+    "MatchResult": (".workshop", "MatchResult"),
+    "Fitting": (".workshop", "Fitting"),
+    "PartSet": (".workshop", "PartSet"),
+    "read_parts_csv": (".workshop", "read_parts_csv"),
+    "tolerance": (".workshop", "tolerance"),
+    "ToleranceResult": (".workshop", "ToleranceResult"),
+    "bobweights": (".workshop", "bobweights"),
+    "BobweightSheet": (".workshop", "BobweightSheet"),
 }
 
 #: the subpackages, reachable as attributes whether or not something has imported them yet
@@ -137,6 +148,7 @@ _PACKAGES = (
     "tolerances",
     "torsion",
     "units",
+    "workshop",
 )
 
 __all__ = [
@@ -161,6 +173,7 @@ __all__ = [
     "ShaftDisk",
     "MountSystem",
     "Mount",
+    "ToleranceBand",
     # shaking forces and moments, firing, comparison
     "analyse",
     "compare",

@@ -78,6 +78,14 @@ def single():
     return balance.loads(SINGLE, "single.toml")
 
 
+#: two pistons 20 g apart for the twin of the fixture (1 kg each, as configured, on average)
+TWIN_PISTONS = balance.workshop.PartSet(
+    (balance.workshop.Piston("A", 0.81), balance.workshop.Piston("B", 0.79))
+)
+#: the single's reciprocating scatter, kg
+SIGMA = 0.002
+
+
 def piston(theta):
     """x(θ), x'(θ), x''(θ) of the piston pin along the cylinder axis, from the crank centre:
     x = r·cos θ + S, S = √(l² − r²·sin²θ), differentiated by hand."""
@@ -124,6 +132,7 @@ def results(tmp_path_factory):
     )
     baseline = balance.compare([result]).to_dict()
     faster = balance.analyse(engine.edit(speed="6000 rpm"), samples=64, max_order=4)
+    matched = balance.match(twin, TWIN_PISTONS, samples=64, max_order=4)
     return {
         "EngineResult": result,
         "Comparison": balance.compare([result, twin_result]),
@@ -164,6 +173,12 @@ def results(tmp_path_factory):
             balance.load(CONFIGS / "mounts" / "four-mount-symmetric.toml"),
             [(("front left", "front right", "rear left", "rear right"), "z")],
         ),
+        "MatchResult": matched,
+        "Fitting": matched.best,
+        "ToleranceResult": balance.tolerance(
+            engine, balance.ToleranceBand(reciprocating_kg=SIGMA), runs=400, samples=64, max_order=2
+        ),
+        "BobweightSheet": balance.bobweights(engine, samples=64, max_order=2),
     }
 
 
@@ -448,6 +463,56 @@ def test_decoupling_records_by_hand(results):
             [row["frequency_before_Hz"], row["frequency_after_Hz"]], roll_hz, rtol=1e-12
         )
         assert row["exact"] is True
+
+
+def test_match_records_by_hand(results):
+    """Two pistons 20 g apart in a 180° twin of 1 kg reciprocating masses: each cylinder keeps
+    its 1 kg less the mean piston (0.8 kg) plus its own piston; either way round the first
+    order left is a line force of 20 g·r·ω² (the swap is the crank's own symmetry)."""
+    result = results["MatchResult"]
+    rows = result.records()
+    assert [(r["fitting"], r["cylinder"]) for r in rows] == [
+        ("best", 1),
+        ("best", 2),
+        ("given", 1),
+        ("given", 2),
+    ]
+    given = {r["cylinder"]: r for r in rows if r["fitting"] == "given"}
+    assert (given[1]["piston"], given[2]["piston"]) == ("A", "B")
+    assert_allclose([given[1]["reciprocating_kg"], given[2]["reciprocating_kg"]], [1.01, 0.99])
+    assert all(r["rod"] is None for r in rows)
+    first = result.best.difference.order(1)
+    # the line force's two halves, against rounding in a 64-point FFT
+    assert_allclose(abs(first.force_forward) + abs(first.force_backward), 0.02 * MRW2, rtol=1e-12)
+    assert results["Fitting"].records() == rows[:2]
+
+
+def test_tolerance_records_by_hand(results):
+    """One cylinder whose reciprocating mass scatters by σ: its first order is (m + σξ)·r·ω²
+    along the axis, so the closed form's mean is m·r·ω² and its 95th percentile
+    (m + 1.645·σ)·r·ω²; the runs' mean is within four standard errors of it."""
+    result = results["ToleranceResult"]
+    rows = result.records()
+    assert [r["order"] for r in rows] == [1, 2]
+    first = rows[0]
+    unit = R * OMEGA**2
+    assert_allclose(first["force_vertical_linear_mean_N"], M * unit, rtol=1e-12)
+    # the standard normal's 95th percentile to 10 digits
+    assert_allclose(
+        first["force_vertical_linear_p95_N"], (M + 1.6448536270 * SIGMA) * unit, rtol=1e-10
+    )
+    spread = result.order(1).force["vertical"]
+    assert abs(first["force_vertical_mean_N"] - M * unit) < 4 * spread.mean_error
+    assert first["force_vertical_mean_N"] == spread.mean
+
+
+def test_bobweight_records_by_hand(results):
+    """One cylinder without a rotating mass: half its 500 g reciprocates with the forward first
+    order, so its bobweight is 250 g."""
+    (row,) = results["BobweightSheet"].records()
+    assert row["throw"] == 1 and row["cylinders"] == "1"
+    assert_allclose([row["factor"], row["bobweight_kg"]], [0.5, 0.25], rtol=1e-12)
+    assert row["rotating_kg"] == 0.0 and row["reciprocating_kg"] == 0.5
 
 
 def test_without_pandas_to_pandas_names_the_extra(results, monkeypatch):

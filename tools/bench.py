@@ -30,6 +30,10 @@ ratio of the medians is what counts, so the machine's speed cancels out.
   crankshafts) and the Jumo 205 (opposed pistons): each one's GIF at default settings and its
   HTML page, the time to write each and its size; the whole command for the V8's GIF (median
   of 3, start-up included) under 5 s, and every GIF under 2 MB
+- ``balance.tolerance`` of the library's cross-plane V8 with every part and dimension of its
+  ``[tolerances]`` scattered: 10 000 runs, each its own exact linkage (target: under 2 s), beside
+  one ``balance.analyse`` of the same engine (the ratio says how many single analyses the
+  10 000 runs cost)
 - how often ``torque`` and ``torsional_vibration`` close the linkage (tools/closures.py)
 
 ``make bench BASE=/path/to/another/checkout`` (one with its own ``.venv``, as ``make setup``
@@ -333,6 +337,43 @@ def animate_bench():
     return failed or wall >= 5.0
 
 
+def tolerance_bench():
+    """10 000 runs of a V8's tolerance band, every dimension scattered, timed in this process
+    (median of 5), beside one analysis of the engine."""
+    import math
+
+    import balance_cli as balance
+
+    engine = balance.load(ROOT / "configs/today/v/v8-90-cross-plane.toml").edit(rotating="1.1 kg")
+    band = balance.ToleranceBand(
+        reciprocating_kg=0.002,
+        rotating_kg=0.003,
+        crank_radius_m=2e-5,
+        rod_length_m=3e-5,
+        phase_rad=math.radians(0.05),
+        bank_angle_rad=math.radians(0.05),
+        pin_offset_m=2e-5,
+    )
+    balance.tolerance(engine, band, runs=100)
+    times, single = [], []
+    for seed in range(5):
+        start = time.perf_counter()
+        balance.tolerance(engine, band, runs=10_000, seed=seed)
+        times.append(time.perf_counter() - start)
+        start = time.perf_counter()
+        balance.analyse(engine.edit(speed=f"{6000 + seed} rpm"))  # a new engine: not cached
+        single.append(time.perf_counter() - start)
+    wall, one = statistics.median(times), statistics.median(single)
+    verdict = "ok" if wall < 2.0 else "TOO SLOW"
+    print(f"{wall * 1000:8.1f} ms  median of 5  balance.tolerance, V8, 10 000 runs, linkage")
+    print(f"{one * 1000:8.1f} ms  median of 5  balance.analyse, the same V8 once")
+    print(
+        f"10 000 runs cost {wall / one:.0f} single analyses; {wall:.2f} s (target under 2 s): "
+        f"{verdict}\n"
+    )
+    return verdict != "ok"
+
+
 def main():
     # byte-compile balance first, as installing numpy compiled numpy: with
     # PYTHONDONTWRITEBYTECODE set (as on this project's machines) every run would otherwise
@@ -366,6 +407,7 @@ def main():
     failed |= torsion_bench()
     failed |= mounts_bench()
     failed |= animate_bench()
+    failed |= tolerance_bench()
     subprocess.run([sys.executable, str(ROOT / "tools" / "closures.py")], cwd=ROOT, check=True)
     return 1 if failed else 0
 

@@ -1740,6 +1740,224 @@ def sweep():
     return schema
 
 
+def _stats(unit):
+    """A quantity's spread over a tolerance run's engines (spread.Stats.to_dict)."""
+    what = {"N": "N", "Nm": "N·m"}[unit]
+    interval = array(size(what), "low and high", min_items=2, max_items=2)
+    return {
+        f"mean_{unit}": size(f"mean over the runs, {what}"),
+        f"median_{unit}": size(f"median, {what}"),
+        f"p95_{unit}": size(f"95th percentile, {what}"),
+        f"p99_{unit}": size(f"99th percentile, {what}"),
+        f"max_{unit}": size(f"largest, {what}"),
+        f"std_{unit}": size(f"standard deviation over the runs, {what}"),
+        f"mean_error_{unit}": size(f"the mean's standard error, std/√runs, {what}"),
+        f"p95_interval_{unit}": {
+            **interval,
+            "description": f"the 95th percentile's 95 % interval (order statistics), {what}",
+        },
+        f"p99_interval_{unit}": {
+            **interval,
+            "description": f"the 99th percentile's 95 % interval, {what}",
+        },
+    }
+
+
+def _linear(unit):
+    """The closed-form spread of an amplitude's linear part (spread.Linear.to_dict)."""
+    what = {"N": "N", "Nm": "N·m"}[unit]
+    return closed(
+        "the closed form of the scatter's linear part",
+        {
+            f"nominal_{unit}": size(f"the engine's own amplitude, {what}"),
+            f"rms_{unit}": size(f"root mean square of the linear part, {what}"),
+            "model": text(
+                '"zero-mean" (the order is nothing nominally: the length of a normal vector) '
+                'or "about the nominal" (normal about it)',
+                enum=("zero-mean", "about the nominal"),
+            ),
+            f"mean_{unit}": size(f"mean, {what}"),
+            f"median_{unit}": size(f"median, {what}"),
+            f"p95_{unit}": size(f"95th percentile, {what}"),
+            f"p99_{unit}": size(f"99th percentile, {what}"),
+        },
+    )
+
+
+def tolerance():
+    parts = {}
+    for part, unit in (("force", "N"), ("moment", "Nm")):
+        amplitude = closed(
+            f"the spread of the order's {part} amplitude over the runs, and its closed form",
+            {**_stats(unit), "linear": _linear(unit)},
+        )
+        largest = closed(
+            f"the spread of the order's largest {part} in a revolution (|X⁺| + |X⁻|)",
+            _stats(unit),
+        )
+        parts[part] = closed(
+            f"the order's free {part}: vertical and horizontal amplitudes, and max",
+            {"vertical": amplitude, "horizontal": amplitude, "max": largest},
+        )
+    order = closed("one order's spread", {"order": integer("k, from 1", minimum=1), **parts})
+    return document(
+        "tolerance",
+        DOCUMENT_VERSION,
+        "balance tolerance --format json: what a tolerance band leaves across a production "
+        "run (ToleranceResult.to_dict). SI units.",
+        {
+            "engine": ENGINE_NAME,
+            "config": CONFIG,
+            "runs": integer("engines drawn", minimum=2),
+            "seed": integer("the draws' random seed", minimum=0),
+            **SETTINGS,
+            "method": text(
+                '"masses" (masses only scattered: linear, exact) or "linkage" (each run\'s '
+                "linkage closed)",
+                enum=("masses", "linkage"),
+            ),
+            "elapsed_s": size("the time taken, s"),
+            "tolerances": closed(
+                "one standard deviation of each scatter ([tolerances])",
+                {
+                    "reciprocating_kg": size("each cylinder's reciprocating mass, kg"),
+                    "rotating_kg": size("each throw's rotating mass, kg"),
+                    "crank_radius_m": size("each throw's crank radius, m"),
+                    "rod_length_m": size("each rod's length, m"),
+                    "phase_deg": size("each throw's phase but throw 1's, degrees"),
+                    "bank_angle_deg": size("each bank's direction, degrees"),
+                    "pin_offset_m": size("each cylinder's pin offset, m"),
+                },
+            ),
+            "largest_force": closed(
+                "the largest resultant force over a revolution, all orders", _stats("N")
+            ),
+            "largest_moment": closed(
+                "the largest free moment over a revolution, all orders", _stats("Nm")
+            ),
+            "orders": array(order, "every order 1..max_order", min_items=1),
+        },
+    )
+
+
+def match():
+    engine = compare()["properties"]["engines"]["items"]
+    fitting = closed(
+        "one assignment of the parts and what it leaves (Fitting.to_dict)",
+        {
+            "fitting": text('"best" or "given" (the order given)', enum=("best", "given")),
+            "score_N": size("the objective's value, N"),
+            "largest_force_N": size(
+                "of what the parts' deviations add: the largest force over a revolution, N"
+            ),
+            "largest_moment_Nm": size("and the largest free moment, N·m"),
+            "cylinders": array(
+                closed(
+                    "one cylinder as assembled",
+                    {
+                        "cylinder": integer("its number", minimum=1),
+                        "throw": integer("its throw's number", minimum=1),
+                        "piston": text("the piston's id; null without pistons", null=True),
+                        "rod": text("the rod's id; null without rods", null=True),
+                        "reciprocating_kg": positive("its reciprocating mass, kg"),
+                        "rotating_kg": size("its throw's rotating mass, kg"),
+                    },
+                ),
+                "in the order of the engine's cylinders",
+                min_items=1,
+            ),
+            "difference_orders": ref("orders"),
+            "assembled": {**engine, "description": "the engine as assembled, as compare writes it"},
+        },
+    )
+    term = closed(
+        "one term of the objective",
+        {
+            "term": text("its name, F2 or M1+", pattern="^[FM][0-9]+[+-]?$"),
+            "kind": text('"F" or "M"', enum=("F", "M")),
+            "order": integer("k", minimum=1),
+            "part": text("max, forward or backward", enum=("max", "forward", "backward")),
+            "weight": positive("its weight"),
+        },
+    )
+    return document(
+        "match",
+        DOCUMENT_VERSION,
+        "balance match --format json: weighed parts fitted to the cylinders (MatchResult.to_dict)."
+        " SI units.",
+        {
+            "engine": ENGINE_NAME,
+            "config": CONFIG,
+            "parts": text("the parts file (empty for parts built in code)"),
+            "kinds": array(
+                text("a kind fitted", enum=("pistons", "rods")), "what was fitted", min_items=1
+            ),
+            **SETTINGS,
+            "objective": text("the objective in words, or its terms"),
+            "default": flag("the default objective (largest force + largest moment / pitch)"),
+            "terms": array(term, "the objective's terms; null for the default", null=True),
+            "pitch_m": positive("the pitch moments are divided by, m"),
+            "grid_points": integer(
+                "crank angles of the default's largest values; null for terms", 1, null=True
+            ),
+            "method": text('"exhaustive" or "heuristic"', enum=("exhaustive", "heuristic")),
+            "exhaustive": flag("the best is proved"),
+            "assignments_total": integer("every assignment", 1),
+            "assignments_distinct": integer("one per symmetry class", 1),
+            "symmetries": integer("the symmetry group's order", 1),
+            "evaluated": integer("assignments scored", 1),
+            "elapsed_s": size("the time taken, s"),
+            "gain_N": number("the given order's score less the best's, N"),
+            "ratio": size("the best score over the given order's; null when that is 0", True),
+            "best": fitting,
+            "given": fitting,
+        },
+    )
+
+
+def bobweight():
+    pin = closed(
+        "one crank pin's bobweight",
+        {
+            "throw": integer("its throw's number", minimum=1),
+            "cylinders": array(integer("a cylinder", minimum=1), "the cylinders on the pin"),
+            "rotating_kg": size("the rotating mass on the pin (big ends, knuckle shares), kg"),
+            "reciprocating_kg": size("its cylinders' reciprocating masses, kg"),
+            "factor": number("the balance factor"),
+            "bobweight_kg": number("rotating + factor × reciprocating, kg"),
+        },
+    )
+    trade = closed(
+        "what counterweights sized at one balance factor leave (a single or a twin)",
+        {
+            "factor": number("the balance factor", minimum=0, maximum=1),
+            "force_vertical_N": size("first-order force along the vertical, N"),
+            "force_horizontal_N": size("across it, N"),
+            "moment_vertical_Nm": size("first-order pitching moment, N·m"),
+            "moment_horizontal_Nm": size("yawing moment, N·m"),
+            "largest_force_N": size("the largest resultant over a revolution, all orders, N"),
+        },
+    )
+    return document(
+        "bobweight",
+        DOCUMENT_VERSION,
+        "balance bobweight --format json: the balancing sheet (BobweightSheet.to_dict). SI.",
+        {
+            "engine": ENGINE_NAME,
+            "config": CONFIG,
+            "parts": text("the parts file the masses come from (empty: the configuration's)"),
+            "balance_factor": number(
+                "the factor asked for; null: balance counterweight's",
+                minimum=0,
+                maximum=1,
+                null=True,
+            ),
+            "pins": array(pin, "every crank pin, in throw order", min_items=1),
+            "trade": array(trade, "a single's or twin's trade (empty for more cylinders)"),
+        },
+    )
+
+
 def schemas():
     """{file name: schema} of every document and version."""
     out = {
@@ -1756,6 +1974,9 @@ def schemas():
         ("search", search),
         ("family", family),
         ("sweep", sweep),
+        ("match", match),
+        ("tolerance", tolerance),
+        ("bobweight", bobweight),
     ):
         out[schema_name(name, DOCUMENT_VERSION)] = build()
     out[schema_name("steadiness", STEADINESS_VERSION)] = steadiness()

@@ -48,7 +48,7 @@ def _rotating_target(engine, factor, pin_kg=0.0):
     for index, throw in enumerate(engine.throws):
         on_throw = [c for c in engine.cylinders if c.throw_index == index]
         mass = (
-            engine.rotating_kg
+            engine.rotating_of(index)
             + engine.crank_kg
             + pin_kg
             + sum(c.knuckle_kg for c in on_throw)

@@ -23,6 +23,7 @@ from . import (  # noqa: F401
     sweep,
     torque,
     torsion,
+    workshop,
 )
 from .group import main
 

@@ -19,6 +19,7 @@ from .reader import (
     MASS_KEYS,
     PART_KEYS,
     THROW_KEYS,
+    TOLERANCE_KEYS,
     TOP_KEYS,
     TORSION_KEYS,
     Reader,
@@ -31,6 +32,7 @@ from .sections import (
     read_gas,
     read_parts,
     read_shafts,
+    read_tolerances,
     read_torsion,
 )
 
@@ -126,6 +128,7 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
                 throw.integer(
                     "crankshaft", required=False, default=1, low=1, high=max(len(crankshafts), 1)
                 ),
+                throw.quantity("rotating", "mass", required=False, sign="non-negative"),
             )
         )
     check_crankshafts_used(path, crankshafts, throws)
@@ -227,6 +230,11 @@ def build(data: dict, path: str = "<config>", template: bool = False) -> Engine:
                 else None
             ),
             mounts=read_mounts(path, data["mounts"]) if top.has("mounts") else None,
+            tolerances=(
+                read_tolerances(Reader(path, data["tolerances"], "tolerances.", TOLERANCE_KEYS))
+                if top.has("tolerances")
+                else None
+            ),
         )
         check_assembly(engine)
     except ModelError as exc:

@@ -24,6 +24,7 @@ __all__ = [
     "MOUNT_KEYS",
     "BANK_KEYS",
     "THROW_KEYS",
+    "TOLERANCE_KEYS",
     "CRANKSHAFT_KEYS",
     "LINK_KEYS",
     "COUNTERWEIGHT_KEYS",
@@ -59,6 +60,7 @@ TOP_KEYS = {
     "shafts",
     "torsion",
     "mounts",
+    "tolerances",
 }
 MASS_KEYS = {"reciprocating", "rotating", "knuckle", "crank"}
 PART_KEYS = {
@@ -120,7 +122,17 @@ MOUNT_KEYS = {
     "damping",
 }
 BANK_KEYS = {"angle", "pin_offset"}
-THROW_KEYS = {"phase", "z", "crankshaft"}
+THROW_KEYS = {"phase", "z", "crankshaft", "rotating"}
+#: [tolerances]: one standard deviation of each part's and dimension's scatter
+TOLERANCE_KEYS = {
+    "reciprocating",
+    "rotating",
+    "crank_radius",
+    "rod_length",
+    "phase",
+    "bank_angle",
+    "pin_offset",
+}
 CRANKSHAFT_KEYS = {"x", "y", "direction", "phase"}
 LINK_KEYS = {"master_bank", "length", "knuckle_radius"}
 COUNTERWEIGHT_KEYS = {"throw", "mass", "radius", "mass_radius", "angle", "z"}

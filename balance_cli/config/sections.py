@@ -1,6 +1,7 @@
 """Readers of a configuration's sections beside its banks, throws and cylinders: the
 crankshafts, the counterweights and balancer shafts as built, the part data (and the lumped
-masses derived from it), the gas cycle and the shaft line's torsion model."""
+masses derived from it), the gas cycle, the shaft line's torsion model and the production
+scatter of [tolerances]."""
 
 import dataclasses
 import math
@@ -15,6 +16,7 @@ from ..model import (
     GasCycle,
     Parts,
     ShaftDisk,
+    ToleranceBand,
     TorsionModel,
 )
 from ..tolerances import SAME_POSITION_M
@@ -36,6 +38,7 @@ __all__ = [
     "lumped",
     "read_gas",
     "read_torsion",
+    "read_tolerances",
 ]
 
 
@@ -292,6 +295,29 @@ def lumped(path, parts, cylinders, rod_length, n_throws, missing_link_keys=()):
         )
     big_ends = rods[0] * (1 - parts.small_end_share(rod_length)) * parts.rod_kg
     return lumped, big_ends
+
+
+def read_tolerances(reader):
+    """The [tolerances] table: one standard deviation of each part's and dimension's normal
+    scatter, masses and lengths with their units, angles in degrees (each key 0 by default)."""
+
+    def sigma(key, dimension):
+        return reader.quantity(key, dimension, required=False, default=0.0, sign="non-negative")
+
+    def degrees(key):
+        return math.radians(
+            reader.real(key, required=False, default=0.0, low=0.0, high=90.0, what="degrees")
+        )
+
+    return ToleranceBand(
+        reciprocating_kg=sigma("reciprocating", "mass"),
+        rotating_kg=sigma("rotating", "mass"),
+        crank_radius_m=sigma("crank_radius", "length"),
+        rod_length_m=sigma("rod_length", "length"),
+        phase_rad=degrees("phase"),
+        bank_angle_rad=degrees("bank_angle"),
+        pin_offset_m=sigma("pin_offset", "length"),
+    )
 
 
 def read_gas(reader):

@@ -8,7 +8,8 @@ engine and sampling grid; this module closes it at whatever angles it is asked.
 Masses (point masses, as in Tanaka 1925 and Fraeys de Veubeke 1949 §8):
 - per cylinder, ``reciprocating_kg`` at its piston pin;
 - per link rod, ``knuckle_kg`` at its knuckle pin on the master rod;
-- per throw, ``rotating_kg`` (big ends) and ``crank_kg`` (the crankshaft's own) at the crank pin;
+- per throw, ``rotating_kg`` (big ends: the throw's own, else the engine's) and ``crank_kg``
+  (the crankshaft's own) at the crank pin;
 - per counterweight as built, its unbalance turning with its throw;
 - per balancer-shaft mass as built, its unbalance turning about the shaft's axis.
 """
@@ -439,7 +440,7 @@ def linkage_state(engine, angles, pin_shift=None, throw_index=None) -> LinkageSt
     for index, (crank, pin) in enumerate(zip(engine.throws, pins, strict=True)):
         if throw_index is not None and index != throw_index:
             continue
-        for owner, mass in ((BIG_ENDS, engine.rotating_kg), (CRANK, engine.crank_kg)):
+        for owner, mass in ((BIG_ENDS, engine.rotating_of(index)), (CRANK, engine.crank_kg)):
             if mass:
                 rows.append((pin, mass, crank.z_m, owner, index))
     if throw_index is None:

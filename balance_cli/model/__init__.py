@@ -9,8 +9,9 @@ analysis calls first.
 Modules: :mod:`.values` (one value's checks), :mod:`.crankshaft` (crankshafts and throws),
 :mod:`.cylinder`, :mod:`.as_built` (counterweights and balancer shafts), :mod:`.parts` (part
 data and the gas cycle), :mod:`.torsion` (the shaft line's mass-elastic model), :mod:`.mounts`
-(the powertrain as a rigid body on its mounts), :mod:`.engine` (the Engine), :mod:`.edit` (its
-values changed as a file writes them) and
+(the powertrain as a rigid body on its mounts), :mod:`.scatter` (the production scatter of
+``[tolerances]``), :mod:`.engine` (the Engine), :mod:`.edit` (its values changed as a file
+writes them) and
 :mod:`.invariants` (the rules it is checked against).
 """
 
@@ -31,6 +32,7 @@ from .mounts import (
     motion_name,
 )
 from .parts import GasCycle, Parts
+from .scatter import ToleranceBand
 from .torsion import ShaftDisk, TorsionModel
 from .values import offset_position
 
@@ -41,6 +43,7 @@ __all__ = [
     "Engine",
     "Parts",
     "GasCycle",
+    "ToleranceBand",
     "FRAMES",
     "CounterweightMass",
     "BalancerMass",

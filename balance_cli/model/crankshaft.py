@@ -70,11 +70,16 @@ class Throw:
     crankshaft : int
         the number of the crankshaft that carries it, from 1 (the first, for an engine with
         one), as in ``[[throws]]``'s ``crankshaft``
+    rotating_kg : float or None
+        the big ends at this throw's pin, kg, where they differ from throw to throw (parts
+        weighed one by one, :func:`balance_cli.match`); None (the default) takes the engine's
+        ``rotating_kg``
     """
 
     phase_rad: float
     z_m: float = 0.0
     crankshaft: int = 1
+    rotating_kg: float | None = None
 
     def __post_init__(self):
         # checked here too, not only in the Engine: a Throw of NaN once built without a word
@@ -89,6 +94,8 @@ class Throw:
                 f"must be a crankshaft number from 1, got {self.crankshaft!r}", "crankshaft"
             )
         object.__setattr__(self, "crankshaft", int(self.crankshaft))
+        if self.rotating_kg is not None:
+            check_quantity(self.rotating_kg, "mass", "rotating_kg", sign="non-negative")
 
     @property
     def crankshaft_index(self) -> int:

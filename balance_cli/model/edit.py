@@ -35,6 +35,7 @@ CYLINDER_KEYS = {
 THROW_KEYS = {
     "phase": ("angle", "phase_rad", "any"),
     "z": ("length", "z_m", "any"),
+    "rotating": ("mass", "rotating_kg", "non-negative"),
 }
 _EXAMPLES = {"angular speed": '"3000 rpm"', "length": '"82.5 mm"', "mass": '"550 g"'}
 #: a phase as a file may write it, degrees either way

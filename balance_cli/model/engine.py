@@ -12,6 +12,7 @@ from .edit import edited
 from .invariants import check_engine
 from .mounts import MountSystem
 from .parts import GasCycle, Parts
+from .scatter import ToleranceBand
 from .torsion import TorsionModel
 from .values import offset_position
 
@@ -42,7 +43,8 @@ class Engine:
     throws : tuple of Throw
     cylinders : tuple of Cylinder
     rotating_kg : float
-        mass at the crank pin of every throw that is not the crankshaft's (big ends), kg
+        mass at the crank pin of every throw that is not the crankshaft's (big ends), kg; a
+        throw's own ``rotating_kg`` overrides it (:meth:`rotating_of`)
     crank_kg : float
         the crankshaft's own unbalance of every throw, as a mass at the crank pin, kg
         (moves like ``rotating_kg``, but stays on the shaft on a balancing machine)
@@ -77,6 +79,9 @@ class Engine:
         the crankshaft's mass-elastic model for ``balance torsion``, if given
     mounts : MountSystem or None
         the powertrain as a rigid body on its mounts, for ``balance mounts``, if given
+    tolerances : ToleranceBand or None
+        the production scatter of its parts and dimensions (``[tolerances]``), for
+        :func:`balance_cli.tolerance`, if given
 
     Raises
     ------
@@ -110,6 +115,7 @@ class Engine:
     balancer_shafts: tuple = ()
     torsion: "TorsionModel | None" = None
     mounts: "MountSystem | None" = None
+    tolerances: "ToleranceBand | None" = None
     _by_number: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
@@ -187,7 +193,8 @@ class Engine:
             ``z`` (its axial position) and ``pin_offset``
         throw : int, optional
             the number (from 1) of the one throw whose values change: ``phase`` (degrees from
-            throw 1, positive with rotation, a plain number from -360 to 360) and ``z``
+            throw 1, positive with rotation, a plain number from -360 to 360), ``z`` and
+            ``rotating`` (the big ends at its pin, "1.3 kg", overriding the engine's)
         **values
             the keys and values; without ``cylinder`` and ``throw``, the engine's own:
             ``speed`` ("3000 rpm"), ``crank_radius``, ``rod_length``, ``pin_offset``
@@ -239,6 +246,12 @@ class Engine:
         if cylinder.is_opposed:
             return "opposed"
         return "master" if self.is_master(cylinder) else "plain"
+
+    def rotating_of(self, throw_index) -> float:
+        """The big ends at the pin of the throw at ``throw_index`` (0-based): its own
+        ``rotating_kg`` where it has one, else the engine's, kg."""
+        own = self.throws[throw_index].rotating_kg
+        return self.rotating_kg if own is None else own
 
     def pin_offset_of(self, cylinder) -> float:
         """The piston-pin offset of ``cylinder``: its own, else the engine's, m."""

@@ -9,6 +9,7 @@ from ..tolerances import SAME_DIRECTION_RAD, SAME_POSITION_M
 from .as_built import BalancerShaftSpec, CounterweightMass
 from .crankshaft import REFERENCE_CRANKSHAFT, Crankshaft, Throw
 from .cylinder import Cylinder
+from .scatter import ToleranceBand
 from .values import check_angle, check_quantity
 
 if TYPE_CHECKING:
@@ -141,6 +142,11 @@ def check_engine(engine: "Engine") -> None:
                         cylinder=other,
                     )
     _check_balancers(engine)
+    if engine.tolerances is not None and not isinstance(engine.tolerances, ToleranceBand):
+        raise ModelError(
+            f"must be a ToleranceBand or None, got {type(engine.tolerances).__name__}",
+            "tolerances",
+        )
     if engine.torsion is not None and (engine.is_rotary or engine.has_several_crankshafts):
         raise ModelError(
             "is a shaft line of one turning crankshaft; this engine "

@@ -17,13 +17,14 @@ self-contained HTML page (its :class:`Scene` holds what is drawn).
 
 Also :func:`campbell`, :func:`mode_shapes` and :func:`torque_speed` of a torsional vibration
 analysis; :func:`mount_modes`, :func:`energy_bars` and :func:`mount_forces` of the engine on
-its mounts; and :func:`sweep_figure` of a sweep (curves) or a grid of two parameters (heat maps).
+its mounts; :func:`sweep_figure` of a sweep (curves) or a grid of two parameters (heat maps);
+and :func:`tolerance_histograms` of a tolerance band's scatter (:func:`balance_cli.tolerance`).
 
 One module per picture: ``loci``, ``spectra``, ``stars`` (its labels placed by ``labels``),
-``firings``, ``torques``, ``torsion``, ``mounts`` and ``sweep``; ``figure`` holds what they share.
-The animation: ``scene`` (what is drawn), ``movie`` (one instant drawn by matplotlib),
-``animation`` (the animation and its files) and ``page`` (the HTML page, drawn by the script
-``animate.js``).
+``firings``, ``torques``, ``torsion``, ``mounts``, ``sweep`` and ``tolerances``; ``figure`` holds
+what they share. The animation: ``scene`` (what is drawn), ``movie`` (one instant drawn by
+matplotlib), ``animation`` (the animation and its files) and ``page`` (the HTML page, drawn by
+the script ``animate.js``).
 """
 
 from .animation import ANIMATION_FORMATS, DEFAULT_ORDERS, EngineAnimation, animate
@@ -48,6 +49,7 @@ from .scene import Part, Scene
 from .spectra import SPECTRUM_UNITS, spectrum, spectrum_data
 from .stars import STAR_TITLE_CHARS, star, star_chains
 from .sweep import axis_values, sweep_figure
+from .tolerances import tolerance_histograms
 from .torques import TORQUE_STYLES, TORQUE_UNITS, torque, torque_data
 from .torsion import campbell, mode_shapes, torque_speed
 
@@ -86,6 +88,7 @@ __all__ = [
     "equivalent_box",
     "sweep_figure",
     "axis_values",
+    "tolerance_histograms",
     "CELL_IN",
     "MIN_WIDTH_IN",
     "DPI",

@@ -132,6 +132,38 @@ def _as_built_show_lines(engine):
     return lines
 
 
+def _own_rotating(engine):
+    """The throws whose big ends weigh their own (parts weighed one by one), as text."""
+    own = [
+        f"throw {i} {kg_to_g(t.rotating_kg):g} g"
+        for i, t in enumerate(engine.throws, 1)
+        if t.rotating_kg is not None
+    ]
+    return f"; own rotating: {', '.join(own)}" if own else ""
+
+
+def _tolerance_lines(engine):
+    """The [tolerances] scatter, one standard deviation each, in a file's units."""
+    band = engine.tolerances
+    if band is None or band.empty:
+        return []
+    values = [
+        ("reciprocating", band.reciprocating_kg * 1e3, "g"),
+        ("rotating", band.rotating_kg * 1e3, "g"),
+        ("crank radius", band.crank_radius_m * 1e3, "mm"),
+        ("rod length", band.rod_length_m * 1e3, "mm"),
+        ("phase", math.degrees(band.phase_rad), "°"),
+        ("bank angle", math.degrees(band.bank_angle_rad), "°"),
+        ("pin offset", band.pin_offset_m * 1e3, "mm"),
+    ]
+    shown = ", ".join(
+        f"{name} {value:g}{'' if unit == '°' else ' '}{unit}"
+        for name, value, unit in values
+        if value
+    )
+    return [f"  tolerances:    σ {shown}"]
+
+
 def show_table(engine, firing):
     """One engine, one row per cylinder, with the engine's data above."""
     knuckles = sorted({c.knuckle_kg for c in engine.cylinders if c.is_link})
@@ -149,10 +181,12 @@ def show_table(engine, firing):
         f"  masses:        reciprocating {kg_to_g(engine.mean_reciprocating_kg):g} g mean per "
         f"cylinder, rotating {kg_to_g(engine.rotating_kg):g} g and crank "
         f"{kg_to_g(engine.crank_kg):g} g per throw"
-        + "".join(f", knuckle {kg_to_g(kg):g} g per link rod" for kg in knuckles),
+        + "".join(f", knuckle {kg_to_g(kg):g} g per link rod" for kg in knuckles)
+        + _own_rotating(engine),
         *_parts_lines(engine),
         *_crankshaft_lines(engine),
         *_as_built_show_lines(engine),
+        *_tolerance_lines(engine),
         f"  firing:        {'-'.join(map(str, firing.order))} "
         f"({'given' if firing.given else 'most uniform the crank allows'})",
         f"  intervals (°): {', '.join(f'{i:.2f}' for i in firing.intervals_deg)}",

@@ -28,6 +28,7 @@ from ..studies.regress import Regression
 from ..studies.sweep.results import SweepGrid, SweepResult
 from ..torsion.response import TorsionResult
 from ..units import Scale
+from ..workshop import BobweightSheet, MatchResult, ToleranceResult
 from .compare import compare_tables
 from .counterweight import balance_tables
 from .display import figure
@@ -38,6 +39,7 @@ from .search import search_tables
 from .sweeps import sweep_tables
 from .torque import steadiness_text, torque_tables
 from .torsion import torsion_tables
+from .workshop import bobweight_tables, match_tables, tolerance_tables
 
 __all__ = ["result_html", "command_markdown", "markdown_html", "records_html"]
 
@@ -67,6 +69,9 @@ _COMMANDS = (
     (FamilyResult, lambda r: family_tables(r, Scale.of(True), _FMT)),
     (SearchResult, _search),
     (Regression, lambda r: regression_tables(r, _FMT, Scale.of(True))),
+    (MatchResult, lambda r: match_tables(r, Scale.of(True), _FMT)),
+    (ToleranceResult, lambda r: tolerance_tables(r, Scale.of(True), _FMT)),
+    (BobweightSheet, lambda r: bobweight_tables(r, Scale.of(True), _FMT)),
 )
 
 

@@ -1,12 +1,12 @@
 """The JSON Schemas of the documents balance writes, and checking a document against its own.
 
 Every document balance writes (``--format json`` of compare, counterweight, torque, torsion,
-mounts, steadiness, regress, search, family and sweep) carries its format's version in
-``balance_version``; its schema is the file ``DOCUMENT.vVERSION.json`` beside this module
-(Draft 2020-12), installed with the package. A schema of a version balance writes is closed:
-a key it does not name fails it. The compare document's versions 1 and 2 have the schemas of
-what ``balance regress`` reads of a baseline that old, open to other keys. ``tools/
-json_schemas.py`` writes the files (``make schemas``).
+mounts, steadiness, regress, search, family, sweep, match, tolerance and bobweight) carries its
+format's version in ``balance_version``; its schema is the file ``DOCUMENT.vVERSION.json`` beside
+this module (Draft 2020-12), installed with the package. A schema of a version balance writes
+is closed: a key it does not name fails it. The compare document's versions 1 and 2 have the
+schemas of what ``balance regress`` reads of a baseline that old, open to other keys.
+``tools/json_schemas.py`` writes the files (``make schemas``).
 
 >>> from balance_cli.schemas import schema
 >>> schema("compare", 3)["title"]
@@ -38,6 +38,9 @@ DOCUMENTS = {
             "search",
             "family",
             "sweep",
+            "match",
+            "tolerance",
+            "bobweight",
         )
     },
     "steadiness": (STEADINESS_VERSION,),

@@ -11,6 +11,8 @@ from click.testing import CliRunner
 from balance_cli.cli import main
 from tests.docs.pages import DOCS
 from tests.support import CONFIGS, REFERENCE, TEMPLATES, V8
+from tests.workshop.test_match import INLINE_4, PARTS_CSV
+from tests.workshop.test_tolerance import FLAT_4
 
 PAGE = DOCS / "reference" / "json.md"
 CAR = CONFIGS / "inline-4-car.toml"
@@ -124,6 +126,14 @@ def runs(tmp_path):
             ),
         ],
     }
+    shop = tmp_path / "shop"
+    shop.mkdir()
+    (shop / "engine.toml").write_text(INLINE_4, encoding="utf-8")
+    (shop / "parts.csv").write_text(PARTS_CSV, encoding="utf-8")
+    (shop / "band.toml").write_text(FLAT_4, encoding="utf-8")
+    out["match"] = [run("match", shop / "engine.toml", "--parts", shop / "parts.csv")]
+    out["tolerance"] = [run("tolerance", shop / "band.toml", "--runs", "200")]
+    out["bobweight"] = [run("bobweight", shop / "engine.toml")]
     try:
         import opentorsion  # noqa: F401
     except ImportError:

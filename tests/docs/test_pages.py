@@ -35,7 +35,7 @@ def checkout_folder(tmp_path, monkeypatch):
 
 def test_there_are_blocks_and_scripts_to_run():
     assert code_blocks(DOCS / "index.md", "python")
-    assert len(code_blocks(DOCS / "howto" / "describe-an-engine.md", "toml")) == 7
+    assert len(code_blocks(DOCS / "howto" / "describe-an-engine.md", "toml")) == 8
     assert {p.name for p in SCRIPTS} >= {"plot_tanaka_v8.py", "plot_01_first_comparison.py"}
 
 

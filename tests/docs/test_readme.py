@@ -60,4 +60,6 @@ def test_the_pages_data_files_are_current():
     assert {p.name for p in (DOCS / "data").iterdir()} == {
         "pressure-4stroke.csv",
         "torque-dragonfly.csv",
+        "workshop-inline-4.toml",
+        "workshop-inline-4-parts.csv",
     }

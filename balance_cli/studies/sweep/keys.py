@@ -71,7 +71,7 @@ SCHEMA = {
     },
     "links": {"master_bank": WHOLE, "length": "length", "knuckle_radius": "length"},
     "banks[]": {"angle": ANGLE, "pin_offset": "length"},
-    "throws[]": {"phase": ANGLE, "z": "length", "crankshaft": WHOLE},
+    "throws[]": {"phase": ANGLE, "z": "length", "crankshaft": WHOLE, "rotating": "mass"},
     "cylinders[]": {
         "number": WHOLE,
         "bank": WHOLE,
