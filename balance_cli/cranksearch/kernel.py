@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Pool", "Chunk", "work_units", "evaluate", "SCORE_TIE", "TIE_CAP"]
+__all__ = ["Pool", "Chunk", "work_units", "evaluate", "SCORE_TIE", "TIE_CAP", "BLOCK"]
 
 #: scores closer than this are equal (the coefficients are of order one and carry rounding
 #: errors of about 1e-14); equal scores are ranked by firing order. Scores are compared with
@@ -19,7 +19,7 @@ SCORE_TIE = 1e-9
 #: more arrangements than this tying at the K-th best score are not all kept
 TIE_CAP = 100_000
 #: a block of (prefix × suffix × channel) values evaluated at once
-_BLOCK = 1 << 21
+BLOCK = 1 << 21
 
 
 def _sums(problem, rows, throws):
@@ -70,7 +70,7 @@ class Chunk:
     truncated: bool
 
 
-def work_units(problem, target=_BLOCK):
+def work_units(problem, target=BLOCK):
     """(group, prefix start, prefix end) pieces of roughly ``target`` channel values each."""
     units = []
     C = max(problem.rotated.shape[2], 1)
@@ -124,7 +124,7 @@ def evaluate(problem, units, top, threshold=math.inf, shared=None):
                     continue
                 cols = np.flatnonzero(leader) if tie else None
                 Qt = Qs if cols is None else Qs[cols]
-                step = max(1, _BLOCK // (len(Qt) * len(w) or 1))
+                step = max(1, BLOCK // (len(Qt) * len(w) or 1))
                 for a in range(0, len(sel), step):
                     block = sel[a : a + step]
                     S = Pm[block][:, None, :] + Qt[None, :, :]

@@ -22,23 +22,26 @@ from .firing import firing_orders, reversed_order
 
 # under their former names: search has parameters and locals named as the functions are
 from .heuristic import heuristic_search
-from .kernel import SCORE_TIE, Pool, work_units
+from .kernel import SCORE_TIE, Pool, evaluate, work_units
 from .lattice import check_mirror, check_reversal, lattice
 from .objective import Term, check_terms, parse_objective
-from .parallel import run_cluster, run_local
+from .parallel import Reduction, run_cluster, run_local
 from .problem import (
     Problem,
     guide_couple_units,
     guide_phasors,
     mean_pitch,
+    merge_channels,
     minor_orders,
     objective_channels,
     order_units,
     throw_phasors,
     torsion_phasors,
 )
+from .query import evaluate_units
 from .results import SearchResult
 from .tables import build_tables, count_cranks
+from .units import plan_units
 
 __all__ = ["search", "DEFAULT_TOP", "MAX_TOP", "DEFAULT_LIMIT", "MAX_WORKERS"]
 
@@ -69,6 +72,8 @@ def search(
     samples: int = DEFAULT_SAMPLES,
     max_order: int = DEFAULT_MAX_ORDER,
     progress: Callable[[int, int], None] | None = None,
+    client=None,
+    enumeration: str = "streamed",
 ) -> SearchResult:
     """The best crank arrangements and firing orders of ``template``.
 
@@ -84,8 +89,12 @@ def search(
     allow_uneven, step_deg : bool, float
         search every crank on a grid of ``step_deg`` degrees, firing or not evenly
     workers : int or None
-        processes (None: every core); ``scheduler``: a Dask scheduler address or Client
-        instead
+        processes (None: every core)
+    scheduler : str or None
+        a Dask scheduler address (``tcp://host:8786``) to run the exhaustive search on
+        instead (a Client is taken too, as ``client``)
+    client : distributed.Client or None
+        a Dask client to run the exhaustive search on (yours: it is left open)
     heuristic : bool
         a local search (``restarts`` random starts, ``seed``), not proved optimal
     limit : int
@@ -94,12 +103,17 @@ def search(
         as for :func:`balance_cli.analysis.results.analyse`
     progress : callable(done, total) or None
         called as work completes
+    enumeration : str
+        "streamed" (default): the parent plans work units (the lattice points the first
+        half fills) and each worker enumerates its own, in the memory of one unit;
+        "tabled": every prefix and suffix tabled at once in the parent and sent whole to
+        the workers (the former method, gigabytes for an in-line 14, kept as a cross-check)
 
     Raises
     ------
     AnalysisError
-        naming ``template``, ``objective``, ``top``, ``step_deg``, ``workers``, ``limit`` or
-        ``scheduler``
+        naming ``template``, ``objective``, ``top``, ``step_deg``, ``workers``, ``limit``,
+        ``scheduler``, ``client`` or ``enumeration``
     """
     started = time.perf_counter()
     check_settings(samples, max_order)
@@ -121,21 +135,14 @@ def search(
                 f"must be a whole number from {low:,} to {high:,}, got {value!r}", name
             )
     top, restarts, limit, seed, workers = map(int, (top, restarts, limit, seed, workers))
-    if (
-        scheduler is not None
-        and not isinstance(scheduler, str)
-        and not all(hasattr(scheduler, a) for a in ("scatter", "submit", "nthreads"))
-    ):
-        raise AnalysisError(
-            f"must be a scheduler address such as tcp://host:8786 or a "
-            f"distributed.Client, got {scheduler!r}",
-            "scheduler",
-        )
-    if heuristic and scheduler is not None:
+    if enumeration not in ("streamed", "tabled"):
+        raise AnalysisError(f"must be 'streamed' or 'tabled', got {enumeration!r}", "enumeration")
+    cluster, cluster_name = _cluster_of(scheduler, client)
+    if heuristic and cluster is not None:
         raise AnalysisError(
             "applies to the exhaustive search, but the heuristic search runs in "
             "this process: leave out one of the two",
-            "scheduler",
+            cluster_name,
         )
     if isinstance(objective, str) or objective is None:
         terms = parse_objective(objective, max_order)
@@ -228,6 +235,9 @@ def search(
         rotated[:, :, i] = phasors[kind, :, k][:, None] * np.exp(
             1j * sign * (k + 1) * np.radians(phase)
         )
+    rotated, weights, largest, offset = merge_channels(
+        rotated, weights, largest if np.any(largest) else None
+    )
     split = 1 + (n - 1) // 2
     problem = Problem(
         n,
@@ -241,7 +251,8 @@ def search(
         reversal,
         False,
         split,
-        largest=largest if np.any(largest) else None,
+        largest=largest,
+        offset=offset,
     )
     # the mirror condition reads throws n−1 and n from the suffix
     problem.mirror = mirror and n - 2 >= split
@@ -253,32 +264,51 @@ def search(
     cranks = count_cranks(problem)
     firing_per_crank = math.factorial(capacity) ** P // capacity if capacity else 1
     expected = cranks if cranks is not None else P ** (n - 1)
-    reduction = (2 if reversal else 1) * (2 if problem.mirror else 1)
-    if not heuristic and expected // reduction > limit:
-        _refuse_limit(limit, expected // reduction, "about " if cranks is not None else "up to ")
+    symmetry = (2 if reversal else 1) * (2 if problem.mirror else 1)
+    if not heuristic and expected // symmetry > limit:
+        _refuse_limit(limit, expected // symmetry, "about " if cranks is not None else "up to ")
 
     # progress counts the listed arrangements' analyses too (top of them at most), the
     # last stage, which took minutes with a large top after the bar had shown 100 %
     if heuristic:
         tick = _ticker(progress, restarts + top)
-        chunks = heuristic_search(problem, top, restarts, seed, tick)
+        reduction = Reduction(problem, top)
+        for chunk in heuristic_search(problem, top, restarts, seed, tick):
+            reduction.add(chunk)
         total_cranks = cranks
     else:
-        total_cranks = build_tables(problem)
-        planned = _planned(problem)
-        if planned > limit:
-            _refuse_limit(limit, planned, "")
-        units_of_work = work_units(problem)
-        tick = _ticker(progress, len(units_of_work) + top)
-        if scheduler is not None:
-            chunks, workers = run_cluster(problem, units_of_work, top, math.inf, scheduler, tick)
+        if enumeration == "tabled":
+            total_cranks = build_tables(problem)
+            planned = _planned(problem)
+            if planned > limit:
+                _refuse_limit(limit, planned, "")
+            units_of_work = work_units(problem)
+            unit_weights = [1] * len(units_of_work)
+            evaluate_with = evaluate
         else:
-            chunks, workers = run_local(problem, units_of_work, top, workers, math.inf, tick)
-    truncated = any(c.truncated for c in chunks)
+            total_cranks = cranks
+            units_of_work, unit_weights = plan_units(problem)
+            evaluate_with = evaluate_units
+        tick = _ticker(progress, len(units_of_work) + top)
+        if cluster is not None:
+            reduction, workers = run_cluster(
+                problem,
+                units_of_work,
+                unit_weights,
+                top,
+                evaluate_with,
+                cluster,
+                tick,
+                cluster_name,
+            )
+        else:
+            reduction, workers = run_local(
+                problem, units_of_work, unit_weights, top, workers, evaluate_with, tick
+            )
+    truncated = reduction.truncated
     merged = Pool(problem, top)
-    for chunk in chunks:
-        for score, key in chunk.candidates:
-            merged.offer(score, key)
+    for key, score in reduction.pool.best.items():
+        merged.offer(score, key)
     truncated |= merged.truncated
     orbits = sorted(((s, k) for k, s in merged.best.items()), key=lambda x: (x[0], x[1]))
     if len(orbits) >= top:
@@ -308,8 +338,8 @@ def search(
         arrangements=tuple(arrangements),
         arrangements_total=total,
         arrangements_distinct=distinct,
-        evaluated=sum(c.evaluated for c in chunks),
-        pruned=sum(c.pruned for c in chunks),
+        evaluated=reduction.evaluated,
+        pruned=reduction.pruned,
         exhaustive=not heuristic,
         method="heuristic" if heuristic else "exhaustive",
         symmetries=tuple(symmetries),
@@ -322,6 +352,30 @@ def search(
         max_order=max_order,
         samples=samples,
     )
+
+
+def _is_client(value):
+    return all(hasattr(value, a) for a in ("scatter", "submit", "nthreads"))
+
+
+def _cluster_of(scheduler, client):
+    """(what to run on, the parameter that named it): a scheduler address, a Client, or
+    None for this machine's processes."""
+    if client is not None:
+        if scheduler is not None:
+            raise AnalysisError("and scheduler both name a cluster: give one of the two", "client")
+        if not _is_client(client):
+            raise AnalysisError(f"must be a distributed.Client, got {client!r}", "client")
+        return client, "client"
+    if scheduler is None:
+        return None, None
+    if not isinstance(scheduler, str) and not _is_client(scheduler):
+        raise AnalysisError(
+            f"must be a scheduler address such as tcp://host:8786 or a "
+            f"distributed.Client, got {scheduler!r}",
+            "scheduler",
+        )
+    return scheduler, "scheduler"
 
 
 def _refuse_limit(limit, cranks, about):
