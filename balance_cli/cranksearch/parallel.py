@@ -6,6 +6,7 @@ as they come back.
 
 from __future__ import annotations
 
+import gc
 import math
 import os
 
@@ -132,26 +133,43 @@ _IN_FLIGHT = 2
 
 
 def connect(scheduler):
-    """A Client of the scheduler at ``scheduler`` (an address), or the caller's own Client."""
+    """A Client of the scheduler at ``scheduler`` (an address such as tcp://host:8786)."""
     try:
         from distributed import Client
+        from distributed.comm.addressing import parse_address, parse_host_port
+        from distributed.comm.registry import get_backend
     except ImportError:
         raise AnalysisError(
             f"needs the optional cluster support: {install_hint('cluster')} (dask distributed)",
             "scheduler",
         ) from None
+    bad = AnalysisError(
+        f"{scheduler!r} is not a scheduler address such as tcp://host:8786", "scheduler"
+    )
+    # the address read before any Client is made: a Client that fails half-built is left to
+    # the garbage collector, whose clean-up waits on a lock all of distributed's event loops
+    # share, forever when the collection runs while another loop starts or stops
     try:
-        return Client(scheduler, timeout=f"{_CONNECT_S}s")
+        scheme, location = parse_address(scheduler)
+        get_backend(scheme)
+        if scheme in ("tcp", "tls"):
+            parse_host_port(location)
+    except (ValueError, TypeError):
+        raise bad from None
+    failure = None
+    try:
+        return Client(scheduler, timeout=f"{_CONNECT_S}s", set_as_default=False)
     except (OSError, TimeoutError) as exc:
-        raise AnalysisError(
+        failure = AnalysisError(
             f"{scheduler!r} did not answer within {_CONNECT_S} s ({exc}); "
             "check that the scheduler runs there",
             "scheduler",
-        ) from None
+        )
     except (ValueError, TypeError):
-        raise AnalysisError(
-            f"{scheduler!r} is not a scheduler address such as tcp://host:8786", "scheduler"
-        ) from None
+        failure = bad
+    # the half-built Client collected now, while no event loop is starting or stopping
+    gc.collect()
+    raise failure
 
 
 def run_cluster(problem, units, weights, top, evaluate, scheduler, progress, parameter):

@@ -49,6 +49,7 @@ class Problem:
     split: int  # the prefix is throws 1 to split − 1 by their place in Engine.throws
     largest: Any = None  # (C,) TV1: score += max over channels of largest·|sum|
     offset: float = 0.0  # the part of every score no arrangement changes (merge_channels)
+    followers: Any = None  # even banks: {cylinder: (bank-1 cylinder on its throw, angle after)}
     # filled by build_tables
     prefix_rows: Any = None  # (n_pref, split−1) phase indices
     prefix_group: Any = None  # (n_pref,) group index

@@ -23,7 +23,7 @@ from .firing import firing_orders, reversed_order
 # under their former names: search has parameters and locals named as the functions are
 from .heuristic import heuristic_search
 from .kernel import SCORE_TIE, Pool, evaluate, work_units
-from .lattice import check_mirror, check_reversal, lattice
+from .lattice import bank_followers, check_mirror, check_reversal, lattice
 from .objective import Term, check_terms, parse_objective
 from .parallel import Reduction, run_cluster, run_local
 from .problem import (
@@ -50,8 +50,10 @@ DEFAULT_TOP = 10
 #: 5 ms and 110 kB apiece, measured on an in-line 10), so 1000 take seconds and 110 MB where
 #: the 100 000 once accepted grew past 7 GB
 MAX_TOP = 1000
-#: an exhaustive search evaluating more arrangements than this is refused (about a minute
-#: on two cores); --limit raises it, --heuristic or a cluster are the alternatives
+#: an exhaustive search evaluating more arrangements than this is refused (an objective the
+#: bound cannot prune, such as every F_k and M_k, takes about a minute on two cores; a few
+#: terms such as M1,M2,M3,M4 seconds: the in-line 14's 1.6e9); --limit raises it,
+#: --heuristic or a cluster are the alternatives
 DEFAULT_LIMIT = 2_000_000_000
 #: more processes than this are refused (each costs memory and start-up)
 MAX_WORKERS = 1024
@@ -74,6 +76,7 @@ def search(
     progress: Callable[[int, int], None] | None = None,
     client=None,
     enumeration: str = "streamed",
+    even_banks: bool = False,
 ) -> SearchResult:
     """The best crank arrangements and firing orders of ``template``.
 
@@ -88,6 +91,12 @@ def search(
         how many arrangements to list (ties with the last are ranked by firing order)
     allow_uneven, step_deg : bool, float
         search every crank on a grid of ``step_deg`` degrees, firing or not evenly
+    even_banks : bool
+        every bank fires evenly on its own, the banks a fixed angle apart (each cylinder of
+        banks 2, 3, ... the bank angle after the cylinder of bank 1 on its throw): the
+        medium-speed V engines' rule, whose bank angle seldom lets the whole engine fire
+        evenly (a 50° V12's intervals alternate 50° and 70°); needs one cylinder of each bank
+        on every throw
     workers : int or None
         processes (None: every core)
     scheduler : str or None
@@ -135,6 +144,14 @@ def search(
                 f"must be a whole number from {low:,} to {high:,}, got {value!r}", name
             )
     top, restarts, limit, seed, workers = map(int, (top, restarts, limit, seed, workers))
+    if not isinstance(even_banks, (bool, np.bool_)):
+        raise AnalysisError(f"must be True or False, got {even_banks!r}", "even_banks")
+    if even_banks and allow_uneven:
+        raise AnalysisError(
+            "asks for even firing within each bank, allow_uneven for any firing: leave out "
+            "one of the two",
+            "even_banks",
+        )
     if enumeration not in ("streamed", "tabled"):
         raise AnalysisError(f"must be 'streamed' or 'tabled', got {enumeration!r}", "enumeration")
     cluster, cluster_name = _cluster_of(scheduler, client)
@@ -225,8 +242,13 @@ def search(
     channels, weights, largest = objective_channels(
         terms, units, pitch, couple_units, torsion_units, tv_orders
     )
-    P, s, capacity, base, offsets = lattice(flat, allow_uneven, step_deg)
+    followers = bank_followers(flat) if even_banks and len(flat.bank_angles_rad) > 1 else None
+    P, s, capacity, base, offsets = lattice(flat, allow_uneven, step_deg, followers)
     reversal, shift = check_reversal(phasors, offsets, base, P, flat.noise_floor_n)
+    if followers:
+        # running the other way round turns the banks over (bank 1 fires after bank 2):
+        # another even-banks rule, not this one
+        reversal, shift = False, None
     mirror = check_mirror(phasors, offsets, base, flat.noise_floor_n)
     phase = base[:, None] + s * np.arange(P)[None, :]  # (n, P) degrees
     rotated = np.zeros((n, P, len(channels)), complex)
@@ -253,6 +275,7 @@ def search(
         split,
         largest=largest,
         offset=offset,
+        followers=followers,
     )
     # the mirror condition reads throws n−1 and n from the suffix
     problem.mirror = mirror and n - 2 >= split
@@ -345,6 +368,7 @@ def search(
         symmetries=tuple(symmetries),
         firing_orders_per_crank=firing_per_crank,
         even=not allow_uneven,
+        even_banks=bool(followers),
         step_deg=s,
         ties_truncated=truncated,
         elapsed_s=time.perf_counter() - started,
@@ -381,8 +405,9 @@ def _cluster_of(scheduler, client):
 def _refuse_limit(limit, cranks, about):
     raise AnalysisError(
         f"is {limit:,} (cranks to evaluate), but an exhaustive search of this template evaluates "
-        f"{about}{cranks:,}; raise it (about 30 million a second on two cores), or use the "
-        "heuristic search (not proved optimal) or a cluster scheduler",
+        f"{about}{cranks:,}; raise it (an in-line 14's 1.6 billion take seconds on two "
+        "cores for M1,M2,M3,M4, objectives of many terms longer), or use the heuristic "
+        "search (not proved optimal) or a cluster scheduler",
         "limit",
     )
 
