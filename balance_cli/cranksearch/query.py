@@ -83,13 +83,48 @@ class _Grid:
         return lo, hi
 
 
+class _Suffixes:
+    """One occupancy's suffixes with what every head of it reads: their sums, mirror keys,
+    leaders (asked for once), each channel's largest |Q| and the grids built on them."""
+
+    def __init__(self, problem, srows, Q):
+        self.problem, self.srows, self.Q = problem, srows, Q
+        self.mkey = mirror_keys(problem, srows).astype(np.int64) if problem.mirror else None
+        self._leader = None
+        self.Qmax = np.abs(Q).max(axis=0) if len(Q) else np.zeros(Q.shape[1])
+        # each channel's extent, about (the disc that holds its values): it chooses the
+        # channel and bounds the number of cells a side
+        self.spread = 2.0 * self.Qmax
+        self.grids: dict = {}
+
+    def leader(self, needed):
+        """Which suffixes are no greater than their reversal: asked only by a prefix that is
+        its own reversal (an in-line two-stroke's never is)."""
+        if self._leader is None and needed:
+            self._leader = lex_sign(self.srows, self.problem.lattice) <= 0
+        if self._leader is None:
+            return np.ones(len(self.srows), bool)
+        return self._leader
+
+    def grid(self, c, r):
+        """A grid of channel c for radius r: the one built before while its radius is
+        between r and 2r (the threshold only falls)."""
+        grid = self.grids.get(c)
+        if grid is None or not r <= grid.r <= 2 * r:
+            grid = self.grids[c] = _Grid(self.Q[:, c], r, self.spread[c])
+        return grid
+
+
 class _Group:
     """One unit's prefixes and suffixes, paired under the symmetry conditions and the bound."""
 
-    def __init__(self, problem, pool, prows, Pm, ties, srows, Q, mkey, leader):
+    def __init__(self, problem, pool, prows, Pm, ties, suffixes):
         self.problem, self.pool = problem, pool
         self.prows, self.Pm, self.ties = prows, Pm, ties
-        self.srows, self.Q, self.mkey, self.leader = srows, Q, mkey, leader
+        self.suffixes = suffixes
+        self.srows, self.Q, self.mkey = suffixes.srows, suffixes.Q, suffixes.mkey
+        self.leader = leader = suffixes.leader(bool(ties.any()) and suffixes.srows.shape[1] > 0)
+        mkey, Q = self.mkey, self.Q
         P = problem.lattice
         self.second = prows[:, 0].astype(np.int64) if prows.shape[1] else np.zeros(len(prows), int)
         # the suffixes each prefix pairs with, counted: those whose mirror key is at least
@@ -104,12 +139,8 @@ class _Group:
             plain, tied = at_least[self.second], leaders[self.second]
         self.allowed = np.where(ties, tied, plain)
         self.weights = problem.weights + (problem.largest if problem.largest is not None else 0.0)
-        self.Qmax = np.abs(Q).max(axis=0) if len(Q) else np.zeros(Q.shape[1])
-        # each channel's extent, about (the disc that holds its values): it chooses the
-        # channel and bounds the number of cells a side
-        self.spread = 2.0 * self.Qmax
+        self.Qmax, self.spread = suffixes.Qmax, suffixes.spread
         self.evaluated = 0
-        self.grid = None
 
     def keep(self, i, j):
         """Which pairs (prefix i, suffix j) the symmetry conditions leave."""
@@ -155,9 +186,7 @@ class _Group:
         """The prefixes ``block`` against the suffixes near each one's opposite in the most
         selective channel, a piece of at most BLOCK channel values at a time."""
         c, r = self.channel(threshold)
-        if self.grid is None or self.grid[0] != c or not r <= self.grid[1].r <= 2 * r:
-            self.grid = (c, _Grid(self.Q[:, c], r, self.spread[c]))
-        grid = self.grid[1]
+        grid = self.suffixes.grid(c, r)
         lo, hi = grid.ranges(-self.Pm[block, c])
         lengths = hi - lo
         ends = np.cumsum(lengths.sum(axis=1))
@@ -193,16 +222,17 @@ def evaluate_units(problem, units, top, threshold=math.inf, shared=None):
     prefix_throws = list(range(1, split))
     suffix_throws = list(range(split, n))
     enumerator = Enumerator(problem)
-    cached: list = []  # [occupancy, suffix rows, sums, mirror keys, leaders]: heads share it
+    # one occupancy's suffixes: the heads of an occupancy come one after another
+    suffixes, key = None, None
     for digits, head in units:
         if shared is not None:
             pool.threshold = min(pool.threshold, shared.value)
         digits = np.asarray(digits, np.int8)
-        if not cached or cached[0] != tuple(digits):
-            srows, Q = enumerator.rows(suffix_throws, cap - digits if cap else digits)
-            mkey = mirror_keys(problem, srows).astype(np.int64) if problem.mirror else None
-            cached = [tuple(digits), srows, Q, mkey, None]
-        _, srows, Q, mkey, leader = cached
+        if suffixes is None or key != tuple(digits):
+            key = tuple(digits)
+            suffixes = _Suffixes(
+                problem, *enumerator.rows(suffix_throws, cap - digits if cap else digits)
+            )
         prows, Pm = enumerator.rows(
             prefix_throws, digits - enumerator.first if cap else digits, head
         )
@@ -212,14 +242,7 @@ def evaluate_units(problem, units, top, threshold=math.inf, shared=None):
             sign = lex_sign(prows, P)
             keep = sign <= 0
             prows, Pm, ties = prows[keep], Pm[keep], (sign == 0)[keep]
-        if leader is None:
-            # which suffixes are no greater than their reversal: asked only by a prefix that
-            # is its own reversal (an in-line two-stroke's never is)
-            leader = np.ones(len(srows), bool)
-            if problem.reversal and ties.any() and srows.shape[1]:
-                leader = lex_sign(srows, P) <= 0
-                cached[4] = leader
-        group = _Group(problem, pool, prows, Pm, ties, srows, Q, mkey, leader)
+        group = _Group(problem, pool, prows, Pm, ties, suffixes)
         _pair(group, top, shared)
         evaluated += group.evaluated
         pruned += int(group.allowed.sum()) - group.evaluated
