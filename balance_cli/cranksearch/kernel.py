@@ -42,15 +42,23 @@ class Pool:
         # sorting at every offer made a large top quadratic (minutes at top = 100 000)
         self.recount = top
 
+    @property
+    def full(self):
+        """Holding ``top`` and TIE_CAP tied: only a better score than the threshold gets in."""
+        return len(self.best) >= self.top + TIE_CAP
+
     def offer(self, score, crank):
         if score > self.threshold + SCORE_TIE:
+            return
+        if self.full and score > self.threshold - SCORE_TIE:
+            # another tie, or the same class again: not let in either way, and decided before
+            # its symmetry class is worked out (a grid of uneven cranks tied by the million at
+            # 0 spent minutes there)
+            self.truncated = True
             return
         key = self.problem.orbit_key(crank)
         old = self.best.get(key)
         if old is not None and old <= score:
-            return
-        if len(self.best) >= self.top + TIE_CAP and score > self.threshold - SCORE_TIE:
-            self.truncated = True
             return
         self.best[key] = score
         if len(self.best) >= self.recount:
