@@ -61,7 +61,35 @@ def _worker_chunk(units):
 
 
 def _cluster_chunk(evaluate, problem, units, top, threshold):
+    _keep_freed_memory()
     return evaluate(problem, units, top, threshold)
+
+
+#: glibc's mallopt parameters (malloc.h)
+_M_TRIM_THRESHOLD, _M_MMAP_THRESHOLD = -1, -3
+
+
+def _keep_freed_memory():
+    """Let this process's allocator keep what the search frees, once per process.
+
+    Dask starts its workers with MALLOC_TRIM_THRESHOLD_=65536, to hand freed memory back to
+    the system at once; glibc then maps every array above 128 kB afresh and unmaps it when
+    freed, and the search's pieces (a megabyte each, made and dropped thousands of times a
+    second) paid a page fault for every page: an in-line 14 took 3.6 core-seconds on a
+    LocalCluster where the same processes without it took 1.2 (and 3.65 s locally with the
+    variable set). Up to 32 MB arrays are taken from the heap again and 64 MB of it kept.
+    Nothing happens where glibc is not the C library."""
+    if _WORKER.get("tuned"):
+        return
+    _WORKER["tuned"] = True
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL("libc.so.6")
+        libc.mallopt(_M_MMAP_THRESHOLD, 32 << 20)
+        libc.mallopt(_M_TRIM_THRESHOLD, 64 << 20)
+    except (OSError, AttributeError):
+        pass
 
 
 def pieces_of(units, weights, n):

@@ -9,7 +9,7 @@ occupancy, never enumerated), and each becomes a work unit: the occupancy, and w
 occupancy holds too much work, a head (the phases of the first prefix throws). A worker
 enumerates the unit's own prefixes (those that fill exactly that occupancy, starting with the
 head) and suffixes (those that fill the rest), a few thousand rows with their partial sums
-accumulated throw by throw, scores their pairs (:func:`.kernel.evaluate_units`), and drops
+accumulated throw by throw, scores their pairs (:func:`.query.evaluate_units`), and drops
 them: its memory is that of one unit, whatever the template's size.
 
 Both enumerations apply the same symmetry conditions to the same pairs (a prefix no greater
