@@ -17,8 +17,18 @@ ratio of the medians is what counts, so the machine's speed cancels out.
   straightforward vectorised enumeration of every permutation of an in-line 10 (9! crank
   orders, scored the same way, no symmetry, no bounds); both print arrangements per second,
   and the ratio of the rates is the search's speed-up
-- ``balance family configs/marine-6-2stroke.toml --cylinders 5-12``: the project-guide table,
-  every row searched exhaustively (target: under a minute on two cores)
+- ``balance search`` of an in-line 14 two-stroke (the in-line 12 template at the same pitch,
+  14 throws: 13!/4 ≈ 1.6e9 cranks to cover), ``--objective M1,M2,M3,M4``, beside the in-line
+  12 in the same run: wall time and peak resident memory of the whole process tree (read
+  from /proc while it runs: each process's high-water mark, and their sum), with the time of
+  N = 10 to 14 and the growth from one to the next (target: the in-line 14 under 30 s and
+  1 GB on two cores)
+- ``balance family configs/marine-6-2stroke.toml --cylinders 5-12`` and ``5-14``: the
+  project-guide table, every row searched exhaustively (target: under a minute on two
+  cores)
+- the search on a Dask LocalCluster of two worker processes (with distributed installed):
+  the in-line 13's pieces and cranks a second per core, and what they make of an in-line 16
+  and of a four-stroke V20 on a grid of 18° on 64 cores
 - ``balance.torsion`` of a six-throw model
   (tests/validation/reference/opentorsion_ice/mendes2008.toml with a [gas] cycle): modes and
   the forced response at 100 speeds, orders ½ to 12, in one process (target: well under a
@@ -44,6 +54,7 @@ alternately, and prints the ratio this/that: a change's effect measured in one r
 import compileall
 import itertools
 import json
+import math
 import os
 import re
 import statistics
@@ -197,29 +208,234 @@ def search_bench():
 
 
 def family_bench():
-    """The marine family table for 5 to 12 cylinders: every row searched exhaustively (target:
-    under a minute on two cores)."""
-    command = [
-        BALANCE,
-        "family",
-        "configs/marine-6-2stroke.toml",
-        "--cylinders",
-        "5-12",
-        "--format",
-        "json",
-    ]
-    wall, document = median_run(command)
-    methods = {row["method"] for row in document["rows"]}
-    verdict = "ok" if wall < 60.0 and methods == {"exhaustive"} else "TOO SLOW"
-    print(
-        f"{wall * 1000:8.1f} ms  median of 3  balance family configs/marine-6-2stroke.toml "
-        f"--cylinders 5-12 ({', '.join(sorted(methods))})"
+    """The marine family table for 5 to 12 and 5 to 14 cylinders: every row searched
+    exhaustively (target: under a minute on two cores)."""
+    failed = False
+    for counts, runs in (("5-12", 3), ("5-14", 1)):
+        command = [
+            BALANCE,
+            "family",
+            "configs/marine-6-2stroke.toml",
+            "--cylinders",
+            counts,
+            "--format",
+            "json",
+        ]
+        wall, document = median_run(command, runs)
+        methods = {row["method"] for row in document["rows"]}
+        verdict = "ok" if wall < 60.0 and methods == {"exhaustive"} else "TOO SLOW"
+        print(
+            f"{wall * 1000:8.1f} ms  median of {runs}  balance family "
+            f"configs/marine-6-2stroke.toml --cylinders {counts} "
+            f"({', '.join(sorted(methods))}; load {load()})"
+        )
+        print(
+            f"family table of {len(document['rows'])} cylinder numbers in {wall:.2f} s (target "
+            f"under 60 s, every row exhaustive): {verdict}\n"
+        )
+        failed |= verdict != "ok"
+    return failed
+
+
+def load():
+    """The machine's load averages (1, 5 and 15 minutes), as uptime prints them."""
+    try:
+        return ", ".join(f"{x:.2f}" for x in os.getloadavg())
+    except OSError:
+        return "unknown"
+
+
+def _tree(pid):
+    """The process ``pid`` and its descendants, as Linux lists them."""
+    out, todo = [], [pid]
+    while todo:
+        p = todo.pop()
+        out.append(p)
+        try:
+            with open(f"/proc/{p}/task/{p}/children", encoding="ascii") as f:
+                todo += [int(c) for c in f.read().split()]
+        except OSError:
+            pass
+    return out
+
+
+def _memory_kb(pid):
+    """(resident now, high-water mark) of a process, kB (0, 0 once it has gone)."""
+    values = {}
+    try:
+        with open(f"/proc/{pid}/status", encoding="ascii") as f:
+            for line in f:
+                key, _, rest = line.partition(":")
+                if key in ("VmRSS", "VmHWM"):
+                    values[key] = int(rest.split()[0])
+    except OSError:
+        pass
+    return values.get("VmRSS", 0), values.get("VmHWM", 0)
+
+
+def measured(command):
+    """(wall s, JSON document, peaks) of one run of ``command``; peaks: each process's
+    high-water mark (kB, by pid, read from /proc every 20 ms while it runs) and the largest
+    sum of the tree's resident memory seen at one moment. Linux only; elsewhere the peaks are
+    empty."""
+    start = time.perf_counter()
+    process = subprocess.Popen(
+        command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True
     )
-    print(
-        f"family table of 8 cylinder numbers in {wall:.2f} s (target under 60 s, every row "
-        f"exhaustive): {verdict}\n"
+    peaks: dict = {}
+    together = 0
+    chunks = []
+    import threading
+
+    reader = threading.Thread(target=lambda: chunks.append(process.stdout.read()))
+    reader.start()
+    while process.poll() is None:
+        now = 0
+        for pid in _tree(process.pid):
+            rss, hwm = _memory_kb(pid)
+            now += rss
+            peaks[pid] = max(peaks.get(pid, 0), hwm)
+        together = max(together, now)
+        time.sleep(0.02)
+    reader.join()
+    wall = time.perf_counter() - start
+    if process.returncode:
+        raise subprocess.CalledProcessError(process.returncode, command)
+    return wall, json.loads("".join(chunks)), {"processes": peaks, "together": together}
+
+
+def _inline_template(n, folder):
+    """templates/inline-12-2stroke.toml with ``n`` throws at its pitch, written in ``folder``."""
+    text = (ROOT / "templates" / "inline-12-2stroke.toml").read_text(encoding="utf-8")
+    head = text.split("[[throws]]")[0].replace("In-line 12", f"In-line {n}")
+    path = Path(folder) / f"inline-{n}-2stroke.toml"
+    path.write_text(
+        head + "".join(f'[[throws]]\nz = "{500 * j} mm"\n\n' for j in range(n)), encoding="utf-8"
     )
-    return verdict != "ok"
+    return str(path)
+
+
+def scale_bench():
+    """The in-line 14's exhaustive search beside the in-line 12's, time and peak memory, and
+    how the time grows from N = 10 to 14 (targets: 30 s and 1 GB for the 14 on two cores)."""
+    times, together = {}, {}
+    with tempfile.TemporaryDirectory() as folder:
+        for n in (10, 11, 12, 13, 14):
+            command = [
+                BALANCE,
+                "search",
+                _inline_template(n, folder),
+                "--objective",
+                "M1,M2,M3,M4",
+                "--format",
+                "json",
+                "--limit",
+                str(10**12),
+            ]
+            runs = 3 if n in (12, 14) else 1
+            results = sorted((measured(command) for _ in range(runs)), key=lambda r: r[0])
+            wall, document, peaks = results[runs // 2]
+            times[n] = wall
+            together[n] = peaks["together"] / 1024
+            largest = max(peaks["processes"].values(), default=0) / 1024
+            each = ", ".join(f"{v / 1024:.0f}" for v in sorted(peaks["processes"].values()))
+            cover = document["evaluated"] + document["pruned"]
+            print(
+                f"{wall * 1000:8.1f} ms  median of {runs}  in-line {n} two-stroke, M1,M2,M3,M4: "
+                f"{cover:,} cranks covered, {document['evaluated']:,} scored "
+                f"({document['workers']} workers; load {load()})"
+            )
+            if peaks["processes"]:
+                print(
+                    f"          peak resident memory: {largest:.0f} MB the largest process, "
+                    f"{peaks['together'] / 1024:.0f} MB the tree at once (each process's "
+                    f"peak, MB: {each})"
+                )
+    growth = ", ".join(f"{n}→{n + 1}: ×{times[n + 1] / times[n]:.1f}" for n in range(10, 14))
+    # the growth from one cylinder to the next rises (the enumeration grows N-fold, the
+    # bound prunes a little more each time): extrapolated from the last two steps
+    step = times[14] / times[13]
+    rise = step / (times[13] / times[12])
+    # t15 = t14·step·rise, t16 = t15·step·rise²
+    sixteen = times[14] * step**2 * rise**3
+    print(f"growth of the time with N: {growth}; N = 16 projected: about {sixteen / 60:.0f} min")
+    fast = times[14] <= 30.0
+    small = together[14] <= 1024.0
+    print(
+        f"in-line 14 exhaustive in {times[14]:.1f} s and {together[14]:.0f} MB (targets at "
+        f"most 30 s and 1 GB), in-line 12 {times[12]:.2f} s and {together[12]:.0f} MB: "
+        f"{'ok' if fast and small else 'TOO SLOW' if not fast else 'TOO LARGE'}\n"
+    )
+    return not (fast and small)
+
+
+def cluster_bench():
+    """The search on a LocalCluster of two worker processes: cranks covered a second per
+    core where the bound prunes (an in-line 14, M1,M2,M3,M4) and where it cannot (a V14 on
+    an 18° grid of uneven cranks, every F_k and M_k), and what they make of larger searches
+    on 64 cores."""
+    try:
+        import distributed
+    except ImportError:
+        print(
+            "cluster: distributed is not installed (pip install 'engine-balance[cluster]'): "
+            "skipped\n"
+        )
+        return False
+    import tomllib
+
+    import balance_cli as balance
+    from balance_cli.config import build
+
+    with tempfile.TemporaryDirectory() as folder:
+        inline = balance.load_template(_inline_template(14, folder))
+    v_family = ROOT / "templates" / "v-family-4stroke.toml"
+    data = tomllib.loads(v_family.read_text(encoding="utf-8"))
+    data["throws"] = [{"z": f"{530 * j} mm"} for j in range(7)]
+    data.pop("power")
+    v14 = build(data, str(v_family), template=True)
+    cases = (
+        ("in-line 14, M1,M2,M3,M4", inline, {"objective": "M1,M2,M3,M4"}),
+        (
+            "V14 on an 18° grid, every F_k and M_k",
+            v14,
+            {"allow_uneven": True, "step_deg": 18.0, "limit": 10**12},
+        ),
+    )
+    rates = []
+    with (
+        distributed.LocalCluster(
+            n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0"
+        ) as cluster,
+        distributed.Client(cluster) as client,
+    ):
+        for name, template, options in cases:
+            pieces: list = []
+
+            def progress(done, total, pieces=pieces):
+                pieces.append(done)
+
+            start = time.perf_counter()
+            found = balance.search(template, client=client, progress=progress, **options)
+            wall = time.perf_counter() - start
+            cores = found.workers
+            covered = (found.evaluated + found.pruned) / wall / cores
+            units = (pieces[-1] - 10) / wall / cores if pieces else 0.0  # the last 10: analyses
+            rates.append(covered)
+            print(
+                f"{wall * 1000:8.1f} ms  {name} on a LocalCluster of {cores} worker processes "
+                f"(load {load()}): {units:.0f} units and {covered:,.0f} cranks covered a second "
+                "per core"
+            )
+    sixteen = math.factorial(15) // 4
+    v20 = 20**9 // 4
+    print(
+        f"          64 cores at those rates: in-line 16 ({sixteen:.2g} cranks) at most "
+        f"{sixteen / rates[0] / 64:.0f} s (the rate grows with N: the 14's is a floor); a "
+        f"four-stroke V20 on an 18° grid, every F_k and M_k ({v20:.2g} cranks) about "
+        f"{v20 / rates[1] / 64:.0f} s\n"
+    )
+    return False
 
 
 def torsion_bench():
@@ -403,7 +619,9 @@ def main():
     if os.environ.get("BASE"):
         against(os.environ["BASE"])
     failed |= search_bench()
+    failed |= scale_bench()
     failed |= family_bench()
+    failed |= cluster_bench()
     failed |= torsion_bench()
     failed |= mounts_bench()
     failed |= animate_bench()

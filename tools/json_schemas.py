@@ -1482,6 +1482,7 @@ def search():
             ),
             "method": text('"exhaustive" or "heuristic"', enum=("exhaustive", "heuristic")),
             "even_firing": flag("only evenly firing cranks were searched"),
+            "even_banks": flag("each bank fires evenly on its own, the banks a fixed angle apart"),
             "step_deg": positive("the phase lattice, degrees"),
             "arrangements_total": integer("arrangements in the search space", 0),
             "arrangements_distinct": integer("the same up to turning and reversing", 0),
@@ -1540,6 +1541,19 @@ def family():
                 "type": ["boolean", "null"],
                 "description": "a second-order compensator is indicated (null without a PRU)",
             },
+            "major_orders": array(
+                closed(
+                    "a major order of one bank (its cylinders all in phase)",
+                    {
+                        "order": positive("the order (a half order for a four-stroke's)"),
+                        "vector_sum": size(
+                            "|Σ e^{ik·φ}| over the cylinders' firing angles, over their number: "
+                            "1 for an in-line engine, |1 + e^{ik·Δ}|/2 for a V's banks Δ apart"
+                        ),
+                    },
+                ),
+                "the first two major orders",
+            ),
         },
     )
     row["properties"]["x_type"] = {**largest, "description": "the largest X-type moment"}
@@ -1554,6 +1568,10 @@ def family():
             "config": CONFIG,
             "objective": text("what each firing order minimises"),
             "first_order_balance": ref("balance"),
+            "firing": text(
+                '"even" (in-line) or "even within each bank" (a V family)',
+                enum=("even", "even within each bank"),
+            ),
             "pitch_m": positive("cylinder pitch, m"),
             "guide_forces_from": text(
                 '"gas and inertia" or "inertia only"', enum=("gas and inertia", "inertia only")

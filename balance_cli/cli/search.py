@@ -42,6 +42,7 @@ _SEARCH_FLAGS = {
     "step_deg": "--step",
     "workers": "--workers",
     "scheduler": "--scheduler",
+    "even_banks": "--even-banks",
     "limit": "--limit",
     "restarts": "--restarts",
     "seed": "--seed",
@@ -50,6 +51,7 @@ _SEARCH_FLAGS = {
 #: library words inside the search's messages, in the command line's terms
 _SEARCH_WORDS = {
     "allow_uneven": "--allow-uneven",
+    "even_banks": "--even-banks",
     "step_deg": "--step",
     "max_order": "--max-order",
     "heuristic search": "heuristic search (--heuristic)",
@@ -134,6 +136,13 @@ def _search_progress(label="Searching"):
     f"{install_hint('cluster')}.",
 )
 @click.option(
+    "--even-banks",
+    is_flag=True,
+    help="Each bank fires evenly on its own, the other banks' cylinders the bank angle "
+    "after their partner on the throw (the rule of medium-speed V engines, whose bank angle "
+    "seldom lets the whole engine fire evenly).",
+)
+@click.option(
     "--heuristic",
     is_flag=True,
     help="A local search from random cranks for templates too large to enumerate: "
@@ -178,6 +187,7 @@ def search(
     step,
     workers,
     scheduler,
+    even_banks,
     heuristic,
     restarts,
     seed,
@@ -235,6 +245,7 @@ def search(
             step_deg=step,
             workers=workers,
             scheduler=scheduler,
+            even_banks=even_banks,
             heuristic=heuristic,
             restarts=restarts,
             seed=seed,
@@ -282,15 +293,28 @@ def search(
         write_folder(write_dir, fill)
 
 
+def _family_counts(text, v_family):
+    """--cylinders: a V family (two cylinders a throw) takes the even numbers of a range."""
+    if text is None:
+        text = "12-20" if v_family else "5-12"
+    if not v_family:
+        return counts_option(text)
+    counts: list[int] = []
+    for token in text.split(","):
+        numbers = counts_option(token)
+        counts += [n for n in numbers if n % 2 == 0] if "-" in token else numbers
+    return counts
+
+
 @main.command("family")
 @click.argument("path", metavar="FILE.toml")
 @click.option(
     "--cylinders",
     "counts",
-    default="5-12",
-    show_default=True,
+    default=None,
     metavar="N-M|N,M,...",
-    help="The numbers of cylinders of the family (2 to 24).",
+    help="The numbers of cylinders of the family (2 to 24); for a V template (two banks) "
+    "the even numbers of a range N-M  [default: 5-12, or 12-20 for a V template].",
 )
 @click.option(
     "--objective",
@@ -363,10 +387,11 @@ def family_(
     from ..report.family import family_tables
     from ..studies.family import family
 
-    counts = counts_option(counts)
     given = firing_orders_option(firing_orders)
     with reported():
         guard([output], [Path(resolve(path))])
+        configuration = read_configuration(path)
+    counts = _family_counts(counts, len(configuration.data.get("banks", ())) == 2)
     settings(samples, max_order)
     pitch_m = quantity_option(pitch, "--pitch", "length")
     power_w = quantity_option(power, "--power-per-cylinder", "power")
@@ -380,8 +405,6 @@ def family_(
         "template": path,
     }
     callback, bar = _search_progress("Family")
-    with reported():
-        configuration = read_configuration(path)
     with reported(flags=flags), bar:
         result = family(
             configuration,

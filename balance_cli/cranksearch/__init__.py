@@ -17,10 +17,13 @@ cylinders, 360°/cylinders with an odd one), each lattice point taken by the sam
 cylinders. A throw's phase is then a lattice multiple, and the arrangement is an exact
 cover, which is enumerated without ever producing an uneven crank.
 
-**Exhaustive enumeration (meet in the middle).** The free throws are split into a prefix and
-a suffix. Prefixes are grouped by the lattice points they fill; each group is paired with the
-suffixes that fill the rest, and every (prefix, suffix) score is a sum of the two partial
-phasor sums: one vectorised block per group, which processes or a Dask cluster share.
+**Exhaustive enumeration (meet in the middle, streamed).** The free throws are split into a
+prefix and a suffix. The parent counts the lattice occupancies the prefixes can leave (dynamic
+programming, never enumerating them) and sends each as a work unit; a worker enumerates the
+unit's own prefixes and the suffixes that fill the rest, with their partial sums, scores their
+pairs and drops them, so its memory is one unit's. Processes or a Dask cluster share the units;
+the best are merged as they come back. (``enumeration="tabled"``: the former method, every
+prefix and suffix tabled at once in the parent, kept as a cross-check.)
 
 **Symmetries** (each checked on the template's own numbers before it is used):
 
@@ -35,13 +38,18 @@ Only the lexicographically least member of each symmetry class is evaluated (a l
 condition on the prefix and a slice of the sorted suffixes).
 
 **Bounds.** |P + Q| ≥ |P| − max|Q|: a prefix whose lower bound exceeds the K-th best score
-found so far cannot improve on it and is skipped, with its suffixes. Evaluated + skipped by
-bound + skipped by symmetry = every arrangement, which is the proof of optimality.
+found so far cannot improve on it and is skipped, with its suffixes; and a pair within that
+score T has every channel's |P + Q| ≤ T / its weight, so a prefix is paired only with the
+suffixes whose sums lie near its opposite in the most selective channel (a grid of them).
+Evaluated + skipped by bound + skipped by symmetry = every arrangement, which is the proof of
+optimality.
 
 **Modules.** ``objective`` (terms and coefficients), ``results`` (what a search returns),
 ``problem`` (each throw's phasors and the objective's channels), ``lattice`` (the firing lattice
-and the symmetry checks), ``tables`` (prefix and suffix tables, counting), ``kernel`` (the
-evaluation and the pool of the best), ``parallel`` (local processes, a Dask cluster),
+and the symmetry checks), ``units`` (the streamed work units and the rows a worker builds),
+``query`` (their pairs scored near the threshold), ``tables`` (the tabled prefixes and
+suffixes, counting), ``kernel`` (the tabled evaluation and the pool of the best), ``parallel``
+(local processes, a Dask cluster),
 ``heuristic``, ``firing`` (firing orders and expansion), ``final`` (the listed arrangements) and
 ``run`` (:func:`search` itself).
 """

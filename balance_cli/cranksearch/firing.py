@@ -15,11 +15,15 @@ __all__ = ["firing_orders", "reversed_order", "crank_phases", "arrangement_engin
 
 
 def _cylinder_lattice(template, problem, crank):
-    """Each cylinder's lattice index (top dead centre in steps of the firing interval)."""
+    """Each cylinder's lattice index (top dead centre in steps of the firing interval); the
+    followers of an even-banks search are not on the lattice."""
     P = problem.lattice
+    follow = problem.followers or {}
     out = {}
     for j in range(problem.n_throws):
-        mine = sorted(c.number for c in template.cylinders if c.throw_index == j)
+        mine = sorted(
+            c.number for c in template.cylinders if c.throw_index == j and c.number not in follow
+        )
         for c, e in zip(mine, problem.offsets[j], strict=True):
             out[c] = (e - crank[j]) % P
     return out
@@ -31,7 +35,7 @@ def firing_orders(template, problem, crank):
     P, s = problem.lattice, problem.step_deg
     cycle = template.cycle_deg
     n_cyl = template.n_cylinders
-    interval = cycle / n_cyl
+    interval = cycle / (n_cyl - len(problem.followers or {}))
     index = _cylinder_lattice(template, problem, crank)
     first = min(index)
     points: dict[int, list] = {}
@@ -54,6 +58,10 @@ def firing_orders(template, problem, crank):
     orders = []
     for combination in itertools.product(*options):
         angles = {c: a for part in combination for c, a in part.items()}
+        # an even-banks search: each other bank's cylinder fires its fixed angle after the
+        # cylinder of bank 1 on its throw (within the revolution after it)
+        for c, (mate, delta) in (problem.followers or {}).items():
+            angles[c] = (angles[mate] + delta) % cycle
         orders.append(tuple(sorted(angles, key=lambda c: (angles[c], c))))
     return orders
 

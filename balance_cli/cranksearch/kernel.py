@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Pool", "Chunk", "work_units", "evaluate", "SCORE_TIE", "TIE_CAP"]
+__all__ = ["Pool", "Chunk", "work_units", "evaluate", "SCORE_TIE", "TIE_CAP", "BLOCK"]
 
 #: scores closer than this are equal (the coefficients are of order one and carry rounding
 #: errors of about 1e-14); equal scores are ranked by firing order. Scores are compared with
@@ -19,7 +19,7 @@ SCORE_TIE = 1e-9
 #: more arrangements than this tying at the K-th best score are not all kept
 TIE_CAP = 100_000
 #: a block of (prefix × suffix × channel) values evaluated at once
-_BLOCK = 1 << 21
+BLOCK = 1 << 21
 
 
 def _sums(problem, rows, throws):
@@ -42,15 +42,23 @@ class Pool:
         # sorting at every offer made a large top quadratic (minutes at top = 100 000)
         self.recount = top
 
+    @property
+    def full(self):
+        """Holding ``top`` and TIE_CAP tied: only a better score than the threshold gets in."""
+        return len(self.best) >= self.top + TIE_CAP
+
     def offer(self, score, crank):
         if score > self.threshold + SCORE_TIE:
+            return
+        if self.full and score > self.threshold - SCORE_TIE:
+            # another tie, or the same class again: not let in either way, and decided before
+            # its symmetry class is worked out (a grid of uneven cranks tied by the million at
+            # 0 spent minutes there)
+            self.truncated = True
             return
         key = self.problem.orbit_key(crank)
         old = self.best.get(key)
         if old is not None and old <= score:
-            return
-        if len(self.best) >= self.top + TIE_CAP and score > self.threshold - SCORE_TIE:
-            self.truncated = True
             return
         self.best[key] = score
         if len(self.best) >= self.recount:
@@ -70,7 +78,7 @@ class Chunk:
     truncated: bool
 
 
-def work_units(problem, target=_BLOCK):
+def work_units(problem, target=BLOCK):
     """(group, prefix start, prefix end) pieces of roughly ``target`` channel values each."""
     units = []
     C = max(problem.rotated.shape[2], 1)
@@ -124,7 +132,7 @@ def evaluate(problem, units, top, threshold=math.inf, shared=None):
                     continue
                 cols = np.flatnonzero(leader) if tie else None
                 Qt = Qs if cols is None else Qs[cols]
-                step = max(1, _BLOCK // (len(Qt) * len(w) or 1))
+                step = max(1, BLOCK // (len(Qt) * len(w) or 1))
                 for a in range(0, len(sel), step):
                     block = sel[a : a + step]
                     S = Pm[block][:, None, :] + Qt[None, :, :]

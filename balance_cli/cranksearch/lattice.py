@@ -16,15 +16,20 @@ from ..errors import AnalysisError
 from ..tolerances import UNIFORM_FIRING_DEG
 from ..units import round_degrees
 
-__all__ = ["lattice", "check_reversal", "check_mirror", "SYMMETRY_TOLERANCE"]
+__all__ = ["lattice", "bank_followers", "check_reversal", "check_mirror", "SYMMETRY_TOLERANCE"]
 
 #: phasors of a symmetry check may differ by this fraction of the largest throw phasor
 SYMMETRY_TOLERANCE = 1e-9
 
 
-def lattice(template, allow_uneven, step_deg):
-    """Phase lattice: (P, step, capacity, base phase per throw, lattice offsets per throw)."""
-    n_cyl = template.n_cylinders
+def lattice(template, allow_uneven, step_deg, followers=None):
+    """Phase lattice: (P, step, capacity, base phase per throw, lattice offsets per throw).
+
+    ``followers`` (:func:`bank_followers`): cylinders left off the lattice, which fire a fixed
+    angle after a cylinder of bank 1 on their throw; the lattice is then bank 1's own (every
+    bank firing evenly within itself)."""
+    followers = followers or {}
+    n_cyl = template.n_cylinders - len(followers)
     if allow_uneven:
         if step_deg is None:
             raise AnalysisError(
@@ -59,13 +64,15 @@ def lattice(template, allow_uneven, step_deg):
         s = 720.0 / n_cyl
     P = round(360.0 / s)
     capacity = n_cyl // P
-    tdc = tdc_angles(template)
-    first = min(c.number for c in template.cylinders if c.throw_index == 0)
+    tdc = {c: a for c, a in tdc_angles(template).items() if c not in followers}
+    first = min(c.number for c in template.cylinders if c.throw_index == 0 and c.number in tdc)
     origin = tdc[first]
     base = np.zeros(len(template.throws))
     offsets: list[list[int]] = []
     for j in range(len(template.throws)):
-        mine = sorted(c.number for c in template.cylinders if c.throw_index == j)
+        mine = sorted(
+            c.number for c in template.cylinders if c.throw_index == j and c.number in tdc
+        )
         if not mine:
             offsets.append([])
             continue
@@ -83,14 +90,50 @@ def lattice(template, allow_uneven, step_deg):
                     f"cannot fire evenly: cylinders {mine[0]} and {c} ride on throw {j + 1} "
                     "with top dead centres "
                     f"{round_degrees((tdc[c] - tdc[mine[0]]) % 360.0, 3):g}° apart, not a multiple "
-                    f"of the {s:g}° firing interval; "
-                    "search with allow_uneven and a step_deg",
+                    f"of the {s:g}° firing interval; search with "
+                    + (
+                        "even_banks (each bank firing evenly on its own) or "
+                        if len(template.bank_angles_rad) > 1
+                        else ""
+                    )
+                    + "allow_uneven and a step_deg",
                     "template",
                 )
             e.append(round(steps) % P)
         base[j] = base_j
         offsets.append(e)
     return P, s, capacity, base, offsets
+
+
+def bank_followers(template):
+    """For a search whose banks each fire evenly on their own: every cylinder of banks 2, 3,
+    ... with (the cylinder of bank 1 on its throw, the angle it fires after it, degrees in
+    [0, 360)). Turning the throw moves both alike, so bank b's firing is bank 1's turned by
+    that angle: even whenever bank 1's is. Needs one cylinder of every bank on every throw.
+
+    Raises
+    ------
+    AnalysisError
+        naming ``even_banks``, when a throw has not one cylinder of each bank
+    """
+    banks = len(template.bank_angles_rad)
+    tdc = tdc_angles(template)
+    followers = {}
+    for j in range(len(template.throws)):
+        mine = [c for c in template.cylinders if c.throw_index == j]
+        if sorted(c.bank_index for c in mine) != list(range(banks)):
+            raise AnalysisError(
+                f"needs one cylinder of each of the {banks} banks on every throw, but throw "
+                f"{j + 1} has {len(mine)} (banks "
+                f"{', '.join(str(c.bank_index + 1) for c in mine) or 'none'}); search the "
+                "template with even firing overall instead",
+                "even_banks",
+            )
+        mate = next(c for c in mine if c.bank_index == 0)
+        for c in mine:
+            if c is not mate:
+                followers[c.number] = (mate.number, (tdc[c.number] - tdc[mate.number]) % 360.0)
+    return followers
 
 
 def check_reversal(phasors, offsets, base, P, floor):

@@ -26,6 +26,8 @@ __all__ = [
     "order_units",
     "mean_pitch",
     "objective_channels",
+    "merge_channels",
+    "MERGE_TOLERANCE",
 ]
 
 
@@ -46,6 +48,8 @@ class Problem:
     mirror: bool
     split: int  # the prefix is throws 1 to split − 1 by their place in Engine.throws
     largest: Any = None  # (C,) TV1: score += max over channels of largest·|sum|
+    offset: float = 0.0  # the part of every score no arrangement changes (merge_channels)
+    followers: Any = None  # even banks: {cylinder: (bank-1 cylinder on its throw, angle after)}
     # filled by build_tables
     prefix_rows: Any = None  # (n_pref, split−1) phase indices
     prefix_group: Any = None  # (n_pref,) group index
@@ -56,8 +60,8 @@ class Problem:
 
     def score(self, magnitudes):
         """The score of channel magnitudes |sum| (..., C): the weighted sum, plus a TV1
-        term's largest scaled magnitude."""
-        out = magnitudes @ self.weights
+        term's largest scaled magnitude, plus the constant part of every score."""
+        out = magnitudes @ self.weights + self.offset
         if self.largest is not None:
             out = out + (magnitudes * self.largest).max(axis=-1)
         return out
@@ -213,3 +217,61 @@ def objective_channels(
             weights[key] = weights.get(key, 0.0) + scale
     keys = sorted(weights)
     return (keys, np.array([weights[c] for c in keys]), np.array([tv.get(c, 0.0) for c in keys]))
+
+
+#: two channels are merged when one's phasors are the other's (or their conjugates) times
+#: one factor to this fraction of the largest: the FFT leaves about 1e-14, and a score changed
+#: by 1e-12 of itself stays far inside SCORE_TIE
+MERGE_TOLERANCE = 1e-12
+
+
+def merge_channels(rotated, weights, largest):
+    """Channels whose magnitudes are proportional for every crank, merged into one; channels
+    that no crank changes, set aside as a constant.
+
+    When every phasor of channel b (every throw, every phase) is λ times channel a's, or λ
+    times its conjugate, |Σ b| = |λ|·|Σ a| for every crank, so the score needs a alone with
+    weight w_a + |λ|·w_b (and, for a TV1 term, the larger of the two scales). An in-line
+    engine's forward and backward parts are such a pair for every order (its throws' phasors
+    lie on one line, and turning a throw turns them opposite ways): half the channels. A
+    channel that is zero for every crank is dropped, and one whose every throw's phasor is the
+    same at every phase (an in-line N two-stroke's order N: every cylinder in phase whatever
+    the crank) adds its weighted |sum| to every score instead. Returns (rotated, weights,
+    largest, offset) of the channels kept.
+    """
+    C = rotated.shape[2]
+    flat = rotated.reshape(-1, C)
+    weights = np.array(weights, float)
+    largest = None if largest is None else np.array(largest, float)
+    kept: list[int] = []
+    offset = 0.0
+    for b in range(C):
+        column = flat[:, b]
+        big = np.abs(column).max()
+        if big == 0.0:
+            continue
+        if (largest is None or largest[b] == 0.0) and np.abs(
+            rotated[:, :, b] - rotated[:, :1, b]
+        ).max() <= MERGE_TOLERANCE * big:
+            offset += weights[b] * abs(rotated[:, 0, b].sum())
+            continue
+        merged = False
+        for a in kept:
+            base = flat[:, a]
+            at = int(np.argmax(np.abs(base)))
+            for candidate in (base, base.conjugate()):
+                factor = column[at] / candidate[at]
+                if np.abs(column - factor * candidate).max() <= MERGE_TOLERANCE * big:
+                    weights[a] += abs(factor) * weights[b]
+                    if largest is not None:
+                        largest[a] = max(largest[a], abs(factor) * largest[b])
+                    merged = True
+                    break
+            if merged:
+                break
+        if not merged:
+            kept.append(b)
+    out_largest = None if largest is None else largest[kept]
+    if out_largest is not None and not np.any(out_largest):
+        out_largest = None
+    return rotated[:, :, kept], weights[kept], out_largest, offset

@@ -97,7 +97,10 @@ class SearchResult(Tabular):
         the symmetries used
     firing_orders_per_crank : int
     even : bool
-        arrangements fire evenly (False with allow_uneven)
+        arrangements fire evenly (False with allow_uneven), or each bank does (``even_banks``)
+    even_banks : bool
+        each bank fires evenly on its own, the banks a fixed angle apart (even_banks, on a
+        template of several banks)
     step_deg : float
         the phase lattice (degrees)
     ties_truncated : bool
@@ -126,6 +129,7 @@ class SearchResult(Tabular):
     workers: int
     max_order: int
     samples: int
+    even_banks: bool = False
 
     def records(self) -> list:
         """One row per arrangement listed, best first: ``rank``, ``score``, ``phases_deg``
@@ -154,7 +158,8 @@ class SearchResult(Tabular):
             "name": self.template.name,
             "objective": [str(t) for t in self.objective],
             "method": self.method,
-            "even_firing": self.even,
+            "even_firing": self.even and not self.even_banks,
+            "even_banks": self.even_banks,
             "step_deg": self.step_deg,
             "arrangements_total": self.arrangements_total,
             "arrangements_distinct": self.arrangements_distinct,

@@ -22,23 +22,26 @@ from .firing import firing_orders, reversed_order
 
 # under their former names: search has parameters and locals named as the functions are
 from .heuristic import heuristic_search
-from .kernel import SCORE_TIE, Pool, work_units
-from .lattice import check_mirror, check_reversal, lattice
+from .kernel import SCORE_TIE, Pool, evaluate, work_units
+from .lattice import bank_followers, check_mirror, check_reversal, lattice
 from .objective import Term, check_terms, parse_objective
-from .parallel import run_cluster, run_local
+from .parallel import Reduction, run_cluster, run_local
 from .problem import (
     Problem,
     guide_couple_units,
     guide_phasors,
     mean_pitch,
+    merge_channels,
     minor_orders,
     objective_channels,
     order_units,
     throw_phasors,
     torsion_phasors,
 )
+from .query import evaluate_units
 from .results import SearchResult
 from .tables import build_tables, count_cranks
+from .units import plan_units
 
 __all__ = ["search", "DEFAULT_TOP", "MAX_TOP", "DEFAULT_LIMIT", "MAX_WORKERS"]
 
@@ -47,8 +50,10 @@ DEFAULT_TOP = 10
 #: 5 ms and 110 kB apiece, measured on an in-line 10), so 1000 take seconds and 110 MB where
 #: the 100 000 once accepted grew past 7 GB
 MAX_TOP = 1000
-#: an exhaustive search evaluating more arrangements than this is refused (about a minute
-#: on two cores); --limit raises it, --heuristic or a cluster are the alternatives
+#: an exhaustive search covering more arrangements than this is refused: where the bound
+#: prunes nothing, about a minute on two cores (2e7 pairs a second a core for ten channels);
+#: the in-line 14's 1.6e9 take 1.5 s for M1,M2,M3,M4 and for every F_k and M_k alike.
+#: --limit raises it, --heuristic or a cluster are the alternatives
 DEFAULT_LIMIT = 2_000_000_000
 #: more processes than this are refused (each costs memory and start-up)
 MAX_WORKERS = 1024
@@ -69,6 +74,9 @@ def search(
     samples: int = DEFAULT_SAMPLES,
     max_order: int = DEFAULT_MAX_ORDER,
     progress: Callable[[int, int], None] | None = None,
+    client=None,
+    enumeration: str = "streamed",
+    even_banks: bool = False,
 ) -> SearchResult:
     """The best crank arrangements and firing orders of ``template``.
 
@@ -83,9 +91,19 @@ def search(
         how many arrangements to list (ties with the last are ranked by firing order)
     allow_uneven, step_deg : bool, float
         search every crank on a grid of ``step_deg`` degrees, firing or not evenly
+    even_banks : bool
+        every bank fires evenly on its own, the banks a fixed angle apart (each cylinder of
+        banks 2, 3, ... the bank angle after the cylinder of bank 1 on its throw): the
+        medium-speed V engines' rule, whose bank angle seldom lets the whole engine fire
+        evenly (a 50° V12's intervals alternate 50° and 70°); needs one cylinder of each bank
+        on every throw
     workers : int or None
-        processes (None: every core); ``scheduler``: a Dask scheduler address or Client
-        instead
+        processes (None: every core)
+    scheduler : str or None
+        a Dask scheduler address (``tcp://host:8786``) to run the exhaustive search on
+        instead (a Client is taken too, as ``client``)
+    client : distributed.Client or None
+        a Dask client to run the exhaustive search on (yours: it is left open)
     heuristic : bool
         a local search (``restarts`` random starts, ``seed``), not proved optimal
     limit : int
@@ -94,12 +112,17 @@ def search(
         as for :func:`balance_cli.analysis.results.analyse`
     progress : callable(done, total) or None
         called as work completes
+    enumeration : str
+        "streamed" (default): the parent plans work units (the lattice points the first
+        half fills) and each worker enumerates its own, in the memory of one unit;
+        "tabled": every prefix and suffix tabled at once in the parent and sent whole to
+        the workers (the former method, gigabytes for an in-line 14, kept as a cross-check)
 
     Raises
     ------
     AnalysisError
-        naming ``template``, ``objective``, ``top``, ``step_deg``, ``workers``, ``limit`` or
-        ``scheduler``
+        naming ``template``, ``objective``, ``top``, ``step_deg``, ``workers``, ``limit``,
+        ``scheduler``, ``client`` or ``enumeration``
     """
     started = time.perf_counter()
     check_settings(samples, max_order)
@@ -121,21 +144,22 @@ def search(
                 f"must be a whole number from {low:,} to {high:,}, got {value!r}", name
             )
     top, restarts, limit, seed, workers = map(int, (top, restarts, limit, seed, workers))
-    if (
-        scheduler is not None
-        and not isinstance(scheduler, str)
-        and not all(hasattr(scheduler, a) for a in ("scatter", "submit", "nthreads"))
-    ):
+    if not isinstance(even_banks, (bool, np.bool_)):
+        raise AnalysisError(f"must be True or False, got {even_banks!r}", "even_banks")
+    if even_banks and allow_uneven:
         raise AnalysisError(
-            f"must be a scheduler address such as tcp://host:8786 or a "
-            f"distributed.Client, got {scheduler!r}",
-            "scheduler",
+            "asks for even firing within each bank, allow_uneven for any firing: leave out "
+            "one of the two",
+            "even_banks",
         )
-    if heuristic and scheduler is not None:
+    if enumeration not in ("streamed", "tabled"):
+        raise AnalysisError(f"must be 'streamed' or 'tabled', got {enumeration!r}", "enumeration")
+    cluster, cluster_name = _cluster_of(scheduler, client)
+    if heuristic and cluster is not None:
         raise AnalysisError(
             "applies to the exhaustive search, but the heuristic search runs in "
             "this process: leave out one of the two",
-            "scheduler",
+            cluster_name,
         )
     if isinstance(objective, str) or objective is None:
         terms = parse_objective(objective, max_order)
@@ -218,8 +242,13 @@ def search(
     channels, weights, largest = objective_channels(
         terms, units, pitch, couple_units, torsion_units, tv_orders
     )
-    P, s, capacity, base, offsets = lattice(flat, allow_uneven, step_deg)
+    followers = bank_followers(flat) if even_banks and len(flat.bank_angles_rad) > 1 else None
+    P, s, capacity, base, offsets = lattice(flat, allow_uneven, step_deg, followers)
     reversal, shift = check_reversal(phasors, offsets, base, P, flat.noise_floor_n)
+    if followers:
+        # running the other way round turns the banks over (bank 1 fires after bank 2):
+        # another even-banks rule, not this one
+        reversal, shift = False, None
     mirror = check_mirror(phasors, offsets, base, flat.noise_floor_n)
     phase = base[:, None] + s * np.arange(P)[None, :]  # (n, P) degrees
     rotated = np.zeros((n, P, len(channels)), complex)
@@ -228,6 +257,9 @@ def search(
         rotated[:, :, i] = phasors[kind, :, k][:, None] * np.exp(
             1j * sign * (k + 1) * np.radians(phase)
         )
+    rotated, weights, largest, offset = merge_channels(
+        rotated, weights, largest if np.any(largest) else None
+    )
     split = 1 + (n - 1) // 2
     problem = Problem(
         n,
@@ -241,7 +273,9 @@ def search(
         reversal,
         False,
         split,
-        largest=largest if np.any(largest) else None,
+        largest=largest,
+        offset=offset,
+        followers=followers,
     )
     # the mirror condition reads throws n−1 and n from the suffix
     problem.mirror = mirror and n - 2 >= split
@@ -253,32 +287,51 @@ def search(
     cranks = count_cranks(problem)
     firing_per_crank = math.factorial(capacity) ** P // capacity if capacity else 1
     expected = cranks if cranks is not None else P ** (n - 1)
-    reduction = (2 if reversal else 1) * (2 if problem.mirror else 1)
-    if not heuristic and expected // reduction > limit:
-        _refuse_limit(limit, expected // reduction, "about " if cranks is not None else "up to ")
+    symmetry = (2 if reversal else 1) * (2 if problem.mirror else 1)
+    if not heuristic and expected // symmetry > limit:
+        _refuse_limit(limit, expected // symmetry, "about " if cranks is not None else "up to ")
 
     # progress counts the listed arrangements' analyses too (top of them at most), the
     # last stage, which took minutes with a large top after the bar had shown 100 %
     if heuristic:
         tick = _ticker(progress, restarts + top)
-        chunks = heuristic_search(problem, top, restarts, seed, tick)
+        reduction = Reduction(problem, top)
+        for chunk in heuristic_search(problem, top, restarts, seed, tick):
+            reduction.add(chunk)
         total_cranks = cranks
     else:
-        total_cranks = build_tables(problem)
-        planned = _planned(problem)
-        if planned > limit:
-            _refuse_limit(limit, planned, "")
-        units_of_work = work_units(problem)
-        tick = _ticker(progress, len(units_of_work) + top)
-        if scheduler is not None:
-            chunks, workers = run_cluster(problem, units_of_work, top, math.inf, scheduler, tick)
+        if enumeration == "tabled":
+            total_cranks = build_tables(problem)
+            planned = _planned(problem)
+            if planned > limit:
+                _refuse_limit(limit, planned, "")
+            units_of_work = work_units(problem)
+            unit_weights = [1] * len(units_of_work)
+            evaluate_with = evaluate
         else:
-            chunks, workers = run_local(problem, units_of_work, top, workers, math.inf, tick)
-    truncated = any(c.truncated for c in chunks)
+            total_cranks = cranks
+            units_of_work, unit_weights = plan_units(problem)
+            evaluate_with = evaluate_units
+        tick = _ticker(progress, len(units_of_work) + top)
+        if cluster is not None:
+            reduction, workers = run_cluster(
+                problem,
+                units_of_work,
+                unit_weights,
+                top,
+                evaluate_with,
+                cluster,
+                tick,
+                cluster_name,
+            )
+        else:
+            reduction, workers = run_local(
+                problem, units_of_work, unit_weights, top, workers, evaluate_with, tick
+            )
+    truncated = reduction.truncated
     merged = Pool(problem, top)
-    for chunk in chunks:
-        for score, key in chunk.candidates:
-            merged.offer(score, key)
+    for key, score in reduction.pool.best.items():
+        merged.offer(score, key)
     truncated |= merged.truncated
     orbits = sorted(((s, k) for k, s in merged.best.items()), key=lambda x: (x[0], x[1]))
     if len(orbits) >= top:
@@ -308,13 +361,14 @@ def search(
         arrangements=tuple(arrangements),
         arrangements_total=total,
         arrangements_distinct=distinct,
-        evaluated=sum(c.evaluated for c in chunks),
-        pruned=sum(c.pruned for c in chunks),
+        evaluated=reduction.evaluated,
+        pruned=reduction.pruned,
         exhaustive=not heuristic,
         method="heuristic" if heuristic else "exhaustive",
         symmetries=tuple(symmetries),
         firing_orders_per_crank=firing_per_crank,
         even=not allow_uneven,
+        even_banks=bool(followers),
         step_deg=s,
         ties_truncated=truncated,
         elapsed_s=time.perf_counter() - started,
@@ -324,10 +378,35 @@ def search(
     )
 
 
+def _is_client(value):
+    return all(hasattr(value, a) for a in ("scatter", "submit", "nthreads"))
+
+
+def _cluster_of(scheduler, client):
+    """(what to run on, the parameter that named it): a scheduler address, a Client, or
+    None for this machine's processes."""
+    if client is not None:
+        if scheduler is not None:
+            raise AnalysisError("and scheduler both name a cluster: give one of the two", "client")
+        if not _is_client(client):
+            raise AnalysisError(f"must be a distributed.Client, got {client!r}", "client")
+        return client, "client"
+    if scheduler is None:
+        return None, None
+    if not isinstance(scheduler, str) and not _is_client(scheduler):
+        raise AnalysisError(
+            f"must be a scheduler address such as tcp://host:8786 or a "
+            f"distributed.Client, got {scheduler!r}",
+            "scheduler",
+        )
+    return scheduler, "scheduler"
+
+
 def _refuse_limit(limit, cranks, about):
     raise AnalysisError(
         f"is {limit:,} (cranks to evaluate), but an exhaustive search of this template evaluates "
-        f"{about}{cranks:,}; raise it (about 30 million a second on two cores), or use the "
+        f"{about}{cranks:,}; raise it (an in-line 14's 1.6 billion take seconds on two "
+        "cores, up to a minute a 2 billion where the bound prunes little), or use the "
         "heuristic search (not proved optimal) or a cluster scheduler",
         "limit",
     )

@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-__all__ = ["build_tables", "count_cranks"]
+__all__ = ["build_tables", "count_cranks", "lex_sign"]
 
 #: cheapest count of even-firing cranks by dynamic programming, in state updates: beyond it
 #: (an in-line 20 took 38 s) the count is a closed form or an upper bound
@@ -40,7 +40,7 @@ def _assignments(problem, throws, first_fixed=False):
     return rows, counts
 
 
-def _lex_sign(rows, P):
+def lex_sign(rows, P):
     """−1, 0 or +1: each row against its reversal (−row mod P), lexicographically."""
     negated = (-rows.astype(np.int32)) % P
     diff = rows.astype(np.int32) - negated
@@ -79,7 +79,7 @@ def build_tables(problem):
         total = len(rows) * len(srows)
     tie = np.zeros(len(rows), bool)
     if problem.reversal and rows.shape[1]:
-        sign = _lex_sign(rows, P)
+        sign = lex_sign(rows, P)
         rows, counts, tie = rows[sign <= 0], counts[sign <= 0], (sign == 0)[sign <= 0]
     if cap:
         need = key_of(cap - counts)
@@ -104,7 +104,7 @@ def build_tables(problem):
         suffix_rows.append(mine)
         suffix_key.append(mkey)
         suffix_leader.append(
-            _lex_sign(mine, P) <= 0
+            lex_sign(mine, P) <= 0
             if problem.reversal and mine.shape[1]
             else np.ones(len(mine), bool)
         )

@@ -30,6 +30,10 @@ def family_parts(result, scale):
         + ["PRU M1V", "PRU M1H", "PRU M2V", "PRU M2H"]
         + ["H-type (order)", "X-type (order)", "2nd-order compensator"]
     )
+    # a V family: how its banks excite the major orders (an in-line engine's are all 1)
+    v_family = record["firing"] != "even"
+    if v_family:
+        headers.append("Major orders (vector sum)")
     rows = []
     for row in record["rows"]:
         pru = row["pru"]
@@ -51,6 +55,10 @@ def family_parts(result, scale):
             )
         compensator = row["second_order_compensator"]
         cells.append("—" if compensator is None else "yes" if compensator else "no")
+        if v_family:
+            cells.append(
+                ", ".join(f"{m['order']:g}: {m['vector_sum']:.3f}" for m in row["major_orders"])
+            )
         rows.append(cells)
     balances = sorted({row["first_order_balance"]["description"] for row in record["rows"]})
     notes = [
@@ -65,6 +73,13 @@ def family_parts(result, scale):
         "order; a second-order compensator is indicated where M2's PRU "
         "is likely or most likely to need one."
     ]
+    if v_family:
+        notes.append(
+            "Each bank fires evenly on its own, the other bank's cylinder on each throw the bank "
+            "angle (or that and a revolution, whichever excites the major orders less) after "
+            "its partner; major orders: those at which a bank's cylinders all fire in phase, "
+            "with the engine's vector sum over its cylinders (1: every cylinder in phase)."
+        )
     missing = sorted({row["pru_note"] for row in record["rows"] if row["pru"] is None})
     if missing:
         notes.append("PRU —: " + "; ".join(missing) + " (--power-per-cylinder gives it).")

@@ -18,7 +18,13 @@ def _coefficient_names(result):
 
 def search_summary(result):
     """What was searched, how much, and whether the list is proved: a few lines of text."""
-    what = "even firing" if result.even else f"every crank on a {result.step_deg:g}° grid"
+    what = (
+        "even firing within each bank"
+        if result.even_banks
+        else "even firing"
+        if result.even
+        else f"every crank on a {result.step_deg:g}° grid"
+    )
     proof = (
         "exhaustive: no arrangement scores better than those listed"
         if result.exhaustive

@@ -1,6 +1,6 @@
 """A project-guide table for an engine family: one cylinder's data, every number of cylinders.
 
-For each cylinder count the in-line engine is built at the family's cylinder pitch, its crank
+For each cylinder count the in-line (or V) engine is built at the family's cylinder pitch, its crank
 and firing order found by the exhaustive search (:func:`balance_cli.cranksearch`, proved optimal
 for the objective; the labelled heuristic where the count is too large to enumerate) or taken
 from the firing orders the user gives, and analysed as the makers' project guides tabulate
@@ -9,6 +9,15 @@ class, the largest H-type and X-type guide-force moments, and whether a second-o
 is indicated. The first order is under the guides' standard balance unless another is asked
 (:mod:`balance_cli.analysis.marine`), with the rotating-only and as-the-crank-stands figures
 beside it.
+
+A V family (a template of two banks, a throw for each pair of cylinders) is searched as the
+makers of medium-speed V engines choose their cranks: each bank fires evenly on its own (its
+firing order an in-line engine's), the other bank's cylinder on each throw the bank angle
+after (the Wärtsilä Vasa 32's 12V32: A1-B1-A5-B5-A3-B3-A6-B6-A2-B2-A4-B4, bank A the 6R32's
+1-5-3-6-2-4), the free moments least; of the two ways the banks can follow each other (a
+cylinder of bank B the bank angle, or that plus a revolution, after its partner) the one
+that excites the torsional major orders least: the orders at which every cylinder of a bank
+fires in phase, where the two banks' vectors add as |1 + e^{ik·Δ}|.
 """
 
 import math
@@ -27,6 +36,7 @@ from ..cranksearch import DEFAULT_LIMIT, search
 from ..errors import AnalysisError, BalanceError
 from ..output import DOCUMENT_VERSION
 from ..tabular import Tabular, joined
+from .vfamily import bank_phasing, major_orders, v_objective
 
 __all__ = ["FamilyRow", "FamilyResult", "family", "default_objective"]
 
@@ -44,7 +54,7 @@ class FamilyRow:
     ``method``: "exhaustive" (proved optimal for the objective), "heuristic" (the best found,
     not proved) or "given" (the firing order the user gave); ``result``: the engine analysed
     (an :class:`~balance_cli.EngineResult`); ``guide``: its :class:`GuideForces` (None without
-    a crosshead or piston guide, on a rotary).
+    a crosshead or piston guide, on a rotary); ``majors``: :func:`major_orders` of it.
     """
 
     cylinders: int
@@ -53,6 +63,7 @@ class FamilyRow:
     result: Any
     guide: Any
     balance: Any = marine.STANDARD_BALANCE
+    majors: tuple = ()
 
     def to_dict(self) -> dict:
         record = self.result.to_dict(pru_balance=self.balance)
@@ -90,6 +101,7 @@ class FamilyRow:
             if second is None
             else second["vertical_class"] in _COMPENSATOR
             or second["horizontal_class"] in _COMPENSATOR,
+            "major_orders": [{"order": k, "vector_sum": v} for k, v in self.majors],
         }
 
 
@@ -107,8 +119,9 @@ def _largest(series):
 @dataclass(frozen=True)
 class FamilyResult(Tabular):
     """The family table: ``rows`` (one :class:`FamilyRow` per number of cylinders), the
-    template's ``name`` and ``config``, the ``objective``, ``pitch_m`` and
-    ``power_per_cylinder_w`` (None without a power)."""
+    template's ``name`` and ``config``, the ``objective``, ``pitch_m``,
+    ``power_per_cylinder_w`` (None without a power) and ``banks`` (1 in-line, 2 a V family,
+    searched with every bank firing evenly on its own)."""
 
     name: str
     config: str
@@ -120,6 +133,7 @@ class FamilyResult(Tabular):
     max_order: int
     has_gas: bool = False
     first_order_balance: Any = marine.STANDARD_BALANCE
+    banks: int = 1
 
     def records(self) -> list:
         """One row per number of cylinders, the keys of the JSON's ``rows`` made flat:
@@ -127,7 +141,8 @@ class FamilyResult(Tabular):
         ``first_order_balance`` by name, the moments ``M1V_Nm`` ... ``M4H_Nm`` (N·m),
         ``power_kW``, the PRU of each order judged as ``PRU_M2V_Nm_per_kW`` and
         ``PRU_M2V_class``, the largest guide-force moments as ``h_type_Nm``, ``h_type_order``,
-        ``x_type_Nm``, ``x_type_order``, and ``second_order_compensator``."""
+        ``x_type_Nm``, ``x_type_order``, ``second_order_compensator``, and the first major
+        orders as ``major_order_1``, ``major_vector_sum_1``, ..."""
         return [_flat_row(row.to_dict()) for row in self.rows]
 
     def to_dict(self) -> dict:
@@ -138,6 +153,7 @@ class FamilyResult(Tabular):
             "config": self.config,
             "objective": self.objective,
             "first_order_balance": self.first_order_balance.to_dict(),
+            "firing": "even within each bank" if self.banks > 1 else "even",
             "pitch_m": self.pitch_m,
             "guide_forces_from": "gas and inertia" if self.has_gas else "inertia only",
             "power_per_cylinder_kW": None
@@ -160,6 +176,10 @@ def _flat_row(record):
         elif key in ("h_type", "x_type"):
             flat[f"{key}_Nm"] = None if value is None else value["amplitude_Nm"]
             flat[f"{key}_order"] = None if value is None else value["order"]
+        elif key == "major_orders":
+            for i, entry in enumerate(value, 1):
+                flat[f"major_order_{i}"] = entry["order"]
+                flat[f"major_vector_sum_{i}"] = entry["vector_sum"]
         elif key == "pru":
             for entry in value["orders"] if value else ():
                 for side in ("vertical", "horizontal"):
@@ -299,17 +319,23 @@ def family(
     )
     data = configuration.as_template().data
     template = build(data, path, template=True)
+    banks = len(template.bank_angles_rad)
     if (
         template.is_rotary
-        or len(template.bank_angles_rad) != 1
+        or banks not in (1, 2)
         or "cylinders" in data
         or template.has_several_crankshafts
     ):
         raise AnalysisError(
-            "must be an in-line template (one bank, one crankshaft, no "
-            "[[cylinders]] list): a family is the same cylinder repeated at a "
-            "pitch",
+            "must be an in-line or V template (one or two banks, one crankshaft, no "
+            "[[cylinders]] list): a family is the same cylinder (or pair of cylinders) "
+            "repeated at a pitch",
             "template",
+        )
+    odd = [n for n in counts if n % banks]
+    if odd:
+        raise AnalysisError(
+            f"must be even for a V family (two cylinders a throw), got {odd[0]}", "cylinders"
         )
     zs = sorted(t.z_m for t in template.throws)
     if pitch_m is None:
@@ -335,14 +361,19 @@ def family(
                 f"name each of 1 to {n} once",
                 "firing_orders",
             )
-        if template.cycle != 2:
+        if template.cycle != 2 or banks != 1:
             raise AnalysisError(
-                "fit a two-stroke only (its firing order at even intervals "
-                "fixes the crank; a four-stroke's does not)",
+                "fit an in-line two-stroke only (its firing order at even intervals "
+                "fixes the crank; a four-stroke's or a V's does not)",
                 "firing_orders",
             )
     objective = objective.strip() if objective else ""
-    objective = objective or default_objective(data, path, samples, max_order, balance)
+    if not objective:
+        objective = (
+            default_objective(data, path, samples, max_order, balance)
+            if banks == 1
+            else v_objective(data, path, samples, max_order, balance)
+        )
     rows = []
     share = 1000
     if progress is not None:
@@ -353,7 +384,7 @@ def family(
             if progress is not None and whole_:
                 progress(base + min(share, share * part // whole_), share * len(counts))
 
-        throws = [{"z": f"{j * pitch_m!r} m"} for j in range(n)]
+        throws = [{"z": f"{j * pitch_m!r} m"} for j in range(n // banks)]
         case = {k: v for k, v in data.items() if k not in ("throws", "power", "firing_order")}
         case.update(throws=throws, name=f"{data.get('name', 'family')} ({n} cylinders)"[:120])
         if power_per_cylinder_w is not None:
@@ -378,6 +409,7 @@ def family(
                     samples=samples,
                     max_order=max_order,
                     progress=searching,
+                    even_banks=banks > 1,
                 )
             except BalanceError as exc:
                 if getattr(exc, "parameter", None) != "limit":
@@ -390,13 +422,17 @@ def family(
                     samples=samples,
                     max_order=max_order,
                     progress=searching,
+                    even_banks=banks > 1,
                 )
             best = found.arrangements[0]
             result, method, score = best.result, found.method, best.score
+        majors = major_orders(result.engine, banks)
+        if banks > 1:
+            result, majors = bank_phasing(result, case, path, samples, max_order)
         # an n-cylinder's H-type moment lives at order n: analyse the torques that far
         orders = max(max_order, n) if samples >= 4 * n + 1 else max_order
         guide = torque(result.engine, samples, orders, bearings=False).guide
-        rows.append(FamilyRow(n, method, score, result, guide, balance))
+        rows.append(FamilyRow(n, method, score, result, guide, balance, majors))
         if progress is not None:
             progress((done + 1) * share, share * len(counts))
     return FamilyResult(
@@ -410,4 +446,5 @@ def family(
         max_order,
         template.gas is not None,
         balance,
+        banks,
     )

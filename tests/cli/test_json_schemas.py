@@ -129,7 +129,16 @@ def documents(tmp_path_factory):
         "search": [
             # every shipped template (the in-line twelve's exhaustive search by its heuristic)
             *(
-                run("search", template, "--top", "3", "--workers", "1")
+                # a V family's bank angle fires evenly only bank by bank: --even-banks
+                run(
+                    "search",
+                    template,
+                    "--top",
+                    "3",
+                    "--workers",
+                    "1",
+                    *(["--even-banks"] if template.name.startswith("v-family") else []),
+                )
                 for template in sorted(TEMPLATES.glob("*.toml"))
                 if template.name != "inline-12-2stroke.toml"
             ),
@@ -168,6 +177,8 @@ def documents(tmp_path_factory):
             ),
         ],
         "family": [
+            # a V family: major orders, firing within each bank
+            run("family", TEMPLATES / "v-family-4stroke.toml", "--cylinders", "12-14"),
             run(
                 "family",
                 TEMPLATES / "marine-family-2stroke.toml",

@@ -128,8 +128,9 @@ def test_table_csv_and_errors(tmp_path):
         out = invoke("family", MARINE, *args)
         assert out.exit_code in (1, 2) and words in out.output, (args, out.output)
         assert "Traceback" not in out.output
-    out = invoke("family", CONFIGS / "nakanishi-v12-90-2stroke.toml", "--cylinders", "6")
-    assert out.exit_code == 1 and "in-line" in out.output
+    # three banks: neither an in-line nor a V family
+    out = invoke("family", CONFIGS / "nakanishi-w12-60-2stroke.toml", "--cylinders", "6")
+    assert out.exit_code == 1 and "in-line or V" in out.output
     out = invoke(
         "family", CONFIGS / "inline-4-car.toml", "--cylinders", "4", "--firing-order", "4:1-3-4-2"
     )
