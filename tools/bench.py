@@ -358,7 +358,11 @@ def scale_bench():
     rise = step / (times[13] / times[12])
     # t15 = t14·step·rise, t16 = t15·step·rise²
     sixteen = times[14] * step**2 * rise**3
-    print(f"growth of the time with N: {growth}; N = 16 projected: about {sixteen / 60:.0f} min")
+    # start-up (about 0.3 s) dominates N ≤ 13, so this understates: a rough lower figure
+    print(
+        f"growth of the time with N: {growth}; N = 16 projected: at least about "
+        f"{sixteen:.0f} s (start-up dominates the smaller N)"
+    )
     fast = times[14] <= 30.0
     small = together[14] <= 1024.0
     print(
