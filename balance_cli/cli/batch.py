@@ -16,7 +16,16 @@ from ..errors import SamplingWarning
 from .group import reported
 from .options import quantity_option
 
-__all__ = ["progress", "run_each", "inputs", "load_all", "settings", "analyse_all", "passed_over"]
+__all__ = [
+    "progress",
+    "progress_bar",
+    "run_each",
+    "inputs",
+    "load_all",
+    "settings",
+    "analyse_all",
+    "passed_over",
+]
 
 
 def progress(items, label):
@@ -24,6 +33,30 @@ def progress(items, label):
     if len(items) > 1 and sys.stderr.isatty():
         return click.progressbar(items, label=label, file=sys.stderr)
     return contextlib.nullcontext(items)
+
+
+def progress_bar(label):
+    """A progress bar on standard error when it is a terminal, for work that reports
+    ``(done, total)``: (callback or None, the context that closes the bar)."""
+    if not sys.stderr.isatty():
+        return None, contextlib.nullcontext()
+    state: dict = {}
+
+    def update(done, total):
+        if "bar" not in state:
+            state["bar"] = click.progressbar(length=total, label=label, file=sys.stderr)
+            state["bar"].__enter__()
+        state["bar"].update(done - state["bar"].pos)
+
+    @contextlib.contextmanager
+    def closing():
+        try:
+            yield
+        finally:
+            if "bar" in state:
+                state["bar"].__exit__(None, None, None)
+
+    return update, closing()
 
 
 def run_each(items, label, work):

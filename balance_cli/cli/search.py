@@ -5,7 +5,6 @@ cylinders). The search is imported only when they run.
 
 import contextlib
 import re
-import sys
 from pathlib import Path
 
 import click
@@ -17,7 +16,7 @@ from ..output import check_folder, refuse_inputs, write_folder, write_text
 from ..report.csvfile import search_csv
 from ..report.search import search_tables
 from ..units import Scale
-from .batch import settings
+from .batch import progress_bar, settings
 from .dispatch import emit, guard, render, same_path, write
 from .group import main, message, reported
 from .options import (
@@ -68,29 +67,6 @@ def _search_reported(engine):
         for word, flag in _SEARCH_WORDS.items():
             text = re.sub(rf"\b{re.escape(word)}\b", flag, text)
         raise click.ClickException(text) from None
-
-
-def _search_progress(label="Searching"):
-    """A progress bar on standard error when it is a terminal: (callback, bar or None)."""
-    if not sys.stderr.isatty():
-        return None, contextlib.nullcontext()
-    state: dict = {}
-
-    def update(done, total):
-        if "bar" not in state:
-            state["bar"] = click.progressbar(length=total, label=label, file=sys.stderr)
-            state["bar"].__enter__()
-        state["bar"].update(done - state["bar"].pos)
-
-    @contextlib.contextmanager
-    def closing():
-        try:
-            yield
-        finally:
-            if "bar" in state:
-                state["bar"].__exit__(None, None, None)
-
-    return update, closing()
 
 
 @main.command()
@@ -235,7 +211,7 @@ def search(
             template = template.replace(speed_rad_s=speed_rad_s)
         # the configurations --write writes are at the speed analysed
         data = {**data, "speed": speed}
-    callback, bar = _search_progress()
+    callback, bar = progress_bar("Searching")
     with _search_reported(template), bar:
         result = search_of(
             template,
@@ -404,7 +380,7 @@ def family_(
         "first_order_balance": "--first-order-balance",
         "template": path,
     }
-    callback, bar = _search_progress("Family")
+    callback, bar = progress_bar("Family")
     with reported(flags=flags), bar:
         result = family(
             configuration,

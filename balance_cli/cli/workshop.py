@@ -3,8 +3,6 @@ a tolerance band leaves across a production run) and balance bobweight (the bala
 The workshop is imported only when they run.
 """
 
-import contextlib
-import sys
 from pathlib import Path
 
 import click
@@ -12,7 +10,7 @@ import click
 from ..config import WRITE_DIGITS, read_configuration, resolve
 from ..units import Scale
 from . import headless
-from .batch import load_all, settings
+from .batch import load_all, progress_bar, settings
 from .dispatch import guard, render, write
 from .group import main, reported
 from .options import FORMAT, MAX_ORDER, OUTPUT, SAMPLES, SPEED, UNITS
@@ -41,29 +39,6 @@ _PARTS_HELP = (
 
 def _engine(path, speed):
     return load_all([path], speed)[0]
-
-
-def progress_bar(label):
-    """A progress bar on standard error when it is a terminal: (callback, context)."""
-    if not sys.stderr.isatty():
-        return None, contextlib.nullcontext()
-    state: dict = {}
-
-    def update(done, total):
-        if "bar" not in state:
-            state["bar"] = click.progressbar(length=total, label=label, file=sys.stderr)
-            state["bar"].__enter__()
-        state["bar"].update(done - state["bar"].pos)
-
-    @contextlib.contextmanager
-    def closing():
-        try:
-            yield
-        finally:
-            if "bar" in state:
-                state["bar"].__exit__(None, None, None)
-
-    return update, closing()
 
 
 @main.command()
