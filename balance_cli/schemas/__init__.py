@@ -146,6 +146,17 @@ def _non_finite(value, parts=()):
     return None
 
 
+#: what a value breaking one of these keywords is, in words: its value against the schema's
+_BOUNDS = {
+    "const": "is {value}, not {wanted}",
+    "minimum": "is {value}, below {wanted}",
+    "exclusiveMinimum": "is {value}, not above {wanted}",
+    "maximum": "is {value}, above {wanted}",
+    "exclusiveMaximum": "is {value}, not below {wanted}",
+    "multipleOf": "is {value}, not a multiple of {wanted}",
+}
+
+
 def _words(error) -> str:
     """A schema error in words: what the value is and what the schema wants."""
     kind, wanted, value = error.validator, error.validator_value, error.instance
@@ -162,20 +173,10 @@ def _words(error) -> str:
     if kind == "type":
         types = [wanted] if isinstance(wanted, str) else list(wanted)
         return f"is {_shown(value)}, not {' or '.join(_TYPES.get(t, t) for t in types)}"
-    if kind == "const":
-        return f"is {_shown(value)}, not {_shown(wanted)}"
+    if kind in _BOUNDS:
+        return _BOUNDS[kind].format(value=_shown(value), wanted=_shown(wanted))
     if kind == "enum":
         return f"is {_shown(value)}, not one of {', '.join(_shown(w) for w in wanted)}"
-    if kind == "minimum":
-        return f"is {_shown(value)}, below {_shown(wanted)}"
-    if kind == "exclusiveMinimum":
-        return f"is {_shown(value)}, not above {_shown(wanted)}"
-    if kind == "maximum":
-        return f"is {_shown(value)}, above {_shown(wanted)}"
-    if kind == "exclusiveMaximum":
-        return f"is {_shown(value)}, not below {_shown(wanted)}"
-    if kind == "multipleOf":
-        return f"is {_shown(value)}, not a multiple of {_shown(wanted)}"
     if kind == "minItems":
         return f"has {len(value)} items, fewer than {wanted}"
     if kind == "maxItems":
